@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+//! \file defect_report.h
+//! What detection finds: counts and element lists, printable as text and JSON.
+
+#include "meshbridge/soup.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace meshbridge {
+
+//! An undirected vertex pair, `v0 < v1`.
+struct VertexPair {
+  Index v0 = kNoIndex;
+  Index v1 = kNoIndex;
+  friend bool operator==(const VertexPair& a, const VertexPair& b) {
+    return a.v0 == b.v0 && a.v1 == b.v1;
+  }
+};
+
+//! An edge with more than two polygon sides on it.
+struct SingularEdge {
+  VertexPair vertices;
+  Index contenders = 0;  //!< number of polygon sides on the edge (> 2)
+};
+
+//! The defects of a soup, as the user sees the model (through all contenders).
+struct DefectReport {
+  std::size_t num_vertices = 0;  //!< positions in the soup (isolated ones included)
+  std::size_t num_faces = 0;     //!< polygons in the soup
+  std::size_t num_edges = 0;     //!< distinct vertex pairs carrying at least one polygon side
+
+  std::vector<SingularEdge> singular_edges;     //!< edges with > 2 contenders
+  std::vector<Index> singular_edge_vertices;    //!< endpoints of singular edges
+  std::vector<Index> pinch_vertices;            //!< singular vertices on no singular edge
+  std::vector<VertexPair> boundary_edges;       //!< edges with exactly 1 contender
+  std::size_t num_boundary_loops = 0;           //!< holes: connected chains of boundary edges
+  std::vector<Index> isolated_vertices;         //!< vertices used by no polygon
+  std::vector<Index> degenerate_faces;          //!< polygons with a repeated vertex index
+  std::vector<Index> excluded_faces;            //!< degenerate ones with < 3 distinct corners
+  std::vector<Index> zero_area_faces;           //!< polygons whose area is ~0 (see detect_defects)
+  std::vector<Index> duplicate_faces;           //!< polygons whose vertex set an earlier one has
+  std::vector<VertexPair> inconsistent_edges;   //!< 2-sided edges whose sides run the same way
+  std::size_t num_nonorientable_components = 0; //!< components that no flipping makes consistent
+  std::size_t num_components = 0;               //!< connected through every contender
+  long long euler_characteristic = 0;           //!< V - E + F over the used vertices
+  bool watertight = false;  //!< closed 2-manifold: no boundary, singular or inconsistent element
+
+  std::size_t num_singular_vertices() const {
+    return singular_edge_vertices.size() + pinch_vertices.size();
+  }
+  //! True if anything above needs attention (components and Euler number are not defects).
+  bool has_defects() const;
+};
+
+//! Human-readable block of counts, followed by the first `max_listed` elements of each list.
+std::string to_text(const DefectReport& report, std::size_t max_listed = 10);
+//! Complete JSON object with counts and full element lists.
+std::string to_json(const DefectReport& report);
+
+}  // namespace meshbridge

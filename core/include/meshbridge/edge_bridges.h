@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+//! \file edge_bridges.h
+//! Edge bridges: every polygon side grouped with the others on the same vertex pair.
+
+#include "meshbridge/soup.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace meshbridge {
+
+//! All contenders of every edge. A *contender* is a polygon side, identified by its corner c
+//! (the side runs from corner c to the next corner of its polygon).
+//!
+//! Edge e is the vertex pair `edge_vertices[e]` = (v0 < v1) and its contenders are
+//! `contenders[begin[e] .. begin[e+1])`, in increasing corner order. Edges are numbered in
+//! increasing (v0, v1) order, so the numbering depends on the vertices only, not on face order.
+//! 1 contender: boundary edge; 2: manifold edge; more: singular edge.
+struct EdgeBridges {
+  std::vector<Index> begin{0};        //!< #E+1 offsets into contenders
+  std::vector<Index> contenders;      //!< #C corners, grouped by edge
+  std::vector<Index> corner_edge;     //!< #C: edge of the side starting at each corner
+  std::vector<Index> edge_v0;         //!< #E smaller vertex of each edge
+  std::vector<Index> edge_v1;         //!< #E larger vertex of each edge
+
+  std::size_t num_edges() const { return begin.size() - 1; }
+  Index num_contenders(std::size_t e) const { return begin[e + 1] - begin[e]; }
+};
+
+//! Groups the sides of `soup` by vertex pair in O(#C) (counting sort by smaller vertex).
+//! \param corner_face face of each corner (as from `corner_faces(soup)`)
+//! \pre `soup` passes validate_soup()
+EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face);
+
+//! Face of each corner: #C entries.
+std::vector<Index> corner_faces(const Soup& soup);
+
+}  // namespace meshbridge

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+//! \file mesh_types.h
+//! The OpenMesh mesh type MeshBridge builds, and conversion from an IndexedMesh.
+
+#include "meshbridge/indexed_mesh.h"
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+
+#include <cstddef>
+
+namespace meshbridge {
+
+struct MeshTraits : public OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+
+//! Polygon mesh with double positions.
+using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
+
+//! Names of the provenance properties that to_openmesh() adds.
+inline constexpr const char* kVertexOriginProperty = "v:origin";  //!< input vertex (Index)
+inline constexpr const char* kFaceOriginProperty = "f:origin";    //!< input face (Index)
+
+//! An OpenMesh mesh with every vertex and polygon of `mesh`, in order, with the provenance
+//! properties `v:origin` and `f:origin` when `mesh` has origins.
+struct OpenMeshBuild {
+  PolyMesh mesh;
+  std::size_t add_face_failures = 0;  //!< OpenMesh refused these faces (0 for repaired meshes)
+};
+//! Builds with one add_face() per polygon; a refused polygon is counted, never retried.
+OpenMeshBuild to_openmesh(const IndexedMesh& mesh);
+
+}  // namespace meshbridge

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+//! \file repair.h
+//! Lossless manifold repair: every input face is kept, every output edge is manifold.
+
+#include "meshbridge/defect_report.h"
+#include "meshbridge/indexed_mesh.h"
+#include "meshbridge/pairing.h"
+#include "meshbridge/soup.h"
+
+#include <cstddef>
+
+namespace meshbridge {
+
+//! What repair may do. Defaults give the full repair; the cleanup options are off by default.
+struct RepairOptions {
+  PairingPolicy pairing = PairingPolicy::geometric;  //!< how contenders of a singular edge pair up
+  bool orient = true;  //!< orient orientable components consistently, closed ones outward
+  //! Also orient non-orientable components, cutting the fewest conflicting edges a spanning
+  //! tree finds. Off: such components keep their faces' directions and every inconsistent
+  //! edge of theirs is cut.
+  bool cut_nonorientable = false;
+  bool stitch = true;  //!< glue boundary sides on one vertex pair back when that stays manifold
+  bool remove_duplicate_faces = false;    //!< drop polygons whose vertex set an earlier one has
+  bool remove_degenerate_faces = false;   //!< drop polygons that repeat a vertex index
+  bool remove_isolated_vertices = false;  //!< drop vertices that no kept polygon uses
+};
+
+//! What repair changed. Every count is exact.
+struct RepairReport {
+  std::size_t faces_in = 0;            //!< polygons in the input soup
+  std::size_t faces_out = 0;           //!< polygons in the output
+  std::size_t faces_set_aside = 0;     //!< degenerate, < 3 distinct corners (listed in `before`)
+  std::size_t faces_split = 0;         //!< pinched polygons split into simple ones
+  std::size_t faces_added_by_split = 0;       //!< extra polygons those splits made
+  std::size_t duplicate_faces_removed = 0;    //!< by `remove_duplicate_faces`
+  std::size_t degenerate_faces_removed = 0;   //!< by `remove_degenerate_faces`
+  std::size_t isolated_vertices_removed = 0;  //!< by `remove_isolated_vertices`
+  std::size_t vertices_in = 0;
+  std::size_t vertices_out = 0;
+  std::size_t vertices_split = 0;      //!< extra vertex copies made (one per extra fan)
+  std::size_t sides_cut = 0;           //!< contenders of singular edges left unpaired by pairing
+  std::size_t sides_cut_for_orientation = 0;  //!< sides unpaired because orientation conflicts
+  std::size_t sides_stitched = 0;      //!< unpaired sides glued back in pairs (counts sides)
+  std::size_t faces_flipped = 0;       //!< polygons whose corner order was reversed
+  std::size_t faces_detached = 0;      //!< last resort: faces cut loose to stay representable
+  std::size_t components_before = 0;   //!< as the user sees the input (through all contenders)
+  std::size_t components_after = 0;
+  std::size_t boundary_edges_before = 0;
+  std::size_t boundary_edges_after = 0;
+  std::size_t nonorientable_components = 0;
+  DefectReport before;  //!< detection on the input
+  DefectReport after;   //!< detection on the result: no singular edge or vertex, ever
+};
+
+struct RepairResult {
+  IndexedMesh mesh;
+  RepairReport report;
+};
+
+//! Repairs `soup` into a combinatorial 2-manifold that keeps every face.
+//! \pre `soup` passes validate_soup() \throw InvalidSoupError naming the offending element
+RepairResult repair(const Soup& soup, const RepairOptions& options = {});
+
+//! Text and JSON forms of the counts (the embedded detection reports included in JSON).
+std::string to_text(const RepairReport& report);
+std::string to_json(const RepairReport& report);
+
+}  // namespace meshbridge

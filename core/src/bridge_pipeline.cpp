@@ -1,0 +1,336 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "bridge_pipeline.h"
+
+#include "contender_pairing.h"
+#include "orientation.h"
+#include "union_find.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace meshbridge::detail {
+
+namespace {
+
+// Disjoint sets of faces that also know, per face, whether the whole set was reversed since.
+class ParityUnionFind {
+ public:
+  explicit ParityUnionFind(std::size_t n) : parent_(n), parity_(n, 0), size_(n, 1) {
+    for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<Index>(i);
+  }
+  //! Root of x; `flip` receives the accumulated reversal of x.
+  Index find(Index x, char& flip) {
+    // First pass: root and total parity; second pass: compress.
+    Index root = x;
+    char total = 0;
+    while (parent_[root] != root) {
+      total ^= parity_[root];
+      root = parent_[root];
+    }
+    flip = static_cast<char>(total ^ parity_[root]);
+    char below_root = total;  // parity of x relative to root, excluding the root's own
+    while (parent_[x] != root && x != root) {
+      const Index next = parent_[x];
+      const char own = parity_[x];
+      parent_[x] = root;
+      parity_[x] = below_root;
+      below_root ^= own;
+      x = next;
+    }
+    return root;
+  }
+  //! Joins the sets of roots a and b, reversing b's set first if `reverse_b`.
+  void unite_roots(Index a, Index b, bool reverse_b) {
+    parity_[b] = static_cast<char>(parity_[b] ^ (reverse_b ? 1 : 0) ^ parity_[a]);
+    parent_[b] = a;
+    size_[a] += size_[b];
+  }
+  Index size(Index root) const { return size_[root]; }
+
+ private:
+  std::vector<Index> parent_;
+  std::vector<char> parity_;
+  std::vector<Index> size_;
+};
+
+// Glues unpaired sides of one edge back in pairs where the result stays consistently oriented,
+// reversing a whole (smaller) component when that makes two sides run opposite ways.
+std::size_t stitch(const Soup& soup, const std::vector<Index>& corner_face,
+                   const EdgeBridges& bridges, std::vector<Index>& mate,
+                   std::vector<char>& flipped) {
+  const std::size_t num_faces = soup.num_faces();
+  ParityUnionFind components(num_faces);
+  char unused = 0;
+  for (Index c = 0; c < mate.size(); ++c) {
+    const Index m = mate[c];
+    if (m == kNoIndex || m < c) continue;
+    const Index a = components.find(corner_face[c], unused);
+    const Index b = components.find(corner_face[m], unused);
+    if (a != b) components.unite_roots(std::min(a, b), std::max(a, b), false);
+  }
+  std::size_t stitched = 0;
+  std::vector<Index> open;
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    if (bridges.num_contenders(e) < 2) continue;
+    open.clear();
+    for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
+      if (mate[bridges.contenders[i]] == kNoIndex) open.push_back(bridges.contenders[i]);
+    }
+    for (std::size_t i = 0; i < open.size(); ++i) {
+      const Index s = open[i];
+      if (mate[s] != kNoIndex) continue;
+      for (std::size_t j = i + 1; j < open.size(); ++j) {
+        const Index t = open[j];
+        if (mate[t] != kNoIndex) continue;
+        char flip_s = 0, flip_t = 0;
+        const Index root_s = components.find(corner_face[s], flip_s);
+        const Index root_t = components.find(corner_face[t], flip_t);
+        const bool along_s = runs_along(soup, bridges, s) != (flipped[corner_face[s]] ^ flip_s);
+        const bool along_t = runs_along(soup, bridges, t) != (flipped[corner_face[t]] ^ flip_t);
+        if (root_s == root_t) {
+          if (along_s == along_t) continue;
+        } else {
+          // Keep the larger component as it is (ties: the one with the smaller root).
+          const bool keep_s = components.size(root_s) > components.size(root_t) ||
+                              (components.size(root_s) == components.size(root_t) &&
+                               root_s < root_t);
+          const Index keep = keep_s ? root_s : root_t;
+          const Index other = keep_s ? root_t : root_s;
+          components.unite_roots(keep, other, along_s == along_t);
+        }
+        mate[s] = t;
+        mate[t] = s;
+        stitched += 2;
+        break;
+      }
+    }
+  }
+  for (Index f = 0; f < num_faces; ++f) {
+    char flip = 0;
+    components.find(f, flip);
+    flipped[f] ^= flip;
+  }
+  return stitched;
+}
+
+// Reverses whole components: closed ones so that their signed volume is positive, open ones so
+// that fewer of their faces end up reversed.
+void choose_component_orientation(const Soup& soup, const std::vector<Index>& corner_face,
+                                  const std::vector<Index>& mate, std::vector<char>& flipped) {
+  const std::size_t num_faces = soup.num_faces();
+  UnionFind components(num_faces);
+  for (Index c = 0; c < mate.size(); ++c) {
+    if (mate[c] != kNoIndex) components.unite(corner_face[c], corner_face[mate[c]]);
+  }
+  std::vector<char> open(num_faces, 0);
+  std::vector<double> volume(num_faces, 0.0);
+  std::vector<Index> faces(num_faces, 0), reversed(num_faces, 0);
+  for (Index f = 0; f < num_faces; ++f) {
+    const Index r = components.find(f);
+    ++faces[r];
+    reversed[r] += flipped[f];
+    const PolygonView polygon = soup.polygon(f);
+    double v = 0;
+    const Point& p0 = soup.positions[polygon[0]];
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+      v += OpenMesh::dot(p0, OpenMesh::cross(soup.positions[polygon[i]],
+                                             soup.positions[polygon[i + 1]]));
+    }
+    volume[r] += flipped[f] ? -v : v;
+    for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
+      if (mate[c] == kNoIndex) open[r] = 1;
+    }
+  }
+  std::vector<char> reverse(num_faces, 0);
+  for (Index r = 0; r < num_faces; ++r) {
+    if (faces[r] == 0) continue;
+    reverse[r] = open[r] ? (2 * reversed[r] > faces[r]) : (volume[r] < 0);
+  }
+  for (Index f = 0; f < num_faces; ++f) flipped[f] ^= reverse[components.find(f)];
+}
+
+// The output polygons: working faces with split vertices, reversed where flipped.
+IndexedMesh emit_mesh(const WorkingSoup& working, const std::vector<Index>& corner_vertex,
+                      std::vector<Index> vertex_origin, const std::vector<char>& flipped) {
+  const Soup& soup = working.soup();
+  IndexedMesh mesh;
+  mesh.vertex_origin = std::move(vertex_origin);
+  mesh.soup.positions.resize(mesh.vertex_origin.size());
+  for (std::size_t v = 0; v < mesh.vertex_origin.size(); ++v) {
+    mesh.soup.positions[v] = soup.positions[mesh.vertex_origin[v]];
+  }
+  mesh.soup.corner_vertices.resize(soup.num_corners());
+  mesh.soup.face_begin = soup.face_begin;
+  mesh.corner_origin.resize(soup.num_corners());
+  mesh.face_origin.resize(soup.num_faces());
+  for (Index f = 0; f < soup.num_faces(); ++f) {
+    mesh.face_origin[f] = working.face_origin(f);
+    const Index first = soup.face_begin[f];
+    const Index last = soup.face_begin[f + 1];
+    for (Index c = first; c < last; ++c) {
+      // Reversal keeps the first corner: c0 c1 ... ck-1 -> c0 ck-1 ... c1.
+      const Index source = (flipped[f] && c != first) ? first + (last - c) : c;
+      mesh.soup.corner_vertices[c] = corner_vertex[source];
+      mesh.corner_origin[c] = working.corner_origin(source);
+    }
+  }
+  return mesh;
+}
+
+// Sides whose output edge would carry more than one pair, or two sides running the same way.
+// Only sides on singular edges or unpaired sides of 2-sided edges can collide. Faces of the
+// colliding sides beyond the first pair are returned for detaching; opposite unpaired sides that
+// land on one output edge are paired (they are glued by the output anyway).
+std::vector<Index> find_collisions(const Soup& soup, const std::vector<Index>& corner_face,
+                                   const EdgeBridges& bridges, const std::vector<Index>& corner_vertex,
+                                   const std::vector<char>& flipped, std::vector<Index>& mate,
+                                   std::size_t& implicitly_stitched) {
+  // Output vertex a side starts at, after its face is reversed or not.
+  const auto start = [&](Index c) {
+    const Index f = corner_face[c];
+    return corner_vertex[flipped[f] ? soup.next_corner(c, f) : c];
+  };
+  std::vector<std::tuple<Index, Index, Index>> keyed;  // (out low, out high, side)
+  std::vector<Index> detach;
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    const Index k = bridges.num_contenders(e);
+    if (k < 2) continue;
+    if (k == 2 && mate[bridges.contenders[bridges.begin[e]]] != kNoIndex) continue;
+    keyed.clear();
+    for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
+      const Index c = bridges.contenders[i];
+      const Index a = corner_vertex[c];
+      const Index b = corner_vertex[soup.next_corner(c, corner_face[c])];
+      keyed.emplace_back(std::min(a, b), std::max(a, b), c);
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t i = 0; i < keyed.size();) {
+      std::size_t j = i + 1;
+      while (j < keyed.size() && std::get<0>(keyed[j]) == std::get<0>(keyed[i]) &&
+             std::get<1>(keyed[j]) == std::get<1>(keyed[i]))
+        ++j;
+      if (j - i == 2) {
+        const Index s = std::get<2>(keyed[i]), t = std::get<2>(keyed[i + 1]);
+        if (mate[s] == t) {
+          // the pair itself
+        } else if (mate[s] == kNoIndex && mate[t] == kNoIndex && start(s) != start(t)) {
+          mate[s] = t;
+          mate[t] = s;
+          implicitly_stitched += 2;
+        } else {
+          detach.push_back(corner_face[t]);
+        }
+      } else if (j - i > 2) {
+        // Keep one pair (or the first side), detach the faces of all others.
+        Index keep_a = std::get<2>(keyed[i]), keep_b = mate[keep_a];
+        for (std::size_t t = i; t < j; ++t) {
+          const Index c = std::get<2>(keyed[t]);
+          if (c != keep_a && c != keep_b) detach.push_back(corner_face[c]);
+        }
+      }
+      i = j;
+    }
+  }
+  std::sort(detach.begin(), detach.end());
+  detach.erase(std::unique(detach.begin(), detach.end()), detach.end());
+  return detach;
+}
+
+}  // namespace
+
+std::vector<Index> split_fans(const Soup& soup, const std::vector<Index>& corner_face,
+                              const std::vector<Index>& mate, std::vector<Index>& vertex_origin) {
+  const std::size_t num_corners = soup.num_corners();
+  const auto& cv = soup.corner_vertices;
+  UnionFind fans(num_corners);
+  for (Index c = 0; c < num_corners; ++c) {
+    const Index m = mate[c];
+    if (m == kNoIndex || m < c) continue;
+    const Index c_next = soup.next_corner(c, corner_face[c]);
+    const Index m_next = soup.next_corner(m, corner_face[m]);
+    if (cv[m] == cv[c]) {
+      fans.unite(c, m);
+      fans.unite(c_next, m_next);
+    } else {
+      fans.unite(c, m_next);
+      fans.unite(c_next, m);
+    }
+  }
+  const std::size_t num_vertices = soup.num_vertices();
+  vertex_origin.resize(num_vertices);
+  for (std::size_t v = 0; v < num_vertices; ++v) vertex_origin[v] = static_cast<Index>(v);
+  std::vector<char> taken(num_vertices, 0);
+  std::vector<Index> root_vertex(num_corners, kNoIndex);
+  std::vector<Index> corner_vertex(num_corners);
+  for (Index c = 0; c < num_corners; ++c) {
+    const Index r = fans.find(c);
+    if (root_vertex[r] == kNoIndex) {
+      const Index v = cv[c];
+      if (!taken[v]) {
+        taken[v] = 1;
+        root_vertex[r] = v;
+      } else {
+        root_vertex[r] = static_cast<Index>(vertex_origin.size());
+        vertex_origin.push_back(v);
+      }
+    }
+    corner_vertex[c] = root_vertex[r];
+  }
+  return corner_vertex;
+}
+
+PipelineResult run_pipeline(const WorkingSoup& working, const PipelineOptions& options) {
+  const Soup& soup = working.soup();
+  PipelineResult result;
+  result.corner_face = corner_faces(soup);
+  result.bridges = group_sides(soup, result.corner_face);
+  const auto& corner_face = result.corner_face;
+  const auto& bridges = result.bridges;
+  auto& mate = result.mate;
+  auto& flipped = result.flipped;
+
+  mate = pair_contenders(soup, corner_face, bridges, options.pairing);
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    if (bridges.num_contenders(e) <= 2) continue;
+    for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
+      if (mate[bridges.contenders[i]] == kNoIndex) ++result.sides_cut;
+    }
+  }
+
+  if (options.orient) {
+    const OrientationCounts counts =
+        orient_consistently(soup, corner_face, bridges, options.cut_nonorientable, mate, flipped);
+    result.nonorientable_components = counts.nonorientable_components;
+    result.sides_cut_for_orientation = counts.sides_cut;
+  } else {
+    flipped.assign(soup.num_faces(), 0);
+    result.sides_cut_for_orientation = cut_inconsistent_pairs(soup, bridges, mate);
+  }
+  if (options.stitch) result.sides_stitched = stitch(soup, corner_face, bridges, mate, flipped);
+  if (options.orient) choose_component_orientation(soup, corner_face, mate, flipped);
+
+  std::vector<Index> vertex_origin;
+  std::vector<Index> corner_vertex = split_fans(soup, corner_face, mate, vertex_origin);
+  for (int round = 0;; ++round) {
+    const std::vector<Index> detach =
+        find_collisions(soup, corner_face, bridges, corner_vertex, flipped, mate,
+                        result.sides_stitched);
+    if (detach.empty()) break;
+    for (Index f : detach) {
+      for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
+        if (mate[c] != kNoIndex) {
+          mate[mate[c]] = kNoIndex;
+          mate[c] = kNoIndex;
+        }
+      }
+    }
+    result.faces_detached += detach.size();
+    corner_vertex = split_fans(soup, corner_face, mate, vertex_origin);
+  }
+  result.vertices_split = vertex_origin.size() - soup.num_vertices();
+  for (char f : flipped) result.faces_flipped += f;
+  result.mesh = emit_mesh(working, corner_vertex, std::move(vertex_origin), flipped);
+  return result;
+}
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "contender_pairing.h"
+
+#include "union_find.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace meshbridge::detail {
+
+Point newell_normal(const Soup& soup, std::size_t f) {
+  const PolygonView polygon = soup.polygon(f);
+  Point n(0, 0, 0);
+  const std::size_t k = polygon.size();
+  for (std::size_t i = 0; i < k; ++i) {
+    const Point& p = soup.positions[polygon[i]];
+    const Point& q = soup.positions[polygon[(i + 1) % k]];
+    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+  }
+  return n;
+}
+
+namespace {
+
+constexpr double kTieAngle = 1e-7;
+
+void pair(std::vector<Index>& mate, Index a, Index b) {
+  mate[a] = b;
+  mate[b] = a;
+}
+
+// Combinatorial rule over `sides` (in the order given): opposite-running sides first come,
+// first paired.
+void pair_opposite_in_order(const Soup& soup, const EdgeBridges& bridges,
+                            const std::vector<Index>& sides, std::vector<Index>& mate) {
+  for (std::size_t i = 0; i < sides.size(); ++i) {
+    if (mate[sides[i]] != kNoIndex) continue;
+    const bool along = runs_along(soup, bridges, sides[i]);
+    for (std::size_t j = i + 1; j < sides.size(); ++j) {
+      if (mate[sides[j]] == kNoIndex && runs_along(soup, bridges, sides[j]) != along) {
+        pair(mate, sides[i], sides[j]);
+        break;
+      }
+    }
+  }
+}
+
+struct AngularContender {
+  double angle;
+  bool along;
+  Index side;
+};
+
+// Sorts the contenders of edge e by angle around its axis; false if the geometry is unusable.
+bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
+                   const EdgeBridges& bridges, const std::vector<Point>& normals, std::size_t e,
+                   std::vector<AngularContender>& order) {
+  order.clear();
+  Point axis = soup.positions[bridges.edge_v1[e]] - soup.positions[bridges.edge_v0[e]];
+  const double length = axis.norm();
+  if (!(length > 0)) return false;
+  axis /= length;
+  // A frame (e1, e2) perpendicular to the axis.
+  const int least = std::abs(axis[0]) <= std::abs(axis[1])
+                        ? (std::abs(axis[0]) <= std::abs(axis[2]) ? 0 : 2)
+                        : (std::abs(axis[1]) <= std::abs(axis[2]) ? 1 : 2);
+  Point helper(0, 0, 0);
+  helper[least] = 1;
+  Point e1 = OpenMesh::cross(axis, helper).normalized();
+  Point e2 = OpenMesh::cross(axis, e1);
+
+  for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
+    const Index side = bridges.contenders[i];
+    const Point& n = normals[corner_face[side]];
+    const bool along = runs_along(soup, bridges, side);
+    Point d = OpenMesh::cross(n, axis);
+    if (!along) d = -d;
+    const double dn = d.norm();
+    if (!(dn > 1e-12 * n.norm()) || !(dn > 0)) return false;
+    order.push_back({std::atan2(OpenMesh::dot(d, e2), OpenMesh::dot(d, e1)), along, side});
+  }
+  std::sort(order.begin(), order.end(),
+            [](const AngularContender& a, const AngularContender& b) { return a.angle < b.angle; });
+  // Put the cut of the circle in the middle of the widest gap, so no tie straddles it.
+  const std::size_t k = order.size();
+  std::size_t widest = k - 1;
+  double widest_gap = order.front().angle + 2 * M_PI - order.back().angle;
+  for (std::size_t i = 0; i + 1 < k; ++i) {
+    const double gap = order[i + 1].angle - order[i].angle;
+    if (gap > widest_gap) {
+      widest_gap = gap;
+      widest = i;
+    }
+  }
+  const double cut = order[widest].angle + widest_gap / 2;
+  for (auto& c : order) {
+    c.angle -= cut;
+    while (c.angle < 0) c.angle += 2 * M_PI;
+    while (c.angle >= 2 * M_PI) c.angle -= 2 * M_PI;
+  }
+  std::sort(order.begin(), order.end(),
+            [](const AngularContender& a, const AngularContender& b) { return a.angle < b.angle; });
+  // Within a run of ties: along-running first, then by corner.
+  for (std::size_t i = 0; i < k;) {
+    std::size_t j = i + 1;
+    while (j < k && order[j].angle - order[j - 1].angle <= kTieAngle) ++j;
+    std::sort(order.begin() + i, order.begin() + j,
+              [](const AngularContender& a, const AngularContender& b) {
+                if (a.along != b.along) return a.along;
+                return a.side < b.side;
+              });
+    i = j;
+  }
+  return true;
+}
+
+// The side of a contender face that looks into the wedge after it (counter-clockwise) and the
+// one that looks into the wedge before it. Face side ids: 2f front, 2f+1 back.
+Index ccw_face_side(const AngularContender& c, Index face) { return 2 * face + (c.along ? 0 : 1); }
+Index cw_face_side(const AngularContender& c, Index face) { return 2 * face + (c.along ? 1 : 0); }
+
+// Pairs cyclic neighbours (in `cycle`) whose wedge lies behind both faces: the first runs against
+// the axis, the next along it.
+void pair_behind_neighbours(const std::vector<AngularContender>& cycle, std::vector<Index>& mate) {
+  const std::size_t m = cycle.size();
+  if (m < 2) return;
+  for (std::size_t t = 0; t < m; ++t) {
+    const AngularContender& a = cycle[t];
+    const AngularContender& b = cycle[(t + 1) % m];
+    if (!a.along && b.along && mate[a.side] == kNoIndex && mate[b.side] == kNoIndex) {
+      pair(mate, a.side, b.side);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& corner_face,
+                                   const EdgeBridges& bridges, PairingPolicy policy) {
+  std::vector<Index> mate(soup.num_corners(), kNoIndex);
+  std::vector<std::size_t> singular;
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    const Index first = bridges.begin[e];
+    const Index k = bridges.num_contenders(e);
+    if (k == 2) {
+      pair(mate, bridges.contenders[first], bridges.contenders[first + 1]);
+    } else if (k > 2) {
+      singular.push_back(e);
+    }
+  }
+  if (singular.empty()) return mate;
+
+  std::vector<Index> sides;
+  const auto combinatorial = [&](std::size_t e) {
+    sides.assign(bridges.contenders.begin() + bridges.begin[e],
+                 bridges.contenders.begin() + bridges.begin[e + 1]);
+    pair_opposite_in_order(soup, bridges, sides, mate);
+  };
+  if (policy == PairingPolicy::combinatorial) {
+    for (std::size_t e : singular) combinatorial(e);
+    return mate;
+  }
+
+  // Geometric: angular orders of all singular edges.
+  std::vector<Point> normals(soup.num_faces());
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) normals[f] = newell_normal(soup, f);
+  std::vector<std::vector<AngularContender>> orders(singular.size());
+  std::vector<char> usable(singular.size());
+  for (std::size_t s = 0; s < singular.size(); ++s) {
+    usable[s] = angular_order(soup, corner_face, bridges, normals, singular[s], orders[s]);
+  }
+
+  // Regions of space: face sides joined across every wedge.
+  UnionFind regions(2 * soup.num_faces());
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    const Index first = bridges.begin[e];
+    const Index k = bridges.num_contenders(e);
+    if (k == 1) {
+      const Index f = corner_face[bridges.contenders[first]];
+      regions.unite(2 * f, 2 * f + 1);
+    } else if (k == 2) {
+      const Index a = bridges.contenders[first], b = bridges.contenders[first + 1];
+      const Index fa = corner_face[a], fb = corner_face[b];
+      const bool opposite = runs_along(soup, bridges, a) != runs_along(soup, bridges, b);
+      regions.unite(2 * fa, 2 * fb + (opposite ? 0 : 1));
+      regions.unite(2 * fa + 1, 2 * fb + (opposite ? 1 : 0));
+    }
+  }
+  for (std::size_t s = 0; s < singular.size(); ++s) {
+    if (!usable[s]) continue;
+    const auto& order = orders[s];
+    for (std::size_t t = 0; t < order.size(); ++t) {
+      const AngularContender& a = order[t];
+      const AngularContender& b = order[(t + 1) % order.size()];
+      regions.unite(ccw_face_side(a, corner_face[a.side]), cw_face_side(b, corner_face[b.side]));
+    }
+  }
+
+  std::vector<AngularContender> cycle;
+  for (std::size_t s = 0; s < singular.size(); ++s) {
+    if (!usable[s]) {
+      combinatorial(singular[s]);
+      continue;
+    }
+    const auto& order = orders[s];
+    const auto is_sheet = [&](const AngularContender& c) {
+      const Index f = corner_face[c.side];
+      return regions.find(2 * f) == regions.find(2 * f + 1);
+    };
+    // (a) solids first: the sheets are taken out of the cycle.
+    cycle.clear();
+    for (const auto& c : order)
+      if (!is_sheet(c)) cycle.push_back(c);
+    pair_behind_neighbours(cycle, mate);
+    // (b) everything still unpaired.
+    cycle.clear();
+    for (const auto& c : order)
+      if (mate[c.side] == kNoIndex) cycle.push_back(c);
+    pair_behind_neighbours(cycle, mate);
+    // (c) elimination, opposite-running only, in cyclic order.
+    sides.clear();
+    for (const auto& c : cycle)
+      if (mate[c.side] == kNoIndex) sides.push_back(c.side);
+    pair_opposite_in_order(soup, bridges, sides, mate);
+  }
+  return mate;
+}
+
+}  // namespace meshbridge::detail

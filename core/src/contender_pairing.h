@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Pairing the contenders of every edge bridge (DESIGN section 4).
+
+#include "meshbridge/edge_bridges.h"
+#include "meshbridge/pairing.h"
+#include "meshbridge/soup.h"
+
+#include <vector>
+
+namespace meshbridge::detail {
+
+//! The pairing of every side: `mate[c]` is the side paired with side c, or kNoIndex.
+//!
+//! - 1 contender: unpaired (boundary side).
+//! - 2 contenders: paired with each other, whichever way they run (orientation decides later
+//!   whether the pair is kept).
+//! - more: by `policy`. Pairs made here always run in opposite directions; what cannot be paired
+//!   that way stays unpaired ("cut"), for stitching to glue back after orientation.
+//!
+//! Geometric policy, per singular edge with axis from its smaller to its larger vertex:
+//! contender faces are sorted by the angle of their in-face direction around the axis (Newell
+//! normals); faces at the same angle (coincident, within 1e-7 rad) are ordered along-running
+//! first, then by corner, so two solids touching face to face are never paired across the empty
+//! zero-width gap. Regions of space are labelled by joining the face sides that see each other
+//! across every wedge of every edge; a face whose two sides lie in one region is a sheet.
+//! Then: (a) among non-sheet faces, cyclic neighbours whose wedge lies behind both are paired;
+//! (b) the same among everything still unpaired; (c) elimination pairs what is left,
+//! opposite-running sides only, in cyclic order. An edge with a contender face of zero area,
+//! or with coincident end points, falls back to the combinatorial rule.
+//!
+//! Combinatorial policy: in corner order, each unpaired side takes the first later unpaired side
+//! that runs the other way.
+std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& corner_face,
+                                   const EdgeBridges& bridges, PairingPolicy policy);
+
+//! True if side c of `soup` runs from the smaller to the larger vertex of its edge.
+inline bool runs_along(const Soup& soup, const EdgeBridges& bridges, Index c) {
+  return soup.corner_vertices[c] == bridges.edge_v0[bridges.corner_edge[c]];
+}
+
+//! Newell normal (twice the vector area) of polygon f.
+Point newell_normal(const Soup& soup, std::size_t f);
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "meshbridge/detect_defects.h"
+
+#include "meshbridge/validate.h"
+
+#include "bridge_pipeline.h"
+#include "contender_pairing.h"
+#include "detection.h"
+#include "orientation.h"
+#include "union_find.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace meshbridge {
+
+namespace detail {
+
+namespace {
+
+// Polygons whose vertex set an earlier polygon has.
+std::vector<Index> duplicate_faces(const Soup& soup) {
+  const std::size_t num_faces = soup.num_faces();
+  std::vector<std::pair<std::uint64_t, Index>> keyed(num_faces);
+  std::vector<Index> sorted;
+  const auto sorted_vertices = [&](Index f, std::vector<Index>& out) {
+    const PolygonView p = soup.polygon(f);
+    out.assign(p.begin(), p.end());
+    std::sort(out.begin(), out.end());
+  };
+  for (Index f = 0; f < num_faces; ++f) {
+    sorted_vertices(f, sorted);
+    std::uint64_t h = 1469598103934665603ull ^ sorted.size();
+    for (Index v : sorted) h = (h ^ v) * 1099511628211ull;
+    keyed[f] = {h, f};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<Index> duplicates;
+  std::vector<Index> a, b;
+  for (std::size_t i = 0; i < keyed.size();) {
+    std::size_t j = i + 1;
+    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+    if (j - i > 1) {
+      // Exact comparison inside a hash run; the earliest face of each vertex set is the original.
+      std::vector<char> done(j - i, 0);
+      for (std::size_t x = i; x < j; ++x) {
+        if (done[x - i]) continue;
+        sorted_vertices(keyed[x].second, a);
+        for (std::size_t y = x + 1; y < j; ++y) {
+          if (done[y - i]) continue;
+          sorted_vertices(keyed[y].second, b);
+          if (a == b) {
+            done[y - i] = 1;
+            duplicates.push_back(keyed[y].second);
+          }
+        }
+      }
+    }
+    i = j;
+  }
+  std::sort(duplicates.begin(), duplicates.end());
+  return duplicates;
+}
+
+}  // namespace
+
+DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner_face,
+                    const EdgeBridges& bridges) {
+  const Soup& input = working.input();
+  const Soup& soup = working.soup();
+  DefectReport report;
+  report.num_vertices = input.num_vertices();
+  report.num_faces = input.num_faces();
+  report.num_edges = bridges.num_edges();
+  report.degenerate_faces = working.degenerate_faces();
+  report.excluded_faces = working.excluded_faces();
+
+  // Edges: singular, boundary, inconsistent; the manifold pairing for fans and orientation.
+  std::vector<Index> manifold_mate(soup.num_corners(), kNoIndex);
+  std::vector<char> on_singular_edge(soup.num_vertices(), 0);
+  UnionFind boundary_chains(soup.num_vertices());
+  UnionFind components(soup.num_faces());
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    const Index first = bridges.begin[e];
+    const Index k = bridges.num_contenders(e);
+    const VertexPair pair{bridges.edge_v0[e], bridges.edge_v1[e]};
+    for (Index i = first + 1; i < first + k; ++i) {
+      components.unite(corner_face[bridges.contenders[first]], corner_face[bridges.contenders[i]]);
+    }
+    if (k == 1) {
+      report.boundary_edges.push_back(pair);
+      boundary_chains.unite(pair.v0, pair.v1);
+    } else if (k == 2) {
+      const Index a = bridges.contenders[first], b = bridges.contenders[first + 1];
+      manifold_mate[a] = b;
+      manifold_mate[b] = a;
+      if (runs_along(soup, bridges, a) == runs_along(soup, bridges, b)) {
+        report.inconsistent_edges.push_back(pair);
+      }
+    } else {
+      report.singular_edges.push_back({pair, k});
+      on_singular_edge[pair.v0] = 1;
+      on_singular_edge[pair.v1] = 1;
+    }
+  }
+  {
+    std::vector<char> counted(soup.num_vertices(), 0);
+    for (const VertexPair& p : report.boundary_edges) {
+      for (Index v : {p.v0, p.v1}) {
+        const Index r = boundary_chains.find(v);
+        if (!counted[r]) {
+          counted[r] = 1;
+          ++report.num_boundary_loops;
+        }
+      }
+    }
+  }
+
+  // Vertices: isolated, on singular edges, pinched (more than one fan through 2-sided edges).
+  std::vector<Index> vertex_origin;
+  split_fans(soup, corner_face, manifold_mate, vertex_origin);
+  std::vector<char> pinched(soup.num_vertices(), 0);
+  for (std::size_t i = soup.num_vertices(); i < vertex_origin.size(); ++i) {
+    pinched[vertex_origin[i]] = 1;
+  }
+  std::vector<char> used(soup.num_vertices(), 0);
+  for (Index v : soup.corner_vertices) used[v] = 1;
+  std::size_t used_count = 0;
+  for (Index v = 0; v < soup.num_vertices(); ++v) {
+    used_count += used[v];
+    if (!used[v]) {
+      report.isolated_vertices.push_back(v);
+    } else if (on_singular_edge[v]) {
+      report.singular_edge_vertices.push_back(v);
+    } else if (pinched[v]) {
+      report.pinch_vertices.push_back(v);
+    }
+  }
+
+  // Orientability through 2-sided edges.
+  std::vector<char> flipped;
+  report.num_nonorientable_components =
+      orient_consistently(soup, corner_face, bridges, false, manifold_mate, flipped)
+          .nonorientable_components;
+
+  for (Index f = 0; f < soup.num_faces(); ++f) {
+    if (components.find(f) == f) ++report.num_components;
+  }
+  report.euler_characteristic = static_cast<long long>(used_count) -
+                                static_cast<long long>(bridges.num_edges()) +
+                                static_cast<long long>(soup.num_faces());
+
+  // Faces, in input numbering.
+  for (Index f = 0; f < input.num_faces(); ++f) {
+    const PolygonView polygon = input.polygon(f);
+    double perimeter = 0;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      perimeter += (input.positions[polygon[(i + 1) % polygon.size()]] -
+                    input.positions[polygon[i]])
+                       .norm();
+    }
+    if (newell_normal(input, f).norm() <= 1e-12 * perimeter * perimeter) {
+      report.zero_area_faces.push_back(f);
+    }
+  }
+  report.duplicate_faces = duplicate_faces(input);
+
+  report.watertight = soup.num_faces() > 0 && report.boundary_edges.empty() &&
+                      report.singular_edges.empty() && report.num_singular_vertices() == 0 &&
+                      report.inconsistent_edges.empty() &&
+                      report.num_nonorientable_components == 0;
+  return report;
+}
+
+}  // namespace detail
+
+DefectReport detect_defects(const Soup& soup) {
+  validate_soup(soup);
+  const detail::WorkingSoup working(soup);
+  const std::vector<Index> corner_face = corner_faces(working.soup());
+  const EdgeBridges bridges = group_sides(working.soup(), corner_face);
+  return detail::detect(working, corner_face, bridges);
+}
+
+}  // namespace meshbridge

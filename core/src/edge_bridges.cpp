@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "meshbridge/edge_bridges.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace meshbridge {
+
+std::vector<Index> corner_faces(const Soup& soup) {
+  std::vector<Index> corner_face(soup.num_corners());
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    std::fill(corner_face.begin() + soup.face_begin[f], corner_face.begin() + soup.face_begin[f + 1],
+              static_cast<Index>(f));
+  }
+  return corner_face;
+}
+
+EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face) {
+  const std::size_t num_corners = soup.num_corners();
+  const std::size_t num_vertices = soup.num_vertices();
+  const auto& cv = soup.corner_vertices;
+
+  // Smaller and larger end of every side.
+  std::vector<Index> low(num_corners), high(num_corners);
+  for (std::size_t c = 0; c < num_corners; ++c) {
+    const Index a = cv[c];
+    const Index b = cv[soup.next_corner(static_cast<Index>(c), corner_face[c])];
+    low[c] = std::min(a, b);
+    high[c] = std::max(a, b);
+  }
+
+  // Counting sort of the sides by their smaller vertex.
+  std::vector<Index> bucket_begin(num_vertices + 1, 0);
+  for (std::size_t c = 0; c < num_corners; ++c) ++bucket_begin[low[c] + 1];
+  for (std::size_t v = 0; v < num_vertices; ++v) bucket_begin[v + 1] += bucket_begin[v];
+  std::vector<Index> sorted(num_corners);
+  {
+    std::vector<Index> fill(bucket_begin.begin(), bucket_begin.end() - 1);
+    for (std::size_t c = 0; c < num_corners; ++c) sorted[fill[low[c]]++] = static_cast<Index>(c);
+  }
+
+  EdgeBridges bridges;
+  bridges.contenders.resize(num_corners);
+  bridges.corner_edge.resize(num_corners);
+  bridges.begin.reserve(num_corners / 2 + 2);
+  bridges.edge_v0.reserve(num_corners / 2 + 1);
+  bridges.edge_v1.reserve(num_corners / 2 + 1);
+
+  // Within a bucket (a handful of sides), order by (larger vertex, corner): insertion sort.
+  Index out = 0;
+  for (std::size_t v = 0; v < num_vertices; ++v) {
+    Index* first = sorted.data() + bucket_begin[v];
+    Index* last = sorted.data() + bucket_begin[v + 1];
+    for (Index* i = first + 1; i < last; ++i) {
+      const Index c = *i;
+      Index* j = i;
+      while (j > first && (high[*(j - 1)] > high[c] || (high[*(j - 1)] == high[c] && *(j - 1) > c))) {
+        *j = *(j - 1);
+        --j;
+      }
+      *j = c;
+    }
+    for (Index* i = first; i < last;) {
+      const Index other = high[*i];
+      const Index edge = static_cast<Index>(bridges.edge_v0.size());
+      bridges.edge_v0.push_back(static_cast<Index>(v));
+      bridges.edge_v1.push_back(other);
+      for (; i < last && high[*i] == other; ++i) {
+        bridges.contenders[out++] = *i;
+        bridges.corner_edge[*i] = edge;
+      }
+      bridges.begin.push_back(out);
+    }
+  }
+  return bridges;
+}
+
+}  // namespace meshbridge

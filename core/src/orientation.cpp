@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "orientation.h"
+
+#include "contender_pairing.h"
+
+namespace meshbridge::detail {
+
+std::size_t cut_inconsistent_pairs(const Soup& soup, const EdgeBridges& bridges,
+                                   std::vector<Index>& mate) {
+  std::size_t cut = 0;
+  for (Index c = 0; c < mate.size(); ++c) {
+    const Index m = mate[c];
+    if (m != kNoIndex && runs_along(soup, bridges, c) == runs_along(soup, bridges, m)) {
+      mate[c] = kNoIndex;
+      mate[m] = kNoIndex;
+      cut += 2;
+    }
+  }
+  return cut;
+}
+
+OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>& corner_face,
+                                      const EdgeBridges& bridges, bool cut_nonorientable,
+                                      std::vector<Index>& mate, std::vector<char>& flipped) {
+  OrientationCounts counts;
+  const std::size_t num_faces = soup.num_faces();
+  flipped.assign(num_faces, 0);
+  std::vector<char> visited(num_faces, 0);
+  std::vector<Index> queue;
+  queue.reserve(num_faces);
+  for (Index root = 0; root < num_faces; ++root) {
+    if (visited[root]) continue;
+    const std::size_t component_begin = queue.size();
+    bool conflict = false;
+    visited[root] = 1;
+    queue.push_back(root);
+    for (std::size_t head = component_begin; head < queue.size(); ++head) {
+      const Index f = queue[head];
+      for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
+        const Index m = mate[c];
+        if (m == kNoIndex) continue;
+        const Index g = corner_face[m];
+        const bool same_way = runs_along(soup, bridges, c) == runs_along(soup, bridges, m);
+        const char wanted = static_cast<char>(flipped[f] ^ (same_way ? 1 : 0));
+        if (!visited[g]) {
+          visited[g] = 1;
+          flipped[g] = wanted;
+          queue.push_back(g);
+        } else if (flipped[g] != wanted) {
+          conflict = true;
+          if (cut_nonorientable) {
+            mate[c] = kNoIndex;
+            mate[m] = kNoIndex;
+            counts.sides_cut += 2;
+          }
+        }
+      }
+    }
+    if (!conflict) continue;
+    ++counts.nonorientable_components;
+    if (cut_nonorientable) continue;
+    for (std::size_t i = component_begin; i < queue.size(); ++i) flipped[queue[i]] = 0;
+    for (std::size_t i = component_begin; i < queue.size(); ++i) {
+      const Index f = queue[i];
+      for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
+        const Index m = mate[c];
+        if (m != kNoIndex && runs_along(soup, bridges, c) == runs_along(soup, bridges, m)) {
+          mate[c] = kNoIndex;
+          mate[m] = kNoIndex;
+          counts.sides_cut += 2;
+        }
+      }
+    }
+  }
+  return counts;
+}
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Consistent orientation of the faces connected through paired sides.
+
+#include "meshbridge/edge_bridges.h"
+#include "meshbridge/soup.h"
+
+#include <vector>
+
+namespace meshbridge::detail {
+
+struct OrientationCounts {
+  std::size_t nonorientable_components = 0;
+  std::size_t sides_cut = 0;  //!< sides unpaired because their pair could not be made consistent
+};
+
+//! Breadth-first over the faces connected through `mate`, choosing per face whether to reverse
+//! it (`flipped`) so that every pair runs in opposite directions. A component where that is
+//! impossible is non-orientable: with `cut_nonorientable` its conflicting pairs (the ones the
+//! search meets after the faces are fixed) are cut and its flips kept; without, its faces keep
+//! their direction and every same-running pair of it is cut. `flipped` has one entry per face.
+OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>& corner_face,
+                                      const EdgeBridges& bridges, bool cut_nonorientable,
+                                      std::vector<Index>& mate, std::vector<char>& flipped);
+
+//! Without orientation: every pair whose sides run the same way is cut.
+std::size_t cut_inconsistent_pairs(const Soup& soup, const EdgeBridges& bridges,
+                                   std::vector<Index>& mate);
+
+}  // namespace meshbridge::detail

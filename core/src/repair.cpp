@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "meshbridge/repair.h"
+
+#include "meshbridge/detect_defects.h"
+#include "meshbridge/validate.h"
+
+#include "bridge_pipeline.h"
+#include "detection.h"
+#include "json_writer.h"
+#include "working_soup.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace meshbridge {
+
+namespace {
+
+// The input without the polygons cleanup removes; origins map back to the input.
+struct FilteredSoup {
+  Soup soup;
+  std::vector<Index> face_origin;
+  std::vector<Index> corner_origin;
+};
+
+FilteredSoup without_faces(const Soup& input, const std::vector<char>& remove) {
+  FilteredSoup filtered;
+  filtered.soup.positions = input.positions;
+  for (Index f = 0; f < input.num_faces(); ++f) {
+    if (remove[f]) continue;
+    for (Index c = input.face_begin[f]; c < input.face_begin[f + 1]; ++c) {
+      filtered.corner_origin.push_back(c);
+    }
+    filtered.soup.add_polygon(input.polygon(f));
+    filtered.face_origin.push_back(f);
+  }
+  return filtered;
+}
+
+// Drops vertices no polygon uses; returns how many.
+std::size_t remove_unused_vertices(IndexedMesh& mesh) {
+  Soup& soup = mesh.soup;
+  std::vector<Index> new_index(soup.num_vertices(), kNoIndex);
+  for (Index v : soup.corner_vertices) new_index[v] = 0;
+  Index next = 0;
+  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
+    if (new_index[v] == kNoIndex) continue;
+    new_index[v] = next;
+    soup.positions[next] = soup.positions[v];
+    mesh.vertex_origin[next] = mesh.vertex_origin[v];
+    ++next;
+  }
+  const std::size_t removed = soup.num_vertices() - next;
+  soup.positions.resize(next);
+  mesh.vertex_origin.resize(next);
+  for (Index& v : soup.corner_vertices) v = new_index[v];
+  return removed;
+}
+
+}  // namespace
+
+RepairResult repair(const Soup& soup, const RepairOptions& options) {
+  validate_soup(soup);
+  RepairResult result;
+  RepairReport& report = result.report;
+  report.before = detect_defects(soup);
+  report.faces_in = soup.num_faces();
+  report.vertices_in = soup.num_vertices();
+
+  // Cleanup removals first, so everything after works on what is kept.
+  std::vector<char> remove(soup.num_faces(), 0);
+  if (options.remove_duplicate_faces) {
+    for (Index f : report.before.duplicate_faces) remove[f] = 1;
+  }
+  if (options.remove_degenerate_faces) {
+    for (Index f : report.before.degenerate_faces) remove[f] = 1;
+  }
+  FilteredSoup filtered;
+  const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
+  if (filtering) {
+    if (options.remove_duplicate_faces) {
+      report.duplicate_faces_removed = report.before.duplicate_faces.size();
+    }
+    for (Index f : report.before.degenerate_faces) {
+      // A degenerate duplicate counts once, as a duplicate.
+      const bool already = options.remove_duplicate_faces &&
+                           std::binary_search(report.before.duplicate_faces.begin(),
+                                              report.before.duplicate_faces.end(), f);
+      report.degenerate_faces_removed += (options.remove_degenerate_faces && !already) ? 1 : 0;
+    }
+    filtered = without_faces(soup, remove);
+  }
+  const Soup& source = filtering ? filtered.soup : soup;
+
+  const detail::WorkingSoup working(source);
+  detail::PipelineOptions pipeline_options;
+  pipeline_options.pairing = options.pairing;
+  pipeline_options.orient = options.orient;
+  pipeline_options.cut_nonorientable = options.cut_nonorientable;
+  pipeline_options.stitch = options.stitch;
+  detail::PipelineResult pipeline = detail::run_pipeline(working, pipeline_options);
+
+  IndexedMesh& mesh = result.mesh;
+  mesh = std::move(pipeline.mesh);
+  if (filtering) {
+    for (Index& f : mesh.face_origin) f = filtered.face_origin[f];
+    for (Index& c : mesh.corner_origin) c = filtered.corner_origin[c];
+  }
+  if (options.remove_isolated_vertices) {
+    report.isolated_vertices_removed = remove_unused_vertices(mesh);
+  }
+
+  report.faces_out = mesh.soup.num_faces();
+  report.faces_set_aside = working.excluded_faces().size();
+  report.faces_split = working.faces_split();
+  report.faces_added_by_split = working.faces_added_by_split();
+  report.vertices_out = mesh.soup.num_vertices();
+  report.vertices_split = pipeline.vertices_split;
+  report.sides_cut = pipeline.sides_cut;
+  report.sides_cut_for_orientation = pipeline.sides_cut_for_orientation;
+  report.sides_stitched = pipeline.sides_stitched;
+  report.faces_flipped = pipeline.faces_flipped;
+  report.faces_detached = pipeline.faces_detached;
+  report.nonorientable_components = pipeline.nonorientable_components;
+  report.after = detect_defects(mesh.soup);
+  report.components_before = report.before.num_components;
+  report.components_after = report.after.num_components;
+  report.boundary_edges_before = report.before.boundary_edges.size();
+  report.boundary_edges_after = report.after.boundary_edges.size();
+  return result;
+}
+
+std::string to_text(const RepairReport& r) {
+  std::ostringstream out;
+  out << "faces: " << r.faces_in << " in, " << r.faces_out << " out (" << r.faces_set_aside
+      << " set aside, " << r.faces_split << " split into " << r.faces_added_by_split
+      << " more, " << r.duplicate_faces_removed << " duplicates and " << r.degenerate_faces_removed
+      << " degenerate removed, " << r.faces_flipped << " flipped, " << r.faces_detached
+      << " detached)\n";
+  out << "vertices: " << r.vertices_in << " in, " << r.vertices_out << " out ("
+      << r.vertices_split << " copies from split fans, " << r.isolated_vertices_removed
+      << " isolated removed)\n";
+  out << "sides: " << r.sides_cut << " cut on singular edges, " << r.sides_cut_for_orientation
+      << " cut for orientation, " << r.sides_stitched << " stitched\n";
+  out << "components: " << r.components_before << " -> " << r.components_after
+      << "; boundary edges: " << r.boundary_edges_before << " -> " << r.boundary_edges_after
+      << "; non-orientable components: " << r.nonorientable_components << "\n";
+  out << "after: singular edges " << r.after.singular_edges.size() << ", singular vertices "
+      << r.after.num_singular_vertices() << ", closed " << (r.after.watertight ? "yes" : "no")
+      << "\n";
+  return out.str();
+}
+
+std::string to_json(const RepairReport& r) {
+  return detail::JsonObject()
+      .number("faces_in", r.faces_in)
+      .number("faces_out", r.faces_out)
+      .number("faces_set_aside", r.faces_set_aside)
+      .number("faces_split", r.faces_split)
+      .number("faces_added_by_split", r.faces_added_by_split)
+      .number("duplicate_faces_removed", r.duplicate_faces_removed)
+      .number("degenerate_faces_removed", r.degenerate_faces_removed)
+      .number("isolated_vertices_removed", r.isolated_vertices_removed)
+      .number("vertices_in", r.vertices_in)
+      .number("vertices_out", r.vertices_out)
+      .number("vertices_split", r.vertices_split)
+      .number("sides_cut", r.sides_cut)
+      .number("sides_cut_for_orientation", r.sides_cut_for_orientation)
+      .number("sides_stitched", r.sides_stitched)
+      .number("faces_flipped", r.faces_flipped)
+      .number("faces_detached", r.faces_detached)
+      .number("components_before", r.components_before)
+      .number("components_after", r.components_after)
+      .number("boundary_edges_before", r.boundary_edges_before)
+      .number("boundary_edges_after", r.boundary_edges_after)
+      .number("nonorientable_components", r.nonorientable_components)
+      .raw("before", to_json(r.before))
+      .raw("after", to_json(r.after))
+      .str();
+}
+
+}  // namespace meshbridge

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "working_soup.h"
+
+#include <algorithm>
+
+namespace meshbridge::detail {
+
+bool has_repeated_vertex(PolygonView polygon) {
+  const std::size_t n = polygon.size();
+  if (n <= 16) {
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        if (polygon[i] == polygon[j]) return true;
+    return false;
+  }
+  std::vector<Index> sorted(polygon.begin(), polygon.end());
+  std::sort(sorted.begin(), sorted.end());
+  return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+}
+
+namespace {
+
+// Splits one degenerate polygon into simple loops of >= 3 corners.
+// `corners` holds input corner ids; returns the loops as lists of input corner ids.
+std::vector<std::vector<Index>> simple_loops(const Soup& input, std::vector<Index> corners) {
+  const auto vertex = [&](Index c) { return input.corner_vertices[c]; };
+  // Collapse consecutive repeats, cyclically.
+  std::vector<Index> collapsed;
+  for (Index c : corners) {
+    if (collapsed.empty() || vertex(collapsed.back()) != vertex(c)) collapsed.push_back(c);
+  }
+  while (collapsed.size() > 1 && vertex(collapsed.back()) == vertex(collapsed.front())) {
+    collapsed.pop_back();
+  }
+  // Cut out a loop each time a vertex comes back.
+  std::vector<std::vector<Index>> loops;
+  std::vector<Index> stack;
+  for (Index c : collapsed) {
+    auto again = std::find_if(stack.begin(), stack.end(),
+                              [&](Index s) { return vertex(s) == vertex(c); });
+    if (again != stack.end()) {
+      std::vector<Index> loop(again, stack.end());
+      if (loop.size() >= 3) loops.push_back(std::move(loop));
+      stack.erase(again + 1, stack.end());
+      continue;  // keep the earlier corner of the revisited vertex
+    }
+    stack.push_back(c);
+  }
+  if (stack.size() >= 3) loops.push_back(std::move(stack));
+  return loops;
+}
+
+}  // namespace
+
+WorkingSoup::WorkingSoup(const Soup& input) : input_(input) {
+  for (std::size_t f = 0; f < input.num_faces(); ++f) {
+    if (has_repeated_vertex(input.polygon(f))) degenerate_.push_back(static_cast<Index>(f));
+  }
+  if (degenerate_.empty()) return;
+
+  identity_ = false;
+  owned_.positions = input.positions;
+  owned_.reserve(input.num_vertices(), input.num_faces(), input.num_corners());
+  face_origin_.reserve(input.num_faces());
+  corner_origin_.reserve(input.num_corners());
+  std::size_t next_degenerate = 0;
+  for (std::size_t f = 0; f < input.num_faces(); ++f) {
+    const Index first = input.face_begin[f];
+    const Index last = input.face_begin[f + 1];
+    std::vector<std::vector<Index>> loops;
+    if (next_degenerate < degenerate_.size() && degenerate_[next_degenerate] == f) {
+      ++next_degenerate;
+      std::vector<Index> corners(last - first);
+      for (Index c = first; c < last; ++c) corners[c - first] = c;
+      loops = simple_loops(input, std::move(corners));
+      if (loops.empty()) {
+        excluded_.push_back(static_cast<Index>(f));
+        continue;
+      }
+      if (loops.size() > 1) {
+        ++faces_split_;
+        faces_added_by_split_ += loops.size() - 1;
+      }
+    } else {
+      loops.emplace_back();
+      for (Index c = first; c < last; ++c) loops.back().push_back(c);
+    }
+    for (const auto& loop : loops) {
+      for (Index c : loop) {
+        owned_.corner_vertices.push_back(input.corner_vertices[c]);
+        corner_origin_.push_back(c);
+      }
+      owned_.face_begin.push_back(static_cast<Index>(owned_.corner_vertices.size()));
+      face_origin_.push_back(static_cast<Index>(f));
+    }
+  }
+}
+
+}  // namespace meshbridge::detail
