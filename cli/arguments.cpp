@@ -29,7 +29,8 @@ Arguments::Arguments(const std::vector<std::string>& args, const std::vector<std
       flags_[name] = true;
     } else if (known(options, name)) {
       if (!inline_value) {
-        if (i + 1 >= args.size()) throw UsageError("--" + name + " needs a value");
+        if (i + 1 >= args.size())
+          throw UsageError("--" + name + " needs a value");
         value = args[++i];
       }
       options_[name] = value;
@@ -46,7 +47,8 @@ std::string Arguments::value(const std::string& name, const std::string& fallbac
 
 double Arguments::number(const std::string& name, double fallback) const {
   const auto it = options_.find(name);
-  if (it == options_.end()) return fallback;
+  if (it == options_.end())
+    return fallback;
   std::size_t used = 0;
   double result = 0;
   try {
@@ -61,7 +63,8 @@ double Arguments::number(const std::string& name, double fallback) const {
 }
 
 void Arguments::expect_positionals(std::size_t count, const std::string& usage) const {
-  if (positionals_.size() != count) throw UsageError("usage: " + usage);
+  if (positionals_.size() != count)
+    throw UsageError("usage: " + usage);
 }
 
 }  // namespace meshbridge::cli

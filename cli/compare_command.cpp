@@ -20,8 +20,11 @@ struct Figures {
 
 Figures bridged_figures(const BridgedMesh& bridged, const Soup& soup) {
   const DefectReport report = detect_defects(bridged.indexed.soup);
-  return {bridged.mesh.n_vertices(), bridged.mesh.n_faces(),       0,
-          soup.num_faces() - bridged.mesh.n_faces(), report.boundary_edges.size(),
+  return {bridged.mesh.n_vertices(),
+          bridged.mesh.n_faces(),
+          0,
+          soup.num_faces() - bridged.mesh.n_faces(),
+          report.boundary_edges.size(),
           report.num_components};
 }
 
@@ -47,7 +50,8 @@ int compare_command(const std::vector<std::string>& args) {
   std::cout << path << ": " << soup.num_vertices() << " vertices, " << soup.num_faces()
             << " faces in the file\n";
   std::cout << std::left << std::setw(18) << "" << std::right << std::setw(16) << "OpenMesh stock"
-            << std::setw(16) << "MeshBridge" << "\n";
+            << std::setw(16) << "MeshBridge"
+            << "\n";
   const auto row = [](const char* label, std::size_t stock_value, std::size_t bridged_value) {
     std::cout << std::left << std::setw(18) << label << std::right << std::setw(16) << stock_value
               << std::setw(16) << bridged_value << "\n";

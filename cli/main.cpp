@@ -41,9 +41,12 @@ int main(int argc, char** argv) {
   const std::string command = argv[1];
   const std::vector<std::string> args(argv + 2, argv + argc);
   try {
-    if (command == "check") return check_command(args);
-    if (command == "compare") return compare_command(args);
-    if (command == "repair") return repair_command(args);
+    if (command == "check")
+      return check_command(args);
+    if (command == "compare")
+      return compare_command(args);
+    if (command == "repair")
+      return repair_command(args);
     std::cerr << "meshbridge: unknown command '" << command << "' (try meshbridge --help)\n";
     return kError;
   } catch (const std::bad_alloc&) {

@@ -16,7 +16,8 @@ namespace {
 class ParityUnionFind {
  public:
   explicit ParityUnionFind(std::size_t n) : parent_(n), parity_(n, 0), size_(n, 1) {
-    for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<Index>(i);
+    for (std::size_t i = 0; i < n; ++i)
+      parent_[i] = static_cast<Index>(i);
   }
   //! Root of x; `flip` receives the accumulated reversal of x.
   Index find(Index x, char& flip) {
@@ -63,37 +64,44 @@ std::size_t stitch(const Soup& soup, const std::vector<Index>& corner_face,
   char unused = 0;
   for (Index c = 0; c < mate.size(); ++c) {
     const Index m = mate[c];
-    if (m == kNoIndex || m < c) continue;
+    if (m == kNoIndex || m < c)
+      continue;
     const Index a = components.find(corner_face[c], unused);
     const Index b = components.find(corner_face[m], unused);
-    if (a != b) components.unite_roots(std::min(a, b), std::max(a, b), false);
+    if (a != b)
+      components.unite_roots(std::min(a, b), std::max(a, b), false);
   }
   std::size_t stitched = 0;
   std::vector<Index> open;
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
-    if (bridges.num_contenders(e) < 2) continue;
+    if (bridges.num_contenders(e) < 2)
+      continue;
     open.clear();
     for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
-      if (mate[bridges.contenders[i]] == kNoIndex) open.push_back(bridges.contenders[i]);
+      if (mate[bridges.contenders[i]] == kNoIndex)
+        open.push_back(bridges.contenders[i]);
     }
     for (std::size_t i = 0; i < open.size(); ++i) {
       const Index s = open[i];
-      if (mate[s] != kNoIndex) continue;
+      if (mate[s] != kNoIndex)
+        continue;
       for (std::size_t j = i + 1; j < open.size(); ++j) {
         const Index t = open[j];
-        if (mate[t] != kNoIndex) continue;
+        if (mate[t] != kNoIndex)
+          continue;
         char flip_s = 0, flip_t = 0;
         const Index root_s = components.find(corner_face[s], flip_s);
         const Index root_t = components.find(corner_face[t], flip_t);
         const bool along_s = runs_along(soup, bridges, s) != (flipped[corner_face[s]] ^ flip_s);
         const bool along_t = runs_along(soup, bridges, t) != (flipped[corner_face[t]] ^ flip_t);
         if (root_s == root_t) {
-          if (along_s == along_t) continue;
+          if (along_s == along_t)
+            continue;
         } else {
           // Keep the larger component as it is (ties: the one with the smaller root).
-          const bool keep_s = components.size(root_s) > components.size(root_t) ||
-                              (components.size(root_s) == components.size(root_t) &&
-                               root_s < root_t);
+          const bool keep_s =
+              components.size(root_s) > components.size(root_t) ||
+              (components.size(root_s) == components.size(root_t) && root_s < root_t);
           const Index keep = keep_s ? root_s : root_t;
           const Index other = keep_s ? root_t : root_s;
           components.unite_roots(keep, other, along_s == along_t);
@@ -120,7 +128,8 @@ void choose_component_orientation(const Soup& soup, const std::vector<Index>& co
   const std::size_t num_faces = soup.num_faces();
   UnionFind components(num_faces);
   for (Index c = 0; c < mate.size(); ++c) {
-    if (mate[c] != kNoIndex) components.unite(corner_face[c], corner_face[mate[c]]);
+    if (mate[c] != kNoIndex)
+      components.unite(corner_face[c], corner_face[mate[c]]);
   }
   std::vector<char> open(num_faces, 0);
   std::vector<double> volume(num_faces, 0.0);
@@ -133,20 +142,23 @@ void choose_component_orientation(const Soup& soup, const std::vector<Index>& co
     double v = 0;
     const Point& p0 = soup.positions[polygon[0]];
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      v += OpenMesh::dot(p0, OpenMesh::cross(soup.positions[polygon[i]],
-                                             soup.positions[polygon[i + 1]]));
+      v += OpenMesh::dot(
+          p0, OpenMesh::cross(soup.positions[polygon[i]], soup.positions[polygon[i + 1]]));
     }
     volume[r] += flipped[f] ? -v : v;
     for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
-      if (mate[c] == kNoIndex) open[r] = 1;
+      if (mate[c] == kNoIndex)
+        open[r] = 1;
     }
   }
   std::vector<char> reverse(num_faces, 0);
   for (Index r = 0; r < num_faces; ++r) {
-    if (faces[r] == 0) continue;
+    if (faces[r] == 0)
+      continue;
     reverse[r] = open[r] ? (2 * reversed[r] > faces[r]) : (volume[r] < 0);
   }
-  for (Index f = 0; f < num_faces; ++f) flipped[f] ^= reverse[components.find(f)];
+  for (Index f = 0; f < num_faces; ++f)
+    flipped[f] ^= reverse[components.find(f)];
 }
 
 // The output polygons: working faces with split vertices, reversed where flipped.
@@ -182,7 +194,8 @@ IndexedMesh emit_mesh(const WorkingSoup& working, const std::vector<Index>& corn
 // colliding sides beyond the first pair are returned for detaching; opposite unpaired sides that
 // land on one output edge are paired (they are glued by the output anyway).
 std::vector<Index> find_collisions(const Soup& soup, const std::vector<Index>& corner_face,
-                                   const EdgeBridges& bridges, const std::vector<Index>& corner_vertex,
+                                   const EdgeBridges& bridges,
+                                   const std::vector<Index>& corner_vertex,
                                    const std::vector<char>& flipped, std::vector<Index>& mate,
                                    std::size_t& implicitly_stitched) {
   // Output vertex a side starts at, after its face is reversed or not.
@@ -194,8 +207,10 @@ std::vector<Index> find_collisions(const Soup& soup, const std::vector<Index>& c
   std::vector<Index> detach;
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
     const Index k = bridges.num_contenders(e);
-    if (k < 2) continue;
-    if (k == 2 && mate[bridges.contenders[bridges.begin[e]]] != kNoIndex) continue;
+    if (k < 2)
+      continue;
+    if (k == 2 && mate[bridges.contenders[bridges.begin[e]]] != kNoIndex)
+      continue;
     keyed.clear();
     for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
       const Index c = bridges.contenders[i];
@@ -225,7 +240,8 @@ std::vector<Index> find_collisions(const Soup& soup, const std::vector<Index>& c
         Index keep_a = std::get<2>(keyed[i]), keep_b = mate[keep_a];
         for (std::size_t t = i; t < j; ++t) {
           const Index c = std::get<2>(keyed[t]);
-          if (c != keep_a && c != keep_b) detach.push_back(corner_face[c]);
+          if (c != keep_a && c != keep_b)
+            detach.push_back(corner_face[c]);
         }
       }
       i = j;
@@ -245,7 +261,8 @@ std::vector<Index> split_fans(const Soup& soup, const std::vector<Index>& corner
   UnionFind fans(num_corners);
   for (Index c = 0; c < num_corners; ++c) {
     const Index m = mate[c];
-    if (m == kNoIndex || m < c) continue;
+    if (m == kNoIndex || m < c)
+      continue;
     const Index c_next = soup.next_corner(c, corner_face[c]);
     const Index m_next = soup.next_corner(m, corner_face[m]);
     if (cv[m] == cv[c]) {
@@ -258,7 +275,8 @@ std::vector<Index> split_fans(const Soup& soup, const std::vector<Index>& corner
   }
   const std::size_t num_vertices = soup.num_vertices();
   vertex_origin.resize(num_vertices);
-  for (std::size_t v = 0; v < num_vertices; ++v) vertex_origin[v] = static_cast<Index>(v);
+  for (std::size_t v = 0; v < num_vertices; ++v)
+    vertex_origin[v] = static_cast<Index>(v);
   std::vector<char> taken(num_vertices, 0);
   std::vector<Index> root_vertex(num_corners, kNoIndex);
   std::vector<Index> corner_vertex(num_corners);
@@ -291,9 +309,11 @@ PipelineResult run_pipeline(const WorkingSoup& working, const PipelineOptions& o
 
   mate = pair_contenders(soup, corner_face, bridges, options.pairing);
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
-    if (bridges.num_contenders(e) <= 2) continue;
+    if (bridges.num_contenders(e) <= 2)
+      continue;
     for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
-      if (mate[bridges.contenders[i]] == kNoIndex) ++result.sides_cut;
+      if (mate[bridges.contenders[i]] == kNoIndex)
+        ++result.sides_cut;
     }
   }
 
@@ -306,16 +326,18 @@ PipelineResult run_pipeline(const WorkingSoup& working, const PipelineOptions& o
     flipped.assign(soup.num_faces(), 0);
     result.sides_cut_for_orientation = cut_inconsistent_pairs(soup, bridges, mate);
   }
-  if (options.stitch) result.sides_stitched = stitch(soup, corner_face, bridges, mate, flipped);
-  if (options.orient) choose_component_orientation(soup, corner_face, mate, flipped);
+  if (options.stitch)
+    result.sides_stitched = stitch(soup, corner_face, bridges, mate, flipped);
+  if (options.orient)
+    choose_component_orientation(soup, corner_face, mate, flipped);
 
   std::vector<Index> vertex_origin;
   std::vector<Index> corner_vertex = split_fans(soup, corner_face, mate, vertex_origin);
   for (int round = 0;; ++round) {
-    const std::vector<Index> detach =
-        find_collisions(soup, corner_face, bridges, corner_vertex, flipped, mate,
-                        result.sides_stitched);
-    if (detach.empty()) break;
+    const std::vector<Index> detach = find_collisions(soup, corner_face, bridges, corner_vertex,
+                                                      flipped, mate, result.sides_stitched);
+    if (detach.empty())
+      break;
     for (Index f : detach) {
       for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
         if (mate[c] != kNoIndex) {
@@ -328,7 +350,8 @@ PipelineResult run_pipeline(const WorkingSoup& working, const PipelineOptions& o
     corner_vertex = split_fans(soup, corner_face, mate, vertex_origin);
   }
   result.vertices_split = vertex_origin.size() - soup.num_vertices();
-  for (char f : flipped) result.faces_flipped += f;
+  for (char f : flipped)
+    result.faces_flipped += f;
   result.mesh = emit_mesh(working, corner_vertex, std::move(vertex_origin), flipped);
   return result;
 }

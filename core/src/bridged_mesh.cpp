@@ -24,13 +24,15 @@ BridgedMesh build_bridged_mesh(const Soup& soup, const BridgedMeshOptions& optio
 
   const auto& origin = bridged.indexed.vertex_origin;
   bridged.copies_begin.assign(soup.num_vertices() + 1, 0);
-  for (Index v : origin) ++bridged.copies_begin[v + 1];
+  for (Index v : origin)
+    ++bridged.copies_begin[v + 1];
   for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
     bridged.copies_begin[v + 1] += bridged.copies_begin[v];
   }
   bridged.copies.resize(origin.size());
   std::vector<Index> fill(bridged.copies_begin.begin(), bridged.copies_begin.end() - 1);
-  for (Index out = 0; out < origin.size(); ++out) bridged.copies[fill[origin[out]]++] = out;
+  for (Index out = 0; out < origin.size(); ++out)
+    bridged.copies[fill[origin[out]]++] = out;
 
   OpenMeshBuild build = to_openmesh(bridged.indexed);
   bridged.mesh = std::move(build.mesh);

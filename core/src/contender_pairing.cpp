@@ -36,7 +36,8 @@ void pair(std::vector<Index>& mate, Index a, Index b) {
 void pair_opposite_in_order(const Soup& soup, const EdgeBridges& bridges,
                             const std::vector<Index>& sides, std::vector<Index>& mate) {
   for (std::size_t i = 0; i < sides.size(); ++i) {
-    if (mate[sides[i]] != kNoIndex) continue;
+    if (mate[sides[i]] != kNoIndex)
+      continue;
     const bool along = runs_along(soup, bridges, sides[i]);
     for (std::size_t j = i + 1; j < sides.size(); ++j) {
       if (mate[sides[j]] == kNoIndex && runs_along(soup, bridges, sides[j]) != along) {
@@ -60,7 +61,8 @@ bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
   order.clear();
   Point axis = soup.positions[bridges.edge_v1[e]] - soup.positions[bridges.edge_v0[e]];
   const double length = axis.norm();
-  if (!(length > 0)) return false;
+  if (!(length > 0))
+    return false;
   axis /= length;
   // A frame (e1, e2) perpendicular to the axis.
   const int least = std::abs(axis[0]) <= std::abs(axis[1])
@@ -76,9 +78,11 @@ bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
     const Point& n = normals[corner_face[side]];
     const bool along = runs_along(soup, bridges, side);
     Point d = OpenMesh::cross(n, axis);
-    if (!along) d = -d;
+    if (!along)
+      d = -d;
     const double dn = d.norm();
-    if (!(dn > 1e-12 * n.norm()) || !(dn > 0)) return false;
+    if (!(dn > 1e-12 * n.norm()) || !(dn > 0))
+      return false;
     order.push_back({std::atan2(OpenMesh::dot(d, e2), OpenMesh::dot(d, e1)), along, side});
   }
   std::sort(order.begin(), order.end(),
@@ -97,18 +101,22 @@ bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
   const double cut = order[widest].angle + widest_gap / 2;
   for (auto& c : order) {
     c.angle -= cut;
-    while (c.angle < 0) c.angle += 2 * M_PI;
-    while (c.angle >= 2 * M_PI) c.angle -= 2 * M_PI;
+    while (c.angle < 0)
+      c.angle += 2 * M_PI;
+    while (c.angle >= 2 * M_PI)
+      c.angle -= 2 * M_PI;
   }
   std::sort(order.begin(), order.end(),
             [](const AngularContender& a, const AngularContender& b) { return a.angle < b.angle; });
   // Within a run of ties: along-running first, then by corner.
   for (std::size_t i = 0; i < k;) {
     std::size_t j = i + 1;
-    while (j < k && order[j].angle - order[j - 1].angle <= kTieAngle) ++j;
+    while (j < k && order[j].angle - order[j - 1].angle <= kTieAngle)
+      ++j;
     std::sort(order.begin() + i, order.begin() + j,
               [](const AngularContender& a, const AngularContender& b) {
-                if (a.along != b.along) return a.along;
+                if (a.along != b.along)
+                  return a.along;
                 return a.side < b.side;
               });
     i = j;
@@ -118,14 +126,19 @@ bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
 
 // The side of a contender face that looks into the wedge after it (counter-clockwise) and the
 // one that looks into the wedge before it. Face side ids: 2f front, 2f+1 back.
-Index ccw_face_side(const AngularContender& c, Index face) { return 2 * face + (c.along ? 0 : 1); }
-Index cw_face_side(const AngularContender& c, Index face) { return 2 * face + (c.along ? 1 : 0); }
+Index ccw_face_side(const AngularContender& c, Index face) {
+  return 2 * face + (c.along ? 0 : 1);
+}
+Index cw_face_side(const AngularContender& c, Index face) {
+  return 2 * face + (c.along ? 1 : 0);
+}
 
 // Pairs cyclic neighbours (in `cycle`) whose wedge lies behind both faces: the first runs against
 // the axis, the next along it.
 void pair_behind_neighbours(const std::vector<AngularContender>& cycle, std::vector<Index>& mate) {
   const std::size_t m = cycle.size();
-  if (m < 2) return;
+  if (m < 2)
+    return;
   for (std::size_t t = 0; t < m; ++t) {
     const AngularContender& a = cycle[t];
     const AngularContender& b = cycle[(t + 1) % m];
@@ -150,7 +163,8 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
       singular.push_back(e);
     }
   }
-  if (singular.empty()) return mate;
+  if (singular.empty())
+    return mate;
 
   std::vector<Index> sides;
   const auto combinatorial = [&](std::size_t e) {
@@ -159,13 +173,15 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
     pair_opposite_in_order(soup, bridges, sides, mate);
   };
   if (policy == PairingPolicy::combinatorial) {
-    for (std::size_t e : singular) combinatorial(e);
+    for (std::size_t e : singular)
+      combinatorial(e);
     return mate;
   }
 
   // Geometric: angular orders of all singular edges.
   std::vector<Point> normals(soup.num_faces());
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) normals[f] = newell_normal(soup, f);
+  for (std::size_t f = 0; f < soup.num_faces(); ++f)
+    normals[f] = newell_normal(soup, f);
   std::vector<std::vector<AngularContender>> orders(singular.size());
   std::vector<char> usable(singular.size());
   for (std::size_t s = 0; s < singular.size(); ++s) {
@@ -189,7 +205,8 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
     }
   }
   for (std::size_t s = 0; s < singular.size(); ++s) {
-    if (!usable[s]) continue;
+    if (!usable[s])
+      continue;
     const auto& order = orders[s];
     for (std::size_t t = 0; t < order.size(); ++t) {
       const AngularContender& a = order[t];
@@ -212,17 +229,20 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
     // (a) solids first: the sheets are taken out of the cycle.
     cycle.clear();
     for (const auto& c : order)
-      if (!is_sheet(c)) cycle.push_back(c);
+      if (!is_sheet(c))
+        cycle.push_back(c);
     pair_behind_neighbours(cycle, mate);
     // (b) everything still unpaired.
     cycle.clear();
     for (const auto& c : order)
-      if (mate[c.side] == kNoIndex) cycle.push_back(c);
+      if (mate[c.side] == kNoIndex)
+        cycle.push_back(c);
     pair_behind_neighbours(cycle, mate);
     // (c) elimination, opposite-running only, in cyclic order.
     sides.clear();
     for (const auto& c : cycle)
-      if (mate[c.side] == kNoIndex) sides.push_back(c.side);
+      if (mate[c.side] == kNoIndex)
+        sides.push_back(c.side);
     pair_opposite_in_order(soup, bridges, sides, mate);
   }
   return mate;

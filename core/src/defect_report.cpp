@@ -29,7 +29,8 @@ JsonObject& JsonObject::string(const char* key, const std::string& value) {
 JsonObject& JsonObject::indices(const char* key, const std::vector<Index>& values) {
   next(key);
   out_ << '[';
-  for (std::size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << values[i];
+  for (std::size_t i = 0; i < values.size(); ++i)
+    out_ << (i ? "," : "") << values[i];
   out_ << ']';
   return *this;
 }
@@ -65,7 +66,8 @@ void list(std::ostringstream& out, const char* label, const std::vector<T>& item
       out << (i ? " " : "");
       print(items[i]);
     }
-    if (items.size() > max_listed) out << " ...";
+    if (items.size() > max_listed)
+      out << " ...";
     out << "]";
   }
   out << "\n";
@@ -78,8 +80,8 @@ std::string to_text(const DefectReport& r, std::size_t max_listed) {
   const auto index = [&](Index i) { out << i; };
   const auto pair = [&](const VertexPair& p) { out << p.v0 << "-" << p.v1; };
   out << "vertices " << r.num_vertices << ", faces " << r.num_faces << ", edges " << r.num_edges
-      << ", components " << r.num_components << ", Euler characteristic "
-      << r.euler_characteristic << ", watertight " << (r.watertight ? "yes" : "no") << "\n";
+      << ", components " << r.num_components << ", Euler characteristic " << r.euler_characteristic
+      << ", watertight " << (r.watertight ? "yes" : "no") << "\n";
   list(out, "singular edges", r.singular_edges, max_listed, [&](const SingularEdge& e) {
     out << e.vertices.v0 << "-" << e.vertices.v1 << "(" << e.contenders << ")";
   });

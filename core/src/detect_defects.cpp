@@ -31,7 +31,8 @@ std::vector<Index> duplicate_faces(const Soup& soup) {
   for (Index f = 0; f < num_faces; ++f) {
     sorted_vertices(f, sorted);
     std::uint64_t h = 1469598103934665603ull ^ sorted.size();
-    for (Index v : sorted) h = (h ^ v) * 1099511628211ull;
+    for (Index v : sorted)
+      h = (h ^ v) * 1099511628211ull;
     keyed[f] = {h, f};
   }
   std::sort(keyed.begin(), keyed.end());
@@ -39,15 +40,18 @@ std::vector<Index> duplicate_faces(const Soup& soup) {
   std::vector<Index> a, b;
   for (std::size_t i = 0; i < keyed.size();) {
     std::size_t j = i + 1;
-    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+    while (j < keyed.size() && keyed[j].first == keyed[i].first)
+      ++j;
     if (j - i > 1) {
       // Exact comparison inside a hash run; the earliest face of each vertex set is the original.
       std::vector<char> done(j - i, 0);
       for (std::size_t x = i; x < j; ++x) {
-        if (done[x - i]) continue;
+        if (done[x - i])
+          continue;
         sorted_vertices(keyed[x].second, a);
         for (std::size_t y = x + 1; y < j; ++y) {
-          if (done[y - i]) continue;
+          if (done[y - i])
+            continue;
           sorted_vertices(keyed[y].second, b);
           if (a == b) {
             done[y - i] = 1;
@@ -124,7 +128,8 @@ DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner
     pinched[vertex_origin[i]] = 1;
   }
   std::vector<char> used(soup.num_vertices(), 0);
-  for (Index v : soup.corner_vertices) used[v] = 1;
+  for (Index v : soup.corner_vertices)
+    used[v] = 1;
   std::size_t used_count = 0;
   for (Index v = 0; v < soup.num_vertices(); ++v) {
     used_count += used[v];
@@ -144,7 +149,8 @@ DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner
           .nonorientable_components;
 
   for (Index f = 0; f < soup.num_faces(); ++f) {
-    if (components.find(f) == f) ++report.num_components;
+    if (components.find(f) == f)
+      ++report.num_components;
   }
   report.euler_characteristic = static_cast<long long>(used_count) -
                                 static_cast<long long>(bridges.num_edges()) +
@@ -155,9 +161,8 @@ DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner
     const PolygonView polygon = input.polygon(f);
     double perimeter = 0;
     for (std::size_t i = 0; i < polygon.size(); ++i) {
-      perimeter += (input.positions[polygon[(i + 1) % polygon.size()]] -
-                    input.positions[polygon[i]])
-                       .norm();
+      perimeter +=
+          (input.positions[polygon[(i + 1) % polygon.size()]] - input.positions[polygon[i]]).norm();
     }
     if (newell_normal(input, f).norm() <= 1e-12 * perimeter * perimeter) {
       report.zero_area_faces.push_back(f);
@@ -167,8 +172,7 @@ DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner
 
   report.watertight = soup.num_faces() > 0 && report.boundary_edges.empty() &&
                       report.singular_edges.empty() && report.num_singular_vertices() == 0 &&
-                      report.inconsistent_edges.empty() &&
-                      report.num_nonorientable_components == 0;
+                      report.inconsistent_edges.empty() && report.num_nonorientable_components == 0;
   return report;
 }
 

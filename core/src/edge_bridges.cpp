@@ -9,8 +9,8 @@ namespace meshbridge {
 std::vector<Index> corner_faces(const Soup& soup) {
   std::vector<Index> corner_face(soup.num_corners());
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    std::fill(corner_face.begin() + soup.face_begin[f], corner_face.begin() + soup.face_begin[f + 1],
-              static_cast<Index>(f));
+    std::fill(corner_face.begin() + soup.face_begin[f],
+              corner_face.begin() + soup.face_begin[f + 1], static_cast<Index>(f));
   }
   return corner_face;
 }
@@ -31,12 +31,15 @@ EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face)
 
   // Counting sort of the sides by their smaller vertex.
   std::vector<Index> bucket_begin(num_vertices + 1, 0);
-  for (std::size_t c = 0; c < num_corners; ++c) ++bucket_begin[low[c] + 1];
-  for (std::size_t v = 0; v < num_vertices; ++v) bucket_begin[v + 1] += bucket_begin[v];
+  for (std::size_t c = 0; c < num_corners; ++c)
+    ++bucket_begin[low[c] + 1];
+  for (std::size_t v = 0; v < num_vertices; ++v)
+    bucket_begin[v + 1] += bucket_begin[v];
   std::vector<Index> sorted(num_corners);
   {
     std::vector<Index> fill(bucket_begin.begin(), bucket_begin.end() - 1);
-    for (std::size_t c = 0; c < num_corners; ++c) sorted[fill[low[c]]++] = static_cast<Index>(c);
+    for (std::size_t c = 0; c < num_corners; ++c)
+      sorted[fill[low[c]]++] = static_cast<Index>(c);
   }
 
   EdgeBridges bridges;
@@ -54,7 +57,8 @@ EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face)
     for (Index* i = first + 1; i < last; ++i) {
       const Index c = *i;
       Index* j = i;
-      while (j > first && (high[*(j - 1)] > high[c] || (high[*(j - 1)] == high[c] && *(j - 1) > c))) {
+      while (j > first &&
+             (high[*(j - 1)] > high[c] || (high[*(j - 1)] == high[c] && *(j - 1) > c))) {
         *j = *(j - 1);
         --j;
       }

@@ -10,6 +10,8 @@
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include <sys/stat.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -17,8 +19,6 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace meshbridge {
 
@@ -49,7 +49,8 @@ class SoupImporter : public BaseImporter {
                      std::to_string(vh.idx());
       }
     }
-    for (const auto& vh : indices) soup_.corner_vertices.push_back(static_cast<Index>(vh.idx()));
+    for (const auto& vh : indices)
+      soup_.corner_vertices.push_back(static_cast<Index>(vh.idx()));
     soup_.face_begin.push_back(static_cast<Index>(soup_.corner_vertices.size()));
     return OpenMesh::FaceHandle(static_cast<int>(soup_.num_faces() - 1));
   }
@@ -115,7 +116,8 @@ class SoupImporter : public BaseImporter {
 std::string lower_extension(const std::string& path) {
   const auto dot = path.find_last_of('.');
   const auto slash = path.find_last_of('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return "";
   std::string ext = path.substr(dot + 1);
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
@@ -135,7 +137,8 @@ class CapturedOpenMeshErrors {
     omerr().flush();
     omerr().disconnect(captured_);
     omerr().connect(std::cerr);
-    if (log_was_enabled_) omlog().enable();
+    if (log_was_enabled_)
+      omlog().enable();
   }
   std::string first_line() {
     omerr().flush();
@@ -161,15 +164,18 @@ Soup read_soup(const std::string& path) {
   if (stat(path.c_str(), &info) != 0) {
     throw ReadError(path + ": cannot open (" + std::strerror(errno) + ")");
   }
-  if (S_ISDIR(info.st_mode)) throw ReadError(path + ": is a directory, not a mesh file");
+  if (S_ISDIR(info.st_mode))
+    throw ReadError(path + ": is a directory, not a mesh file");
   if (!is_supported_mesh_file(path)) {
     throw ReadError(path + ": unknown format (expected .obj, .off, .ply or .stl)");
   }
   {
     std::ifstream probe(path, std::ios::binary);
-    if (!probe) throw ReadError(path + ": cannot open for reading");
+    if (!probe)
+      throw ReadError(path + ": cannot open for reading");
   }
-  if (info.st_size == 0) throw ReadError(path + ": file is empty");
+  if (info.st_size == 0)
+    throw ReadError(path + ": file is empty");
 
   Soup soup;
   SoupImporter importer(soup);
@@ -185,7 +191,8 @@ Soup read_soup(const std::string& path) {
     throw ReadError(path + ": OpenMesh's reader could not parse the file" +
                     (reader_message.empty() ? std::string() : " (" + reader_message + ")"));
   }
-  if (!importer.bad_index().empty()) throw ReadError(path + ": " + importer.bad_index());
+  if (!importer.bad_index().empty())
+    throw ReadError(path + ": " + importer.bad_index());
   if (soup.num_faces() == 0) {
     throw ReadError(path + ": no polygons in the file (" + std::to_string(soup.num_vertices()) +
                     " vertices)");
@@ -209,7 +216,8 @@ void write_mesh(const std::string& path, const IndexedMesh& mesh) {
     fanned.soup.positions = mesh.soup.positions;
     for (std::size_t f = 0; f < mesh.soup.num_faces(); ++f) {
       const PolygonView p = mesh.soup.polygon(f);
-      for (std::size_t i = 1; i + 1 < p.size(); ++i) fanned.soup.add_polygon({p[0], p[i], p[i + 1]});
+      for (std::size_t i = 1; i + 1 < p.size(); ++i)
+        fanned.soup.add_polygon({p[0], p[i], p[i + 1]});
     }
     source = &fanned;
   }
@@ -222,11 +230,12 @@ void write_mesh(const std::string& path, const IndexedMesh& mesh) {
   const auto slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
   const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  const std::string temporary =
-      dir + "." + name + ".tmp" + std::to_string(::getpid()) + "." + ext;
+  const std::string temporary = dir + "." + name + ".tmp" + std::to_string(::getpid()) + "." + ext;
   OpenMesh::IO::Options options;
-  if (ext == "stl") options += OpenMesh::IO::Options::Binary;
-  if (ext == "stl") build.mesh.request_face_normals(), build.mesh.update_face_normals();
+  if (ext == "stl")
+    options += OpenMesh::IO::Options::Binary;
+  if (ext == "stl")
+    build.mesh.request_face_normals(), build.mesh.update_face_normals();
   bool ok = false;
   std::string writer_message;
   {

@@ -29,7 +29,8 @@ OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>
   std::vector<Index> queue;
   queue.reserve(num_faces);
   for (Index root = 0; root < num_faces; ++root) {
-    if (visited[root]) continue;
+    if (visited[root])
+      continue;
     const std::size_t component_begin = queue.size();
     bool conflict = false;
     visited[root] = 1;
@@ -38,7 +39,8 @@ OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>
       const Index f = queue[head];
       for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
         const Index m = mate[c];
-        if (m == kNoIndex) continue;
+        if (m == kNoIndex)
+          continue;
         const Index g = corner_face[m];
         const bool same_way = runs_along(soup, bridges, c) == runs_along(soup, bridges, m);
         const char wanted = static_cast<char>(flipped[f] ^ (same_way ? 1 : 0));
@@ -56,10 +58,13 @@ OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>
         }
       }
     }
-    if (!conflict) continue;
+    if (!conflict)
+      continue;
     ++counts.nonorientable_components;
-    if (cut_nonorientable) continue;
-    for (std::size_t i = component_begin; i < queue.size(); ++i) flipped[queue[i]] = 0;
+    if (cut_nonorientable)
+      continue;
+    for (std::size_t i = component_begin; i < queue.size(); ++i)
+      flipped[queue[i]] = 0;
     for (std::size_t i = component_begin; i < queue.size(); ++i) {
       const Index f = queue[i];
       for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {

@@ -27,7 +27,8 @@ FilteredSoup without_faces(const Soup& input, const std::vector<char>& remove) {
   FilteredSoup filtered;
   filtered.soup.positions = input.positions;
   for (Index f = 0; f < input.num_faces(); ++f) {
-    if (remove[f]) continue;
+    if (remove[f])
+      continue;
     for (Index c = input.face_begin[f]; c < input.face_begin[f + 1]; ++c) {
       filtered.corner_origin.push_back(c);
     }
@@ -41,10 +42,12 @@ FilteredSoup without_faces(const Soup& input, const std::vector<char>& remove) {
 std::size_t remove_unused_vertices(IndexedMesh& mesh) {
   Soup& soup = mesh.soup;
   std::vector<Index> new_index(soup.num_vertices(), kNoIndex);
-  for (Index v : soup.corner_vertices) new_index[v] = 0;
+  for (Index v : soup.corner_vertices)
+    new_index[v] = 0;
   Index next = 0;
   for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-    if (new_index[v] == kNoIndex) continue;
+    if (new_index[v] == kNoIndex)
+      continue;
     new_index[v] = next;
     soup.positions[next] = soup.positions[v];
     mesh.vertex_origin[next] = mesh.vertex_origin[v];
@@ -53,7 +56,8 @@ std::size_t remove_unused_vertices(IndexedMesh& mesh) {
   const std::size_t removed = soup.num_vertices() - next;
   soup.positions.resize(next);
   mesh.vertex_origin.resize(next);
-  for (Index& v : soup.corner_vertices) v = new_index[v];
+  for (Index& v : soup.corner_vertices)
+    v = new_index[v];
   return removed;
 }
 
@@ -70,10 +74,12 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   // Cleanup removals first, so everything after works on what is kept.
   std::vector<char> remove(soup.num_faces(), 0);
   if (options.remove_duplicate_faces) {
-    for (Index f : report.before.duplicate_faces) remove[f] = 1;
+    for (Index f : report.before.duplicate_faces)
+      remove[f] = 1;
   }
   if (options.remove_degenerate_faces) {
-    for (Index f : report.before.degenerate_faces) remove[f] = 1;
+    for (Index f : report.before.degenerate_faces)
+      remove[f] = 1;
   }
   FilteredSoup filtered;
   const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
@@ -103,8 +109,10 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   IndexedMesh& mesh = result.mesh;
   mesh = std::move(pipeline.mesh);
   if (filtering) {
-    for (Index& f : mesh.face_origin) f = filtered.face_origin[f];
-    for (Index& c : mesh.corner_origin) c = filtered.corner_origin[c];
+    for (Index& f : mesh.face_origin)
+      f = filtered.face_origin[f];
+    for (Index& c : mesh.corner_origin)
+      c = filtered.corner_origin[c];
   }
   if (options.remove_isolated_vertices) {
     report.isolated_vertices_removed = remove_unused_vertices(mesh);
@@ -133,13 +141,12 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
 std::string to_text(const RepairReport& r) {
   std::ostringstream out;
   out << "faces: " << r.faces_in << " in, " << r.faces_out << " out (" << r.faces_set_aside
-      << " set aside, " << r.faces_split << " split into " << r.faces_added_by_split
-      << " more, " << r.duplicate_faces_removed << " duplicates and " << r.degenerate_faces_removed
+      << " set aside, " << r.faces_split << " split into " << r.faces_added_by_split << " more, "
+      << r.duplicate_faces_removed << " duplicates and " << r.degenerate_faces_removed
       << " degenerate removed, " << r.faces_flipped << " flipped, " << r.faces_detached
       << " detached)\n";
-  out << "vertices: " << r.vertices_in << " in, " << r.vertices_out << " out ("
-      << r.vertices_split << " copies from split fans, " << r.isolated_vertices_removed
-      << " isolated removed)\n";
+  out << "vertices: " << r.vertices_in << " in, " << r.vertices_out << " out (" << r.vertices_split
+      << " copies from split fans, " << r.isolated_vertices_removed << " isolated removed)\n";
   out << "sides: " << r.sides_cut << " cut on singular edges, " << r.sides_cut_for_orientation
       << " cut for orientation, " << r.sides_stitched << " stitched\n";
   out << "components: " << r.components_before << " -> " << r.components_after

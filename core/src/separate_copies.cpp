@@ -18,16 +18,19 @@ std::size_t separate_split_vertices(IndexedMesh& mesh, double distance) {
     throw std::invalid_argument("separate_split_vertices: distance must be finite and >= 0");
   }
   std::size_t max_origin = 0;
-  for (Index o : mesh.vertex_origin) max_origin = std::max<std::size_t>(max_origin, o + 1);
+  for (Index o : mesh.vertex_origin)
+    max_origin = std::max<std::size_t>(max_origin, o + 1);
   std::vector<Index> copies(max_origin, 0);
-  for (Index o : mesh.vertex_origin) ++copies[o];
+  for (Index o : mesh.vertex_origin)
+    ++copies[o];
 
   std::vector<Point> target(soup.num_vertices(), Point(0, 0, 0));
   std::vector<Index> count(soup.num_vertices(), 0);
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     const PolygonView polygon = soup.polygon(f);
     Point centroid(0, 0, 0);
-    for (Index v : polygon) centroid += soup.positions[v];
+    for (Index v : polygon)
+      centroid += soup.positions[v];
     centroid /= static_cast<double>(polygon.size());
     for (Index v : polygon) {
       target[v] += centroid;
@@ -36,10 +39,12 @@ std::size_t separate_split_vertices(IndexedMesh& mesh, double distance) {
   }
   std::size_t moved = 0;
   for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-    if (copies[mesh.vertex_origin[v]] < 2 || count[v] == 0 || distance == 0) continue;
+    if (copies[mesh.vertex_origin[v]] < 2 || count[v] == 0 || distance == 0)
+      continue;
     Point direction = target[v] / static_cast<double>(count[v]) - soup.positions[v];
     const double length = direction.norm();
-    if (!(length > 0)) continue;
+    if (!(length > 0))
+      continue;
     soup.positions[v] += direction * (std::min(distance, length) / length);
     ++moved;
   }

@@ -20,7 +20,8 @@ class MutedOpenMeshErrors {
  public:
   MutedOpenMeshErrors() : was_enabled_(omerr().is_enabled()) { omerr().disable(); }
   ~MutedOpenMeshErrors() {
-    if (was_enabled_) omerr().enable();
+    if (was_enabled_)
+      omerr().enable();
   }
   MutedOpenMeshErrors(const MutedOpenMeshErrors&) = delete;
   MutedOpenMeshErrors& operator=(const MutedOpenMeshErrors&) = delete;
@@ -44,11 +45,13 @@ StockBuild build_stock(const Soup& soup) {
     importer.reserve(static_cast<unsigned>(soup.num_vertices()),
                      static_cast<unsigned>(soup.num_corners() / 2),
                      static_cast<unsigned>(soup.num_faces()));
-    for (const Point& p : soup.positions) importer.add_vertex(p);
+    for (const Point& p : soup.positions)
+      importer.add_vertex(p);
     OpenMesh::IO::BaseImporter::VHandles handles;
     for (std::size_t f = 0; f < soup.num_faces(); ++f) {
       handles.clear();
-      for (Index v : soup.polygon(f)) handles.emplace_back(static_cast<int>(v));
+      for (Index v : soup.polygon(f))
+        handles.emplace_back(static_cast<int>(v));
       const std::size_t vertices_before = mesh.n_vertices();
       const OpenMesh::FaceHandle fh = importer.add_face(handles);
       if (!fh.is_valid()) {
@@ -66,11 +69,13 @@ StockBuild build_stock(const Soup& soup) {
       ++report.boundary_edges;
     } else {
       const auto h = mesh.halfedge_handle(e, 0);
-      components.unite(mesh.face_handle(h).idx(), mesh.face_handle(mesh.opposite_halfedge_handle(h)).idx());
+      components.unite(mesh.face_handle(h).idx(),
+                       mesh.face_handle(mesh.opposite_halfedge_handle(h)).idx());
     }
   }
   for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
-    if (components.find(static_cast<Index>(f)) == f) ++report.components;
+    if (components.find(static_cast<Index>(f)) == f)
+      ++report.components;
   }
   return build;
 }
@@ -78,9 +83,9 @@ StockBuild build_stock(const Soup& soup) {
 std::string to_text(const StockBuildReport& r) {
   std::ostringstream out;
   out << "vertices " << r.vertices_created << " (from " << r.vertices_in << "), faces kept "
-      << r.faces_kept << " of " << r.faces_in << " (" << r.faces_detached << " detached on copied vertices, "
-      << r.faces_lost << " lost), boundary edges " << r.boundary_edges << ", components "
-      << r.components << "\n";
+      << r.faces_kept << " of " << r.faces_in << " (" << r.faces_detached
+      << " detached on copied vertices, " << r.faces_lost << " lost), boundary edges "
+      << r.boundary_edges << ", components " << r.components << "\n";
   return out.str();
 }
 

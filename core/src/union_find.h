@@ -12,7 +12,8 @@ namespace meshbridge::detail {
 class UnionFind {
  public:
   explicit UnionFind(std::size_t n) : parent_(n) {
-    for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<Index>(i);
+    for (std::size_t i = 0; i < n; ++i)
+      parent_[i] = static_cast<Index>(i);
   }
   Index find(Index x) {
     while (parent_[x] != x) {
@@ -25,8 +26,10 @@ class UnionFind {
   bool unite(Index x, Index y) {
     x = find(x);
     y = find(y);
-    if (x == y) return false;
-    if (x < y) std::swap(x, y);
+    if (x == y)
+      return false;
+    if (x < y)
+      std::swap(x, y);
     parent_[x] = y;
     return true;
   }

@@ -10,7 +10,8 @@ bool has_repeated_vertex(PolygonView polygon) {
   if (n <= 16) {
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = i + 1; j < n; ++j)
-        if (polygon[i] == polygon[j]) return true;
+        if (polygon[i] == polygon[j])
+          return true;
     return false;
   }
   std::vector<Index> sorted(polygon.begin(), polygon.end());
@@ -27,7 +28,8 @@ std::vector<std::vector<Index>> simple_loops(const Soup& input, std::vector<Inde
   // Collapse consecutive repeats, cyclically.
   std::vector<Index> collapsed;
   for (Index c : corners) {
-    if (collapsed.empty() || vertex(collapsed.back()) != vertex(c)) collapsed.push_back(c);
+    if (collapsed.empty() || vertex(collapsed.back()) != vertex(c))
+      collapsed.push_back(c);
   }
   while (collapsed.size() > 1 && vertex(collapsed.back()) == vertex(collapsed.front())) {
     collapsed.pop_back();
@@ -36,17 +38,19 @@ std::vector<std::vector<Index>> simple_loops(const Soup& input, std::vector<Inde
   std::vector<std::vector<Index>> loops;
   std::vector<Index> stack;
   for (Index c : collapsed) {
-    auto again = std::find_if(stack.begin(), stack.end(),
-                              [&](Index s) { return vertex(s) == vertex(c); });
+    auto again =
+        std::find_if(stack.begin(), stack.end(), [&](Index s) { return vertex(s) == vertex(c); });
     if (again != stack.end()) {
       std::vector<Index> loop(again, stack.end());
-      if (loop.size() >= 3) loops.push_back(std::move(loop));
+      if (loop.size() >= 3)
+        loops.push_back(std::move(loop));
       stack.erase(again + 1, stack.end());
       continue;  // keep the earlier corner of the revisited vertex
     }
     stack.push_back(c);
   }
-  if (stack.size() >= 3) loops.push_back(std::move(stack));
+  if (stack.size() >= 3)
+    loops.push_back(std::move(stack));
   return loops;
 }
 
@@ -54,9 +58,11 @@ std::vector<std::vector<Index>> simple_loops(const Soup& input, std::vector<Inde
 
 WorkingSoup::WorkingSoup(const Soup& input) : input_(input) {
   for (std::size_t f = 0; f < input.num_faces(); ++f) {
-    if (has_repeated_vertex(input.polygon(f))) degenerate_.push_back(static_cast<Index>(f));
+    if (has_repeated_vertex(input.polygon(f)))
+      degenerate_.push_back(static_cast<Index>(f));
   }
-  if (degenerate_.empty()) return;
+  if (degenerate_.empty())
+    return;
 
   identity_ = false;
   owned_.positions = input.positions;
@@ -71,7 +77,8 @@ WorkingSoup::WorkingSoup(const Soup& input) : input_(input) {
     if (next_degenerate < degenerate_.size() && degenerate_[next_degenerate] == f) {
       ++next_degenerate;
       std::vector<Index> corners(last - first);
-      for (Index c = first; c < last; ++c) corners[c - first] = c;
+      for (Index c = first; c < last; ++c)
+        corners[c - first] = c;
       loops = simple_loops(input, std::move(corners));
       if (loops.empty()) {
         excluded_.push_back(static_cast<Index>(f));
@@ -83,7 +90,8 @@ WorkingSoup::WorkingSoup(const Soup& input) : input_(input) {
       }
     } else {
       loops.emplace_back();
-      for (Index c = first; c < last; ++c) loops.back().push_back(c);
+      for (Index c = first; c < last; ++c)
+        loops.back().push_back(c);
     }
     for (const auto& loop : loops) {
       for (Index c : loop) {

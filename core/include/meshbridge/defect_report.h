@@ -32,20 +32,20 @@ struct DefectReport {
   std::size_t num_faces = 0;     //!< polygons in the soup
   std::size_t num_edges = 0;     //!< distinct vertex pairs carrying at least one polygon side
 
-  std::vector<SingularEdge> singular_edges;     //!< edges with > 2 contenders
-  std::vector<Index> singular_edge_vertices;    //!< endpoints of singular edges
-  std::vector<Index> pinch_vertices;            //!< singular vertices on no singular edge
-  std::vector<VertexPair> boundary_edges;       //!< edges with exactly 1 contender
-  std::size_t num_boundary_loops = 0;           //!< holes: connected chains of boundary edges
-  std::vector<Index> isolated_vertices;         //!< vertices used by no polygon
-  std::vector<Index> degenerate_faces;          //!< polygons with a repeated vertex index
-  std::vector<Index> excluded_faces;            //!< degenerate ones with < 3 distinct corners
-  std::vector<Index> zero_area_faces;           //!< polygons whose area is ~0 (see detect_defects)
-  std::vector<Index> duplicate_faces;           //!< polygons whose vertex set an earlier one has
-  std::vector<VertexPair> inconsistent_edges;   //!< 2-sided edges whose sides run the same way
-  std::size_t num_nonorientable_components = 0; //!< components that no flipping makes consistent
-  std::size_t num_components = 0;               //!< connected through every contender
-  long long euler_characteristic = 0;           //!< V - E + F over the used vertices
+  std::vector<SingularEdge> singular_edges;      //!< edges with > 2 contenders
+  std::vector<Index> singular_edge_vertices;     //!< endpoints of singular edges
+  std::vector<Index> pinch_vertices;             //!< singular vertices on no singular edge
+  std::vector<VertexPair> boundary_edges;        //!< edges with exactly 1 contender
+  std::size_t num_boundary_loops = 0;            //!< holes: connected chains of boundary edges
+  std::vector<Index> isolated_vertices;          //!< vertices used by no polygon
+  std::vector<Index> degenerate_faces;           //!< polygons with a repeated vertex index
+  std::vector<Index> excluded_faces;             //!< degenerate ones with < 3 distinct corners
+  std::vector<Index> zero_area_faces;            //!< polygons whose area is ~0 (see detect_defects)
+  std::vector<Index> duplicate_faces;            //!< polygons whose vertex set an earlier one has
+  std::vector<VertexPair> inconsistent_edges;    //!< 2-sided edges whose sides run the same way
+  std::size_t num_nonorientable_components = 0;  //!< components that no flipping makes consistent
+  std::size_t num_components = 0;                //!< connected through every contender
+  long long euler_characteristic = 0;            //!< V - E + F over the used vertices
   bool watertight = false;  //!< closed 2-manifold: no boundary, singular or inconsistent element
 
   std::size_t num_singular_vertices() const {

@@ -15,7 +15,7 @@ namespace meshbridge {
 //! `face_origin` and per-wedge (corner) attributes through `corner_origin`. A flipped face has its
 //! corners reversed, and `corner_origin` follows that.
 struct IndexedMesh {
-  Soup soup;                       //!< the mesh itself
+  Soup soup;                         //!< the mesh itself
   std::vector<Index> vertex_origin;  //!< #V': input vertex of each output vertex
   std::vector<Index> face_origin;    //!< #F': input face of each output face (order preserved)
   std::vector<Index> corner_origin;  //!< #C': input corner (index into input corner_vertices)

@@ -28,23 +28,23 @@ struct RepairOptions {
 
 //! What repair changed. Every count is exact.
 struct RepairReport {
-  std::size_t faces_in = 0;            //!< polygons in the input soup
-  std::size_t faces_out = 0;           //!< polygons in the output
-  std::size_t faces_set_aside = 0;     //!< degenerate, < 3 distinct corners (listed in `before`)
-  std::size_t faces_split = 0;         //!< pinched polygons split into simple ones
-  std::size_t faces_added_by_split = 0;       //!< extra polygons those splits made
+  std::size_t faces_in = 0;              //!< polygons in the input soup
+  std::size_t faces_out = 0;             //!< polygons in the output
+  std::size_t faces_set_aside = 0;       //!< degenerate, < 3 distinct corners (listed in `before`)
+  std::size_t faces_split = 0;           //!< pinched polygons split into simple ones
+  std::size_t faces_added_by_split = 0;  //!< extra polygons those splits made
   std::size_t duplicate_faces_removed = 0;    //!< by `remove_duplicate_faces`
   std::size_t degenerate_faces_removed = 0;   //!< by `remove_degenerate_faces`
   std::size_t isolated_vertices_removed = 0;  //!< by `remove_isolated_vertices`
   std::size_t vertices_in = 0;
   std::size_t vertices_out = 0;
-  std::size_t vertices_split = 0;      //!< extra vertex copies made (one per extra fan)
-  std::size_t sides_cut = 0;           //!< contenders of singular edges left unpaired by pairing
+  std::size_t vertices_split = 0;  //!< extra vertex copies made (one per extra fan)
+  std::size_t sides_cut = 0;       //!< contenders of singular edges left unpaired by pairing
   std::size_t sides_cut_for_orientation = 0;  //!< sides unpaired because orientation conflicts
-  std::size_t sides_stitched = 0;      //!< unpaired sides glued back in pairs (counts sides)
-  std::size_t faces_flipped = 0;       //!< polygons whose corner order was reversed
-  std::size_t faces_detached = 0;      //!< last resort: faces cut loose to stay representable
-  std::size_t components_before = 0;   //!< as the user sees the input (through all contenders)
+  std::size_t sides_stitched = 0;             //!< unpaired sides glued back in pairs (counts sides)
+  std::size_t faces_flipped = 0;              //!< polygons whose corner order was reversed
+  std::size_t faces_detached = 0;     //!< last resort: faces cut loose to stay representable
+  std::size_t components_before = 0;  //!< as the user sees the input (through all contenders)
   std::size_t components_after = 0;
   std::size_t boundary_edges_before = 0;
   std::size_t boundary_edges_after = 0;

@@ -38,9 +38,9 @@ struct PolygonView {
 //! A Soup may hold anything; `validate_soup()` states what the algorithms accept.
 class Soup {
  public:
-  std::vector<Point> positions;            //!< #V positions
-  std::vector<Index> corner_vertices;      //!< #C vertex indices, polygons back to back
-  std::vector<Index> face_begin{0};        //!< #F+1 offsets into corner_vertices
+  std::vector<Point> positions;        //!< #V positions
+  std::vector<Index> corner_vertices;  //!< #C vertex indices, polygons back to back
+  std::vector<Index> face_begin{0};    //!< #F+1 offsets into corner_vertices
 
   std::size_t num_vertices() const { return positions.size(); }
   std::size_t num_faces() const { return face_begin.size() - 1; }
@@ -53,7 +53,8 @@ class Soup {
   //! Appends a polygon; returns its face index. Indices are not checked here (see validate_soup).
   template <class Range>
   Index add_polygon(const Range& vertices) {
-    for (Index v : vertices) corner_vertices.push_back(v);
+    for (Index v : vertices)
+      corner_vertices.push_back(v);
     face_begin.push_back(static_cast<Index>(corner_vertices.size()));
     return static_cast<Index>(num_faces() - 1);
   }

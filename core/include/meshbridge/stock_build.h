@@ -20,7 +20,7 @@ struct StockBuildReport {
   std::size_t faces_detached = 0;    //!< refused by add_face, re-added on duplicated vertices
   std::size_t faces_lost = 0;        //!< not in the result at all (e.g. repeated vertex)
   std::size_t boundary_edges = 0;
-  std::size_t components = 0;        //!< connected through shared edges of the result
+  std::size_t components = 0;  //!< connected through shared edges of the result
 };
 
 struct StockBuild {

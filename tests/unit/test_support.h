@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Shared checks for tests: the invariants every repaired or bridged mesh must satisfy.
+
+#include "meshbridge/edge_bridges.h"
+#include "meshbridge/mesh_types.h"
+#include "meshbridge/repair.h"
+#include "meshbridge/soup.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+
+namespace meshbridge::test_support {
+
+//! Every edge has at most two sides, and two sides run in opposite directions.
+inline ::testing::AssertionResult every_edge_manifold(const Soup& soup) {
+  const std::vector<Index> corner_face = corner_faces(soup);
+  const EdgeBridges bridges = group_sides(soup, corner_face);
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    const Index k = bridges.num_contenders(e);
+    if (k > 2) {
+      return ::testing::AssertionFailure() << "edge " << bridges.edge_v0[e] << "-"
+                                           << bridges.edge_v1[e] << " has " << k << " sides";
+    }
+    if (k == 2) {
+      const Index a = bridges.contenders[bridges.begin[e]];
+      const Index b = bridges.contenders[bridges.begin[e] + 1];
+      if (soup.corner_vertices[a] == soup.corner_vertices[b]) {
+        return ::testing::AssertionFailure() << "edge " << bridges.edge_v0[e] << "-"
+                                             << bridges.edge_v1[e] << " has two sides one way";
+      }
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+//! OpenMesh accepts every polygon and every vertex is manifold.
+inline ::testing::AssertionResult openmesh_accepts(const IndexedMesh& mesh) {
+  const OpenMeshBuild build = to_openmesh(mesh);
+  if (build.add_face_failures != 0) {
+    return ::testing::AssertionFailure() << build.add_face_failures << " add_face failures";
+  }
+  if (build.mesh.n_faces() != mesh.soup.num_faces()) {
+    return ::testing::AssertionFailure() << "OpenMesh holds " << build.mesh.n_faces() << " of "
+                                         << mesh.soup.num_faces() << " faces";
+  }
+  for (auto v : build.mesh.vertices()) {
+    if (!build.mesh.is_manifold(v)) {
+      return ::testing::AssertionFailure() << "OpenMesh vertex " << v.idx() << " not manifold";
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+//! The invariants of a repair with cleanup off.
+inline void expect_repair_invariants(const Soup& input, const RepairResult& result) {
+  const IndexedMesh& mesh = result.mesh;
+  const RepairReport& report = result.report;
+  EXPECT_EQ(report.faces_out + report.faces_set_aside,
+            input.num_faces() + report.faces_added_by_split);
+  EXPECT_EQ(mesh.soup.num_faces(), report.faces_out);
+  EXPECT_EQ(mesh.face_origin.size(), mesh.soup.num_faces());
+  EXPECT_EQ(mesh.corner_origin.size(), mesh.soup.num_corners());
+  ASSERT_EQ(mesh.vertex_origin.size(), mesh.soup.num_vertices());
+  EXPECT_TRUE(every_edge_manifold(mesh.soup));
+  EXPECT_TRUE(openmesh_accepts(mesh));
+  EXPECT_TRUE(report.after.singular_edges.empty());
+  EXPECT_EQ(report.after.num_singular_vertices(), 0u);
+  EXPECT_TRUE(report.after.inconsistent_edges.empty());
+  for (std::size_t v = 0; v < mesh.soup.num_vertices(); ++v) {
+    ASSERT_LT(mesh.vertex_origin[v], input.num_vertices());
+    EXPECT_EQ(mesh.soup.positions[v], input.positions[mesh.vertex_origin[v]]);
+  }
+  for (std::size_t c = 0; c < mesh.soup.num_corners(); ++c) {
+    ASSERT_LT(mesh.corner_origin[c], input.num_corners());
+    EXPECT_EQ(mesh.vertex_origin[mesh.soup.corner_vertices[c]],
+              input.corner_vertices[mesh.corner_origin[c]]);
+  }
+  // Faces keep their order.
+  EXPECT_TRUE(std::is_sorted(mesh.face_origin.begin(), mesh.face_origin.end()));
+}
+
+//! The same soup with faces shuffled and every polygon's start corner rotated (seeded).
+inline Soup shuffled(const Soup& soup, std::uint32_t seed) {
+  std::mt19937 random(seed);
+  std::vector<Index> order(soup.num_faces());
+  for (std::size_t f = 0; f < order.size(); ++f)
+    order[f] = static_cast<Index>(f);
+  std::shuffle(order.begin(), order.end(), random);
+  Soup out;
+  out.positions = soup.positions;
+  std::vector<Index> polygon;
+  for (Index f : order) {
+    const PolygonView p = soup.polygon(f);
+    const std::size_t shift = random() % p.size();
+    polygon.clear();
+    for (std::size_t i = 0; i < p.size(); ++i)
+      polygon.push_back(p[(i + shift) % p.size()]);
+    out.add_polygon(polygon);
+  }
+  return out;
+}
+
+}  // namespace meshbridge::test_support
+
+namespace meshbridge::test_support {
+
+//! Component label of every face, connected through shared edges (labels: smallest face index).
+inline std::vector<Index> face_components(const Soup& soup) {
+  const std::vector<Index> corner_face = corner_faces(soup);
+  const EdgeBridges bridges = group_sides(soup, corner_face);
+  std::vector<Index> parent(soup.num_faces());
+  for (std::size_t f = 0; f < parent.size(); ++f)
+    parent[f] = static_cast<Index>(f);
+  const auto find = [&](Index x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    for (Index i = bridges.begin[e] + 1; i < bridges.begin[e + 1]; ++i) {
+      Index a = find(corner_face[bridges.contenders[bridges.begin[e]]]);
+      Index b = find(corner_face[bridges.contenders[i]]);
+      if (a > b)
+        std::swap(a, b);
+      parent[b] = a;
+    }
+  }
+  std::vector<Index> label(soup.num_faces());
+  for (std::size_t f = 0; f < label.size(); ++f)
+    label[f] = find(static_cast<Index>(f));
+  return label;
+}
+
+//! Signed volume of the faces with the given component label (fan triangulation).
+inline double signed_volume(const Soup& soup, const std::vector<Index>& label, Index component) {
+  double volume = 0;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    if (label[f] != component)
+      continue;
+    const PolygonView p = soup.polygon(f);
+    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+      volume += OpenMesh::dot(soup.positions[p[0]],
+                              OpenMesh::cross(soup.positions[p[i]], soup.positions[p[i + 1]]));
+    }
+  }
+  return volume / 6;
+}
+
+}  // namespace meshbridge::test_support
