@@ -3,10 +3,16 @@
 // The subcommands of `meshbridge`. Each returns an exit code (see ExitCode) and throws
 // UsageError or a meshbridge error for main() to print.
 
+#include "meshbridge/io.h"
+
 #include <string>
 #include <vector>
 
 namespace meshbridge::cli {
+
+//! Tells on stderr about face records the file reader dropped (OpenMesh's OBJ reader skips
+//! faces with fewer than 3 distinct vertices without a word).
+void warn_about_reader(const std::string& path, const ReadInfo& info);
 
 int check_command(const std::vector<std::string>& args);
 int compare_command(const std::vector<std::string>& args);

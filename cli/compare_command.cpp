@@ -34,7 +34,9 @@ int compare_command(const std::vector<std::string>& args) {
   const Arguments arguments(args, {"json"}, {});
   arguments.expect_positionals(1, "meshbridge compare FILE [--json]");
   const std::string& path = arguments.positionals()[0];
-  const Soup soup = read_soup(path);
+  ReadInfo info;
+  const Soup soup = read_soup(path, &info);
+  warn_about_reader(path, info);
   const StockBuild stock = build_stock(soup);
   const BridgedMesh bridged = build_bridged_mesh(soup);
   const Figures b = bridged_figures(bridged, soup);

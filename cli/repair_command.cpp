@@ -70,7 +70,9 @@ int repair_command(const std::vector<std::string>& args) {
     throw UsageError(out + ": unknown output format (expected .obj, .off, .ply or .stl)");
   }
 
-  const Soup soup = read_soup(in);
+  ReadInfo info;
+  const Soup soup = read_soup(in, &info);
+  warn_about_reader(in, info);
   RepairResult result = repair(soup, options);
   std::size_t moved = 0;
   if (separate > 0)

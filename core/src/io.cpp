@@ -152,6 +152,61 @@ class CapturedOpenMeshErrors {
   bool log_was_enabled_;
 };
 
+// Counts what the file itself declares, without OpenMesh: OBJ records, OFF and ASCII/binary PLY
+// header counts. Returns {0, 0} where the format declares nothing (STL).
+ReadInfo declared_counts(const std::string& path, const std::string& ext) {
+  ReadInfo info;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (ext == "obj") {
+    while (std::getline(in, line)) {
+      std::size_t i = line.find_first_not_of(" \t");
+      if (i == std::string::npos || i + 1 >= line.size())
+        continue;
+      const char kind = line[i];
+      const char after = line[i + 1];
+      if (after != ' ' && after != '\t')
+        continue;
+      if (kind == 'v')
+        ++info.declared_vertices;
+      if (kind == 'f')
+        ++info.declared_faces;
+    }
+  } else if (ext == "off") {
+    // [ST][C][N][4]OFF, comments, then "V F E".
+    std::string token;
+    std::vector<std::string> tokens;
+    while (tokens.size() < 3 && std::getline(in, line)) {
+      const auto hash = line.find('#');
+      if (hash != std::string::npos)
+        line.erase(hash);
+      std::istringstream words(line);
+      while (words >> token && tokens.size() < 3) {
+        if (token.find("OFF") != std::string::npos && tokens.empty())
+          continue;
+        tokens.push_back(token);
+      }
+    }
+    if (tokens.size() == 3) {
+      info.declared_vertices = std::strtoull(tokens[0].c_str(), nullptr, 10);
+      info.declared_faces = std::strtoull(tokens[1].c_str(), nullptr, 10);
+    }
+  } else if (ext == "ply") {
+    while (std::getline(in, line)) {
+      std::istringstream words(line);
+      std::string a, b, count;
+      words >> a >> b >> count;
+      if (a == "element" && b == "vertex")
+        info.declared_vertices = std::strtoull(count.c_str(), nullptr, 10);
+      if (a == "element" && b == "face")
+        info.declared_faces = std::strtoull(count.c_str(), nullptr, 10);
+      if (a == "end_header")
+        break;
+    }
+  }
+  return info;
+}
+
 }  // namespace
 
 bool is_supported_mesh_file(const std::string& path) {
@@ -159,12 +214,12 @@ bool is_supported_mesh_file(const std::string& path) {
   return ext == "obj" || ext == "off" || ext == "ply" || ext == "stl";
 }
 
-Soup read_soup(const std::string& path) {
-  struct stat info {};
-  if (stat(path.c_str(), &info) != 0) {
+Soup read_soup(const std::string& path, ReadInfo* info) {
+  struct stat file_status {};
+  if (stat(path.c_str(), &file_status) != 0) {
     throw ReadError(path + ": cannot open (" + std::strerror(errno) + ")");
   }
-  if (S_ISDIR(info.st_mode))
+  if (S_ISDIR(file_status.st_mode))
     throw ReadError(path + ": is a directory, not a mesh file");
   if (!is_supported_mesh_file(path)) {
     throw ReadError(path + ": unknown format (expected .obj, .off, .ply or .stl)");
@@ -174,7 +229,7 @@ Soup read_soup(const std::string& path) {
     if (!probe)
       throw ReadError(path + ": cannot open for reading");
   }
-  if (info.st_size == 0)
+  if (file_status.st_size == 0)
     throw ReadError(path + ": file is empty");
 
   Soup soup;
@@ -190,6 +245,18 @@ Soup read_soup(const std::string& path) {
   if (!ok) {
     throw ReadError(path + ": OpenMesh's reader could not parse the file" +
                     (reader_message.empty() ? std::string() : " (" + reader_message + ")"));
+  }
+  const ReadInfo declared = declared_counts(path, lower_extension(path));
+  if (declared.declared_vertices > soup.num_vertices()) {
+    throw ReadError(path + ": the file declares " + std::to_string(declared.declared_vertices) +
+                    " vertices but OpenMesh's reader read " + std::to_string(soup.num_vertices()) +
+                    " (an unparseable coordinate such as 'nan', or a truncated file)");
+  }
+  if (info != nullptr) {
+    *info = declared;
+    if (declared.declared_faces > soup.num_faces()) {
+      info->faces_dropped_by_reader = declared.declared_faces - soup.num_faces();
+    }
   }
   if (!importer.bad_index().empty())
     throw ReadError(path + ": " + importer.bad_index());

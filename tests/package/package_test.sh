@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Usage: package_test.sh BUILD_DIR SOURCE_DIR — installs the build into a temporary prefix and
+# builds tests/package against it with find_package(MeshBridge).
+set -euo pipefail
+build=$1
+source=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build" --prefix "$work/prefix" --component Unspecified >/dev/null
+cmake -S "$source/tests/package" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+cmake --build "$work/build" >/dev/null
+out=$("$work/build/downstream")
+[ "$out" = "6 2" ] || { echo "downstream printed '$out', expected '6 2'" >&2; exit 1; }
+echo "find_package(MeshBridge) ok: $out"
