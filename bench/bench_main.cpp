@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Side-by-side timing and peak memory of OpenMesh's stock build and MeshBridge on one in-memory
 // soup. Usage: meshbridge-bench [checkerboard N | torus N M] [--repeat R]
-// Prints one row per method: median time of R runs, ratio to the stock build, peak memory above
-// the soup (VmHWM after resetting it through /proc/self/clear_refs), and result figures.
+// Prints one row per method: median time of R runs (each in a fresh forked child), ratio to the
+// stock build, peak memory above the soup, and result figures.
 
 #include "meshbridge/bridged_mesh.h"
 #include "meshbridge/detect_defects.h"
@@ -19,7 +19,11 @@
 #include <functional>
 #include <iostream>
 #include <string>
+#include <stdexcept>
 #include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace meshbridge;
 
@@ -48,18 +52,54 @@ struct Row {
   std::string figures;
 };
 
+// Runs `run` in a forked child, so every run starts from the same allocator state and its peak
+// memory is its own: peak = VmHWM (reset through clear_refs) minus VmRSS at the start.
+struct Sample {
+  double seconds = 0;
+  long peak_kb = 0;
+  char figures[512] = {};
+};
+
+Sample sample_in_child(const std::function<std::string()>& run) {
+  int fds[2];
+  if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
+  const pid_t child = fork();
+  if (child < 0) throw std::runtime_error("fork failed");
+  if (child == 0) {
+    close(fds[0]);
+    Sample sample;
+    const long base = read_status_kb("VmRSS");
+    reset_peak();
+    const auto start = std::chrono::steady_clock::now();
+    const std::string figures = run();
+    const auto stop = std::chrono::steady_clock::now();
+    sample.seconds = std::chrono::duration<double>(stop - start).count();
+    sample.peak_kb = read_status_kb("VmHWM") - base;
+    std::snprintf(sample.figures, sizeof sample.figures, "%s", figures.c_str());
+    const ssize_t written = write(fds[1], &sample, sizeof sample);
+    _exit(written == static_cast<ssize_t>(sizeof sample) ? 0 : 1);
+  }
+  close(fds[1]);
+  Sample sample;
+  const ssize_t got = read(fds[0], &sample, sizeof sample);
+  close(fds[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  if (got != static_cast<ssize_t>(sizeof sample) || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    throw std::runtime_error("benchmark child failed");
+  }
+  return sample;
+}
+
 Row measure(const std::string& method, int repeat, const std::function<std::string()>& run) {
   Row row;
   row.method = method;
   std::vector<double> times;
   for (int i = 0; i < repeat; ++i) {
-    const long base = read_status_kb("VmRSS");
-    reset_peak();
-    const auto start = std::chrono::steady_clock::now();
-    row.figures = run();
-    const auto stop = std::chrono::steady_clock::now();
-    times.push_back(std::chrono::duration<double>(stop - start).count());
-    row.peak_kb = std::max(row.peak_kb, read_status_kb("VmHWM") - base);
+    const Sample sample = sample_in_child(run);
+    times.push_back(sample.seconds);
+    row.peak_kb = std::max(row.peak_kb, sample.peak_kb);
+    row.figures = sample.figures;
   }
   std::sort(times.begin(), times.end());
   row.seconds = times[times.size() / 2];

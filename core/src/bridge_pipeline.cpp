@@ -298,10 +298,17 @@ std::vector<Index> split_fans(const Soup& soup, const std::vector<Index>& corner
 }
 
 PipelineResult run_pipeline(const WorkingSoup& working, const PipelineOptions& options) {
+  std::vector<Index> corner_face = corner_faces(working.soup());
+  EdgeBridges bridges = group_sides(working.soup(), corner_face);
+  return run_pipeline(working, std::move(corner_face), std::move(bridges), options);
+}
+
+PipelineResult run_pipeline(const WorkingSoup& working, std::vector<Index> corner_face_in,
+                            EdgeBridges bridges_in, const PipelineOptions& options) {
   const Soup& soup = working.soup();
   PipelineResult result;
-  result.corner_face = corner_faces(soup);
-  result.bridges = group_sides(soup, result.corner_face);
+  result.corner_face = std::move(corner_face_in);
+  result.bridges = std::move(bridges_in);
   const auto& corner_face = result.corner_face;
   const auto& bridges = result.bridges;
   auto& mate = result.mate;

@@ -35,6 +35,11 @@ struct PipelineResult {
   std::size_t nonorientable_components = 0;
 };
 
+//! Runs on `working` with its sides already grouped (corner_face and bridges as from
+//! corner_faces() and group_sides() of working.soup()); they are moved into the result.
+PipelineResult run_pipeline(const WorkingSoup& working, std::vector<Index> corner_face,
+                            EdgeBridges bridges, const PipelineOptions& options);
+//! Same, grouping the sides itself.
 PipelineResult run_pipeline(const WorkingSoup& working, const PipelineOptions& options);
 
 //! Splits every vertex into one copy per fan of the faces joined through `mate`.

@@ -54,6 +54,15 @@ struct AngularContender {
   Index side;
 };
 
+struct ContenderRange {
+  const AngularContender* first;
+  const AngularContender* last;
+  const AngularContender* begin() const { return first; }
+  const AngularContender* end() const { return last; }
+  std::size_t size() const { return static_cast<std::size_t>(last - first); }
+  const AngularContender& operator[](std::size_t i) const { return first[i]; }
+};
+
 // Sorts the contenders of edge e by angle around its axis; false if the geometry is unusable.
 bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
                    const EdgeBridges& bridges, const std::vector<Point>& normals, std::size_t e,
@@ -182,11 +191,18 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
   std::vector<Point> normals(soup.num_faces());
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
     normals[f] = newell_normal(soup, f);
-  std::vector<std::vector<AngularContender>> orders(singular.size());
+  std::vector<AngularContender> flat, scratch;
+  std::vector<std::size_t> order_begin(singular.size() + 1, 0);
   std::vector<char> usable(singular.size());
   for (std::size_t s = 0; s < singular.size(); ++s) {
-    usable[s] = angular_order(soup, corner_face, bridges, normals, singular[s], orders[s]);
+    usable[s] = angular_order(soup, corner_face, bridges, normals, singular[s], scratch);
+    if (usable[s])
+      flat.insert(flat.end(), scratch.begin(), scratch.end());
+    order_begin[s + 1] = flat.size();
   }
+  const auto order_of = [&](std::size_t s) {
+    return ContenderRange{flat.data() + order_begin[s], flat.data() + order_begin[s + 1]};
+  };
 
   // Regions of space: face sides joined across every wedge.
   UnionFind regions(2 * soup.num_faces());
@@ -207,7 +223,7 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
   for (std::size_t s = 0; s < singular.size(); ++s) {
     if (!usable[s])
       continue;
-    const auto& order = orders[s];
+    const ContenderRange order = order_of(s);
     for (std::size_t t = 0; t < order.size(); ++t) {
       const AngularContender& a = order[t];
       const AngularContender& b = order[(t + 1) % order.size()];
@@ -221,7 +237,7 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
       combinatorial(singular[s]);
       continue;
     }
-    const auto& order = orders[s];
+    const ContenderRange order = order_of(s);
     const auto is_sheet = [&](const AngularContender& c) {
       const Index f = corner_face[c.side];
       return regions.find(2 * f) == regions.find(2 * f + 1);

@@ -18,49 +18,46 @@ namespace detail {
 
 namespace {
 
-// Polygons whose vertex set an earlier polygon has.
+// Polygons whose vertex set an earlier polygon has. Faces are bucketed by their smallest vertex
+// (counting sort, O(#F + #V)); each bucket is sorted by the faces' sorted vertex lists, so equal
+// sets end up side by side, and all but the earliest face of each run are duplicates.
 std::vector<Index> duplicate_faces(const Soup& soup) {
   const std::size_t num_faces = soup.num_faces();
-  std::vector<std::pair<std::uint64_t, Index>> keyed(num_faces);
-  std::vector<Index> sorted;
-  const auto sorted_vertices = [&](Index f, std::vector<Index>& out) {
-    const PolygonView p = soup.polygon(f);
-    out.assign(p.begin(), p.end());
-    std::sort(out.begin(), out.end());
-  };
+  std::vector<Index> smallest(num_faces);
+  std::vector<Index> bucket_begin(soup.num_vertices() + 1, 0);
   for (Index f = 0; f < num_faces; ++f) {
-    sorted_vertices(f, sorted);
-    std::uint64_t h = 1469598103934665603ull ^ sorted.size();
-    for (Index v : sorted)
-      h = (h ^ v) * 1099511628211ull;
-    keyed[f] = {h, f};
+    const PolygonView p = soup.polygon(f);
+    smallest[f] = *std::min_element(p.begin(), p.end());
+    ++bucket_begin[smallest[f] + 1];
   }
-  std::sort(keyed.begin(), keyed.end());
+  for (std::size_t v = 0; v < soup.num_vertices(); ++v)
+    bucket_begin[v + 1] += bucket_begin[v];
+  std::vector<Index> bucketed(num_faces);
+  {
+    std::vector<Index> fill(bucket_begin.begin(), bucket_begin.end() - 1);
+    for (Index f = 0; f < num_faces; ++f)
+      bucketed[fill[smallest[f]]++] = f;
+  }
   std::vector<Index> duplicates;
-  std::vector<Index> a, b;
-  for (std::size_t i = 0; i < keyed.size();) {
-    std::size_t j = i + 1;
-    while (j < keyed.size() && keyed[j].first == keyed[i].first)
-      ++j;
-    if (j - i > 1) {
-      // Exact comparison inside a hash run; the earliest face of each vertex set is the original.
-      std::vector<char> done(j - i, 0);
-      for (std::size_t x = i; x < j; ++x) {
-        if (done[x - i])
-          continue;
-        sorted_vertices(keyed[x].second, a);
-        for (std::size_t y = x + 1; y < j; ++y) {
-          if (done[y - i])
-            continue;
-          sorted_vertices(keyed[y].second, b);
-          if (a == b) {
-            done[y - i] = 1;
-            duplicates.push_back(keyed[y].second);
-          }
-        }
-      }
+  std::vector<std::pair<std::vector<Index>, Index>> bucket;
+  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
+    const Index first = bucket_begin[v];
+    const Index last = bucket_begin[v + 1];
+    if (last - first < 2)
+      continue;
+    bucket.resize(last - first);
+    for (Index i = first; i < last; ++i) {
+      const PolygonView p = soup.polygon(bucketed[i]);
+      auto& entry = bucket[i - first];
+      entry.first.assign(p.begin(), p.end());
+      std::sort(entry.first.begin(), entry.first.end());
+      entry.second = bucketed[i];
     }
-    i = j;
+    std::sort(bucket.begin(), bucket.end());  // by vertex list, then by face
+    for (std::size_t i = 1; i < bucket.size(); ++i) {
+      if (bucket[i].first == bucket[i - 1].first)
+        duplicates.push_back(bucket[i].second);
+    }
   }
   std::sort(duplicates.begin(), duplicates.end());
   return duplicates;
@@ -156,17 +153,18 @@ DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner
                                 static_cast<long long>(bridges.num_edges()) +
                                 static_cast<long long>(soup.num_faces());
 
-  // Faces, in input numbering.
+  // Faces, in input numbering. Zero area: |vector area|^2 <= (1e-12 * sum of squared sides)^2.
   for (Index f = 0; f < input.num_faces(); ++f) {
     const PolygonView polygon = input.polygon(f);
-    double perimeter = 0;
+    double squared_sides = 0;
     for (std::size_t i = 0; i < polygon.size(); ++i) {
-      perimeter +=
-          (input.positions[polygon[(i + 1) % polygon.size()]] - input.positions[polygon[i]]).norm();
+      squared_sides +=
+          (input.positions[polygon[(i + 1) % polygon.size()]] - input.positions[polygon[i]])
+              .sqrnorm();
     }
-    if (newell_normal(input, f).norm() <= 1e-12 * perimeter * perimeter) {
+    const double limit = 1e-12 * squared_sides;
+    if (newell_normal(input, f).sqrnorm() <= limit * limit)
       report.zero_area_faces.push_back(f);
-    }
   }
   report.duplicate_faces = duplicate_faces(input);
 

@@ -10,6 +10,7 @@
 #include "working_soup.h"
 
 #include <algorithm>
+#include <memory>
 #include <sstream>
 
 namespace meshbridge {
@@ -67,7 +68,11 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   validate_soup(soup);
   RepairResult result;
   RepairReport& report = result.report;
-  report.before = detect_defects(soup);
+  // Detection on the input; its grouping is reused below when nothing is removed first.
+  auto input_working = std::make_unique<detail::WorkingSoup>(soup);
+  std::vector<Index> corner_face = corner_faces(input_working->soup());
+  EdgeBridges bridges = group_sides(input_working->soup(), corner_face);
+  report.before = detail::detect(*input_working, corner_face, bridges);
   report.faces_in = soup.num_faces();
   report.vertices_in = soup.num_vertices();
 
@@ -96,15 +101,19 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
     }
     filtered = without_faces(soup, remove);
   }
-  const Soup& source = filtering ? filtered.soup : soup;
-
-  const detail::WorkingSoup working(source);
+  if (filtering) {
+    input_working = std::make_unique<detail::WorkingSoup>(filtered.soup);
+    corner_face = corner_faces(input_working->soup());
+    bridges = group_sides(input_working->soup(), corner_face);
+  }
+  const detail::WorkingSoup& working = *input_working;
   detail::PipelineOptions pipeline_options;
   pipeline_options.pairing = options.pairing;
   pipeline_options.orient = options.orient;
   pipeline_options.cut_nonorientable = options.cut_nonorientable;
   pipeline_options.stitch = options.stitch;
-  detail::PipelineResult pipeline = detail::run_pipeline(working, pipeline_options);
+  detail::PipelineResult pipeline =
+      detail::run_pipeline(working, std::move(corner_face), std::move(bridges), pipeline_options);
 
   IndexedMesh& mesh = result.mesh;
   mesh = std::move(pipeline.mesh);

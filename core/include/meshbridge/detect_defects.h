@@ -10,7 +10,8 @@ namespace meshbridge {
 
 //! Finds every defect listed in DefectReport.
 //!
-//! Zero-area: the polygon's vector area is at most 1e-12 times the square of its perimeter.
+//! Zero-area: twice the polygon's vector area is at most 1e-12 times the sum of its squared
+//! side lengths (scale-free; exact zero for collinear integer input).
 //! Singular vertices: a vertex on a singular edge, or one whose polygons fall into more than one
 //! fan through its 2-sided edges.
 //! \pre `soup` passes validate_soup() \throw InvalidSoupError naming the offending element
