@@ -1,31 +1,45 @@
 #!/usr/bin/env bash
-# README's main job: installs what is missing, builds, and runs MeshBridge on the bundled
-# 24-prism model (the paper's model 2). Results go to out/.
-# Usage: bash scripts/demo.sh [MODEL]
+# README's main job: installs what is missing, builds everything, and runs Debian's real
+# meshlabserver (MeshLab 2020.09) with the MeshBridge plugin on the bundled 24-prism model (the
+# paper's model 2): the detection report and the repair counts from MeshLab's log, the defect
+# layer and the repaired mesh under out/. Then the same through the command-line tool.
+# Usage: bash scripts/demo.sh [MODEL.off]
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
-model="${1:-resources/models/prisms24.obj}"
+model="${1:-resources/models/prisms24.off}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
 bash scripts/install_deps.sh
-cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DMESHBRIDGE_BUILD_TESTS=OFF >/dev/null
+sdk="$(bash scripts/setup_meshlab_sdk.sh | tail -n 1)"
+cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DMESHBRIDGE_BUILD_TESTS=OFF \
+  -DMESHBRIDGE_BUILD_PLUGIN=ON -DMESHLAB_SDK_DIR="$sdk" >/dev/null
 cmake --build build/release --parallel "$jobs" >/dev/null
 tool=build/release/cli/meshbridge
 name="$(basename "${model%.*}")"
-mkdir -p out
+out="$root/out"
+mkdir -p "$out"
+meshlab_root="$root/build/release/meshlab-root"
+bash scripts/meshlab_private_root.sh make "$meshlab_root" build/release/plugin/libfilter_meshbridge.so >/dev/null
 
-echo "== meshbridge check $model"
-"$tool" check "$model" || [ $? -eq 1 ]
+echo "== meshlabserver: Detect Singular Defects (Bridged Half-Edge) on $model"
+bash scripts/meshlab_private_root.sh run "$meshlab_root" -i "$model" \
+  -o "$out/$name.defects.ply" -l x -m vc -s resources/scripts/detect.mlx \
+  >"$out/$name.detect.log" 2>&1
+grep -v "^LOG:" "$out/$name.detect.log" | grep -E "MeshBridge|singular|boundary|vertices|faces|components|watertight|Defect layer" | awk '!seen[$0]++' || true
 echo
-echo "== meshbridge compare $model"
+echo "== meshlabserver: Repair Singular Defects (Bridged Half-Edge) on $model"
+bash scripts/meshlab_private_root.sh run "$meshlab_root" -i "$model" \
+  -o "$out/$name.repaired.ply" -m vc fc fq -s resources/scripts/repair.mlx \
+  >"$out/$name.repair.log" 2>&1
+grep -v "^LOG:" "$out/$name.repair.log" | grep -E "MeshBridge|faces|vertices|sides|components|after|Layer now" | awk '!seen[$0]++' || true
+echo
+echo "== meshbridge check $out/$name.repaired.ply"
+"$tool" check "$out/$name.repaired.ply" || [ $? -eq 1 ]
+echo
+echo "== meshbridge compare $model (OpenMesh's stock loader vs the bridged build)"
 "$tool" compare "$model"
 echo
-echo "== meshbridge repair $model out/$name.repaired.obj"
-"$tool" repair "$model" "out/$name.repaired.obj" --report "out/$name.repair.json"
-echo
-echo "== meshbridge check out/$name.repaired.obj"
-"$tool" check "out/$name.repaired.obj" || [ $? -eq 1 ]
-echo
-echo "wrote out/$name.repaired.obj and out/$name.repair.json"
+echo "wrote $out/$name.defects.ply (defect layer), $out/$name.repaired.ply (repaired mesh)"
+echo "and the meshlabserver logs $out/$name.detect.log, $out/$name.repair.log"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# README's test command: installs what is missing (Debian packages), builds everything with
-# tests and runs them all through ctest. Usage: bash scripts/test.sh
+# README's test command: installs what is missing (Debian packages, MeshLab's plugin headers),
+# builds everything (core, CLI, models, bench, MeshLab plugin) with tests and runs them all
+# through ctest. Usage: bash scripts/test.sh
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -8,9 +9,11 @@ cd "$root"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
 bash scripts/install_deps.sh
+sdk="$(bash scripts/setup_meshlab_sdk.sh | tail -n 1)"
 
 build=build/test
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMESHBRIDGE_BUILD_TESTS=ON \
-  -DMESHBRIDGE_BUILD_CLI=ON
+  -DMESHBRIDGE_BUILD_CLI=ON -DMESHBRIDGE_BUILD_BENCH=ON -DMESHBRIDGE_BUILD_PLUGIN=ON \
+  -DMESHLAB_SDK_DIR="$sdk"
 cmake --build "$build" --parallel "$jobs"
 ctest --test-dir "$build" --output-on-failure --parallel "$jobs"

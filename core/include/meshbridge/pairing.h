@@ -7,10 +7,23 @@ namespace meshbridge {
 
 //! Pairing policy for edges with more than two contenders.
 enum class PairingPolicy {
-  //! Sort contender faces by angle around the edge axis and pair cyclic neighbours whose wedge
-  //! lies behind both faces; sheets (same region on both sides) are left over before solids are
-  //! broken; the rest pair by elimination. Needs positions; falls back to `combinatorial`
-  //! for faces without a usable normal.
+  //! Per singular edge, with the axis running from its smaller to its larger vertex index:
+  //! 1. Contender faces are sorted by the angle of their in-face direction around the axis
+  //!    (from Newell normals, so non-planar polygons work too).
+  //! 2. Ties: faces within 1e-7 rad (coincident faces) are ordered along-running side first,
+  //!    then by corner index; so two solids touching face to face are never paired across the
+  //!    zero-width gap between them. The circle is cut in its widest gap, so no tie straddles it.
+  //! 3. Regions of space are labelled by joining the face sides that see each other across every
+  //!    wedge of every edge (boundary edges join a face's two sides). A face whose two sides lie
+  //!    in one region is a *sheet* (a fin inside a solid, a rib on a plate, any open surface).
+  //! 4. Among non-sheet faces, cyclic neighbours whose wedge lies behind both (the first runs
+  //!    against the axis, the next along it) are paired: solids close before sheets are used.
+  //! 5. The same rule among everything still unpaired.
+  //! 6. Elimination: what is left pairs in cyclic order, opposite-running sides only; the rest
+  //!    stay unpaired (boundary sides, which repair may stitch after orientation).
+  //! Fallback: an edge with a contender face of (near) zero area, whose in-face direction is
+  //! parallel to the axis, or whose two end points coincide, uses the `combinatorial` rule.
+  //! Deterministic, and independent of the order of faces except through corner-index ties.
   geometric,
   //! Opposite-running sides first, in face order; then the rest in face order.
   combinatorial,

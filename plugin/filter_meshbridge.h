@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+//! \file filter_meshbridge.h
+//! MeshLab 2020.09 filter plugin (MeshFilterInterface): the API glue around cmesh_adapter.h.
+
+#include <common/interfaces.h>
+
+#include <QObject>
+
+class FilterMeshBridgePlugin : public QObject, public MeshFilterInterface {
+  Q_OBJECT
+  Q_PLUGIN_METADATA(IID MESH_FILTER_INTERFACE_IID FILE "filter_meshbridge.json")
+  Q_INTERFACES(MeshFilterInterface)
+
+ public:
+  //! Filter IDs (MeshLab convention: FP_ + what it does).
+  enum { FP_DETECT_SINGULAR_DEFECTS, FP_REPAIR_SINGULAR_DEFECTS };
+
+  FilterMeshBridgePlugin();
+  ~FilterMeshBridgePlugin() override;
+
+  QString pluginName() const override;
+  using MeshFilterInterface::filterInfo;
+  using MeshFilterInterface::filterName;
+  QString filterName(FilterIDType filter) const override;
+  QString filterInfo(FilterIDType filter) const override;
+  FilterClass getClass(QAction* action) override;
+  int getRequirements(QAction* action) override;
+  int getPreConditions(QAction* action) const override;
+  int postCondition(QAction* action) const override;
+  FILTER_ARITY filterArity(QAction* action) const override;
+  using MeshFilterInterface::initParameterSet;
+  void initParameterSet(QAction* action, MeshModel& m, RichParameterList& params) override;
+  bool applyFilter(QAction* action, MeshDocument& md, const RichParameterList& params,
+                   vcg::CallBackPos* cb) override;
+
+ private:
+  bool detect(MeshDocument& md, const RichParameterList& params, vcg::CallBackPos* cb);
+  bool repair(MeshDocument& md, const RichParameterList& params, vcg::CallBackPos* cb);
+};

@@ -1,0 +1,245 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# One MeshLab integration test: runs Debian's real meshlabserver from a private root (see
+# scripts/meshlab_private_root.sh) with the freshly built plugin and checks what it wrote.
+#
+# Usage: run_meshlab_test.sh MODE [MODEL.obj] [key=value ...]
+#   root                      make the private root (ctest fixture)
+#   lists-plugin              meshlabserver loads the plugin and lists both filters
+#   detect MODEL [k=v...]     detect.mlx: log, defect layer edges == core report, selection
+#   repair MODEL [k=v...]     repair.mlx + MeshLab's own manifold checks in the same script
+#   attributes MODEL          colours, qualities, wedge texcoords survive repair, face order kept
+#   no-faces                  a point cloud gets a clear error and is left unchanged
+#   compare-builtin MODEL     ours vs MeshLab's "Repair non Manifold Edges" (both methods):
+#                             faces kept and wall time (informative; asserts only that ours
+#                             keeps every face and MeshLab finds nothing non-manifold after it)
+# k=v: expected values of `mlcheck report` on the input (detect) or on the repaired output
+# (repair), e.g. singular_edges=1 vertices=16.
+#
+# Environment (set by tests/meshlab/CMakeLists.txt): MLCHECK, PLUGIN, ROOT, WORK, SOURCE_DIR.
+set -euo pipefail
+
+: "${MLCHECK:?}" "${PLUGIN:?}" "${ROOT:?}" "${WORK:?}" "${SOURCE_DIR:?}"
+root_script="$SOURCE_DIR/scripts/meshlab_private_root.sh"
+scripts="$SOURCE_DIR/resources/scripts"
+check_mlx="$SOURCE_DIR/tests/meshlab/check_manifold.mlx"
+
+mode=${1:?mode}; shift
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+pass() { echo "ok:   $*"; }
+# value KEY FILE: the value of KEY=... in a key=value file (empty if missing)
+value() { sed -n "s/^$1=//p" "$2" | tail -n1; }
+expect_eq() {  # expect_eq WHAT ACTUAL EXPECTED
+  if [ "$2" = "$3" ]; then pass "$1 = $2"; else fail "$1 = '$2', expected '$3'"; fi
+}
+# server LOG ARGS...: runs meshlabserver, its stdout (the filter log) into LOG; returns its status
+server() {
+  local log=$1; shift
+  echo "+ meshlabserver $*" >&2
+  "$root_script" run "$ROOT" "$@" >"$log" 2>"$log.stderr"
+}
+# Last value printed by meshlabserver's log line "Mesh <path> loaded has <vn> vn <fn> fn".
+loaded_fn() { sed -n 's/.* loaded has \([0-9]*\) vn \([0-9]*\) fn.*/\2/p' "$1" | tail -n1; }
+loaded_vn() { sed -n 's/.* loaded has \([0-9]*\) vn \([0-9]*\) fn.*/\1/p' "$1" | tail -n1; }
+
+model=${1:-}
+name=$(basename "${model:-$mode}" .obj)
+dir="$WORK/$mode.$name"
+if [ "$mode" != root ]; then
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  cd "$dir"
+fi
+
+input_off() {  # converts MODEL to OFF (Debian's meshlabserver aborts on any OBJ input)
+  [ -f "$model" ] || { echo "no model $model"; exit 1; }
+  "$MLCHECK" to-off "$model" in.off
+}
+
+check_expectations() {  # check_expectations REPORT k=v...
+  local report=$1; shift
+  local kv
+  for kv in "$@"; do
+    expect_eq "${kv%%=*}" "$(value "${kv%%=*}" "$report")" "${kv#*=}"
+  done
+}
+
+case "$mode" in
+  root)
+    "$root_script" make "$ROOT" "$PLUGIN"
+    ;;
+
+  lists-plugin)
+    "$root_script" list "$ROOT" >filters.txt 2>stderr.txt || { cat stderr.txt; fail "meshlabserver -d failed"; }
+    for f in "Detect Singular Defects (Bridged Half-Edge)" "Repair Singular Defects (Bridged Half-Edge)" \
+             "Select non Manifold Edges " "Select non Manifold Vertices" \
+             "Repair non Manifold Edges by removing faces" "Repair non Manifold Edges by splitting vertices" \
+             "Compute Topological Measures"; do
+      if grep -qxF "$f" filters.txt; then pass "lists '$f'"; else fail "does not list '$f'"; fi
+    done
+    grep -q "Current Plugins Dir is: $ROOT/" stderr.txt && pass "plugins from the private root" \
+      || fail "plugins not loaded from $ROOT"
+    ;;
+
+  detect)
+    shift
+    input_off
+    "$MLCHECK" report "$model" >input.txt
+    status=0
+    # Layer x (last) is the defect layer; layer 0 the mesh itself, with its selection flags.
+    server log.txt -i in.off -o defects.obj -l x -m vc -o mesh.ply -l 0 -m vf ff sa \
+      -s "$scripts/detect.mlx" || status=$?
+    cat log.txt
+    expect_eq "meshlabserver status" "$status" 0
+    grep -q "MeshBridge defects of" log.txt && pass "report logged" || fail "no report in the log"
+    if [ ! -e defects.obj ] && [ "$(value singular_edges input.txt)" = 0 ] \
+       && [ "$(value boundary_edges input.txt)" = 0 ] && [ "$(value singular_vertices input.txt)" = 0 ]; then
+      # Nothing to draw: the defect layer is empty and meshlabserver does not save empty meshes.
+      grep -q "0 red (singular) edges, 0 green (boundary) edges" log.txt \
+        && pass "empty defect layer (nothing to show; meshlabserver saves no empty mesh)" \
+        || fail "no defect layer saved"
+      printf 'vertices=0\nfaces=0\nred_edges=0\ngreen_edges=0\nother_edges=0\nmarker_points=0\n' >defects.obj.txt
+      defects=defects.obj.txt
+    else
+      "$MLCHECK" report defects.obj >defects.txt
+      defects=defects.txt
+    fi
+    "$MLCHECK" report mesh.ply >mesh.txt
+    echo "--- core on the input:"; cat input.txt
+    echo "--- defect layer:"; cat "$defects"
+    expect_eq "red edges == core singular edges" "$(value red_edges "$defects")" "$(value singular_edges input.txt)"
+    expect_eq "green edges == core boundary edges" "$(value green_edges "$defects")" "$(value boundary_edges input.txt)"
+    expect_eq "other edges" "$(value other_edges "$defects")" 0
+    expect_eq "defect layer faces" "$(value faces "$defects")" 0
+    expect_eq "singular vertex markers == core singular vertices" \
+      "$(value marker_points "$defects")" "$(value singular_vertices input.txt)"
+    # MeshLab triangulates polygons on loading: compare with the file's triangle count.
+    expect_eq "mesh faces unchanged" "$(value faces mesh.txt)" "$(value triangles input.txt)"
+    expect_eq "mesh vertices unchanged" "$(value vertices mesh.txt)" "$(value vertices input.txt)"
+    singular=$(( $(value singular_edges input.txt) + $(value singular_vertices input.txt) ))
+    selected=$(value selected_faces mesh.txt)
+    if [ "$singular" -gt 0 ]; then
+      [ "$selected" -gt 0 ] && pass "selected $selected faces at singular elements" || fail "nothing selected"
+    else
+      expect_eq "selected faces" "$selected" 0
+    fi
+    expect_eq "selected vertices == singular vertices" "$(value selected_vertices mesh.txt)" \
+      "$(value singular_vertices input.txt)"
+    # Both options on: the selected faces are exactly the coloured ones (red at singular edges,
+    # orange at pinch vertices), and the mesh itself is still unchanged.
+    status=0
+    server colour.log -i in.off -o coloured.ply -l 0 -m vf ff fc sa \
+      -s "$SOURCE_DIR/tests/meshlab/detect_colour.mlx" || status=$?
+    expect_eq "meshlabserver status (colour faces)" "$status" 0
+    "$MLCHECK" report coloured.ply >coloured.txt
+    expect_eq "coloured faces == selected faces" \
+      "$(( $(value red_faces coloured.txt) + $(value orange_faces coloured.txt) ))" "$(value selected_faces coloured.txt)"
+    expect_eq "coloured mesh faces unchanged" "$(value faces coloured.txt)" "$(value triangles input.txt)"
+    check_expectations input.txt "$@"
+    ;;
+
+  repair)
+    shift
+    input_off
+    "$MLCHECK" report "$model" >input.txt
+    # MeshLab's own checks on the input first: they must see what the core sees.
+    status=0
+    server before.log -i in.off -o before.ply -m vf ff sa -s "$check_mlx" || status=$?
+    expect_eq "meshlabserver status (checks on input)" "$status" 0
+    "$MLCHECK" report before.ply >before.txt
+    if [ "$(value singular_edges input.txt)" -gt 0 ]; then
+      [ "$(value selected_faces before.txt)" -gt 0 ] \
+        && pass "MeshLab selects $(value selected_faces before.txt) faces on non-manifold edges of the input" \
+        || fail "MeshLab finds no non-manifold edge in the input"
+    fi
+    status=0
+    server log.txt -i in.off -o repaired.ply -m vc vf ff fc fq wt sa \
+      -s "$scripts/repair.mlx" -s "$check_mlx" || status=$?
+    cat log.txt
+    expect_eq "meshlabserver status" "$status" 0
+    "$MLCHECK" report repaired.ply >output.txt
+    echo "--- core on the output:"; cat output.txt
+    expect_eq "faces kept (saved == loaded)" "$(value faces output.txt)" "$(loaded_fn log.txt)"
+    expect_eq "faces kept (saved == file's triangles)" "$(value faces output.txt)" "$(value triangles input.txt)"
+    expect_eq "MeshLab: faces on non-manifold edges (selection)" "$(value selected_faces output.txt)" 0
+    expect_eq "MeshLab: non-manifold vertices (selection)" "$(value selected_vertices output.txt)" 0
+    if grep -q "non two manifold" log.txt; then fail "MeshLab: $(grep 'non two manifold' log.txt | tail -n1)";
+    else pass "MeshLab: no non two manifold edges or vertices"; fi
+    grep -q "Mesh is two-manifold" log.txt && pass "MeshLab: Mesh is two-manifold" || fail "MeshLab: not two-manifold"
+    expect_eq "core: singular edges after" "$(value singular_edges output.txt)" 0
+    expect_eq "core: singular vertices after" "$(value singular_vertices output.txt)" 0
+    grep -q "after: singular edges 0, singular vertices 0" log.txt && pass "repair log" || fail "repair log line missing"
+    check_expectations output.txt "$@"
+    ;;
+
+  attributes)
+    "$MLCHECK" make-attributed "$model" in.ply
+    status=0
+    server log.txt -i in.ply -o repaired.ply -m vc vq fc fq wt sa -s "$scripts/repair.mlx" || status=$?
+    cat log.txt
+    expect_eq "meshlabserver status" "$status" 0
+    "$MLCHECK" same-attributes in.ply repaired.ply >same.txt || true
+    cat same.txt
+    expect_eq "attribute mismatches" "$(value mismatches same.txt)" 0
+    "$MLCHECK" report repaired.ply >output.txt
+    expect_eq "core: singular edges after" "$(value singular_edges output.txt)" 0
+    expect_eq "core: singular vertices after" "$(value singular_vertices output.txt)" 0
+    ;;
+
+  no-faces)
+    printf 'OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n' >points.off
+    for filter in repair detect; do
+      status=0
+      server "$filter.log" -i points.off -o out.ply -m sa -s "$scripts/$filter.mlx" || status=$?
+      cat "$filter.log"
+      [ "$status" -ne 0 ] && pass "$filter: meshlabserver reports failure ($status)" || fail "$filter: status 0"
+      grep -q "needs a mesh with faces" "$filter.log" && pass "$filter: clear error message" \
+        || fail "$filter: no error message"
+      [ ! -e out.ply ] && pass "$filter: nothing saved" || fail "$filter: a mesh was saved"
+    done
+    ;;
+
+  compare-builtin)
+    input_off
+    faces_in=$("$MLCHECK" report "$model" | sed -n 's/^triangles=//p')
+    empty_mlx="$dir/none.mlx"
+    printf '<!DOCTYPE FilterScript>\n<FilterScript>\n</FilterScript>\n' >"$empty_mlx"
+    run_one() {  # run_one LABEL MLX: one meshlabserver run, then MeshLab's own checks
+      local label=$1 mlx=$2 t0 t1 status=0 fn nm=yes
+      t0=$(date +%s%N)
+      server "$label.log" -i in.off -o "$label.ply" -m vf ff sa -s "$mlx" -s "$check_mlx" || status=$?
+      t1=$(date +%s%N)
+      fn=$("$MLCHECK" report "$label.ply" 2>/dev/null | sed -n 's/^faces=//p') || true
+      grep -q "non two manifold" "$label.log" && nm="NO ($(grep 'non two manifold' "$label.log" | tail -n1 | sed 's/^Mesh has //'))"
+      if [ "$status" -ne 0 ]; then
+        fn=none
+        nm="meshlabserver failed, status $status: $(grep -h -m1 'terminate called\|what()\|Assertion\|Problem with filter' "$label.log" "$label.log.stderr" | head -n1)"
+      fi
+      printf '%-34s faces %6s of %6s  wall %5d ms  two-manifold: %s\n' \
+        "$label" "${fn:-?}" "$faces_in" $(( (t1 - t0) / 1000000 )) "$nm" | tee -a table.txt
+      eval "faces_$label=\${fn:-none}"
+    }
+    run_one baseline "$empty_mlx"
+    run_one meshbridge "$scripts/repair.mlx"
+    for method in "removing faces" "splitting vertices"; do
+      label="meshlab_${method// /_}"
+      printf '<!DOCTYPE FilterScript>\n<FilterScript>\n <filter name="Repair non Manifold Edges by %s"/>\n</FilterScript>\n' \
+        "$method" >"$label.mlx"
+      run_one "$label" "$dir/$label.mlx"
+    done
+    echo "(wall time of one meshlabserver run each, start-up and MeshLab's checks included;"
+    echo " 'baseline' runs no repair)"
+    expect_eq "MeshBridge keeps every face" "$faces_meshbridge" "$faces_in"
+    grep -q "^meshbridge .*two-manifold: yes" table.txt && pass "MeshBridge result is two-manifold" \
+      || fail "MeshBridge result not two-manifold"
+    ;;
+
+  *)
+    echo "unknown mode $mode"; exit 2 ;;
+esac
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures check(s) failed; files in $dir"
+  exit 1
+fi
