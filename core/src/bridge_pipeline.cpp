@@ -59,6 +59,21 @@ class ParityUnionFind {
 std::size_t stitch(const Soup& soup, const std::vector<Index>& corner_face,
                    const EdgeBridges& bridges, std::vector<Index>& mate,
                    std::vector<char>& flipped) {
+  // Only edges with two or more unpaired sides can be stitched.
+  std::vector<std::size_t> candidates;
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    if (bridges.num_contenders(e) < 2)
+      continue;
+    Index open_sides = 0;
+    for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
+      open_sides += mate[bridges.contenders[i]] == kNoIndex ? 1 : 0;
+    }
+    if (open_sides >= 2)
+      candidates.push_back(e);
+  }
+  if (candidates.empty())
+    return 0;
+
   const std::size_t num_faces = soup.num_faces();
   ParityUnionFind components(num_faces);
   char unused = 0;
@@ -73,9 +88,7 @@ std::size_t stitch(const Soup& soup, const std::vector<Index>& corner_face,
   }
   std::size_t stitched = 0;
   std::vector<Index> open;
-  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
-    if (bridges.num_contenders(e) < 2)
-      continue;
+  for (std::size_t e : candidates) {
     open.clear();
     for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
       if (mate[bridges.contenders[i]] == kNoIndex)
@@ -326,12 +339,12 @@ PipelineResult run_pipeline(const WorkingSoup& working, std::vector<Index> corne
 
   if (options.orient) {
     const OrientationCounts counts =
-        orient_consistently(soup, corner_face, bridges, options.cut_nonorientable, mate, flipped);
+        orient_consistently(soup, corner_face, options.cut_nonorientable, mate, flipped);
     result.nonorientable_components = counts.nonorientable_components;
     result.sides_cut_for_orientation = counts.sides_cut;
   } else {
     flipped.assign(soup.num_faces(), 0);
-    result.sides_cut_for_orientation = cut_inconsistent_pairs(soup, bridges, mate);
+    result.sides_cut_for_orientation = cut_inconsistent_pairs(soup, mate);
   }
   if (options.stitch)
     result.sides_stitched = stitch(soup, corner_face, bridges, mate, flipped);

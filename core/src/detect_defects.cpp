@@ -141,9 +141,11 @@ DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner
 
   // Orientability through 2-sided edges.
   std::vector<char> flipped;
-  report.num_nonorientable_components =
-      orient_consistently(soup, corner_face, bridges, false, manifold_mate, flipped)
-          .nonorientable_components;
+  if (!report.inconsistent_edges.empty()) {
+    report.num_nonorientable_components =
+        orient_consistently(soup, corner_face, false, manifold_mate, flipped)
+            .nonorientable_components;
+  }
 
   for (Index f = 0; f < soup.num_faces(); ++f) {
     if (components.find(f) == f)

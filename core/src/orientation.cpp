@@ -1,16 +1,30 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "orientation.h"
 
-#include "contender_pairing.h"
-
 namespace meshbridge::detail {
 
-std::size_t cut_inconsistent_pairs(const Soup& soup, const EdgeBridges& bridges,
-                                   std::vector<Index>& mate) {
+namespace {
+
+// Two paired sides run the same way iff they start at the same vertex.
+bool same_way(const Soup& soup, Index c, Index m) {
+  return soup.corner_vertices[c] == soup.corner_vertices[m];
+}
+
+}  // namespace
+
+bool has_inconsistent_pair(const Soup& soup, const std::vector<Index>& mate) {
+  for (Index c = 0; c < mate.size(); ++c) {
+    if (mate[c] != kNoIndex && same_way(soup, c, mate[c]))
+      return true;
+  }
+  return false;
+}
+
+std::size_t cut_inconsistent_pairs(const Soup& soup, std::vector<Index>& mate) {
   std::size_t cut = 0;
   for (Index c = 0; c < mate.size(); ++c) {
     const Index m = mate[c];
-    if (m != kNoIndex && runs_along(soup, bridges, c) == runs_along(soup, bridges, m)) {
+    if (m != kNoIndex && same_way(soup, c, m)) {
       mate[c] = kNoIndex;
       mate[m] = kNoIndex;
       cut += 2;
@@ -20,11 +34,13 @@ std::size_t cut_inconsistent_pairs(const Soup& soup, const EdgeBridges& bridges,
 }
 
 OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>& corner_face,
-                                      const EdgeBridges& bridges, bool cut_nonorientable,
-                                      std::vector<Index>& mate, std::vector<char>& flipped) {
+                                      bool cut_nonorientable, std::vector<Index>& mate,
+                                      std::vector<char>& flipped) {
   OrientationCounts counts;
   const std::size_t num_faces = soup.num_faces();
   flipped.assign(num_faces, 0);
+  if (!has_inconsistent_pair(soup, mate))
+    return counts;  // nothing to flip, nothing to cut
   std::vector<char> visited(num_faces, 0);
   std::vector<Index> queue;
   queue.reserve(num_faces);
@@ -42,8 +58,7 @@ OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>
         if (m == kNoIndex)
           continue;
         const Index g = corner_face[m];
-        const bool same_way = runs_along(soup, bridges, c) == runs_along(soup, bridges, m);
-        const char wanted = static_cast<char>(flipped[f] ^ (same_way ? 1 : 0));
+        const char wanted = static_cast<char>(flipped[f] ^ (same_way(soup, c, m) ? 1 : 0));
         if (!visited[g]) {
           visited[g] = 1;
           flipped[g] = wanted;
@@ -69,7 +84,7 @@ OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>
       const Index f = queue[i];
       for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
         const Index m = mate[c];
-        if (m != kNoIndex && runs_along(soup, bridges, c) == runs_along(soup, bridges, m)) {
+        if (m != kNoIndex && same_way(soup, c, m)) {
           mate[c] = kNoIndex;
           mate[m] = kNoIndex;
           counts.sides_cut += 2;

@@ -2,7 +2,6 @@
 #pragma once
 // Consistent orientation of the faces connected through paired sides.
 
-#include "meshbridge/edge_bridges.h"
 #include "meshbridge/soup.h"
 
 #include <vector>
@@ -20,11 +19,13 @@ struct OrientationCounts {
 //! search meets after the faces are fixed) are cut and its flips kept; without, its faces keep
 //! their direction and every same-running pair of it is cut. `flipped` has one entry per face.
 OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>& corner_face,
-                                      const EdgeBridges& bridges, bool cut_nonorientable,
-                                      std::vector<Index>& mate, std::vector<char>& flipped);
+                                      bool cut_nonorientable, std::vector<Index>& mate,
+                                      std::vector<char>& flipped);
 
 //! Without orientation: every pair whose sides run the same way is cut.
-std::size_t cut_inconsistent_pairs(const Soup& soup, const EdgeBridges& bridges,
-                                   std::vector<Index>& mate);
+std::size_t cut_inconsistent_pairs(const Soup& soup, std::vector<Index>& mate);
+
+//! True if some pair's sides run the same way (start at the same vertex).
+bool has_inconsistent_pair(const Soup& soup, const std::vector<Index>& mate);
 
 }  // namespace meshbridge::detail

@@ -139,7 +139,11 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   report.faces_flipped = pipeline.faces_flipped;
   report.faces_detached = pipeline.faces_detached;
   report.nonorientable_components = pipeline.nonorientable_components;
-  report.after = detect_defects(mesh.soup);
+  // The output is the input itself when nothing was split, flipped, removed or rewritten: its
+  // detection is then the input's. Otherwise detect again, independently of the pipeline.
+  const bool unchanged = !filtering && working.is_identity() && report.vertices_split == 0 &&
+                         report.faces_flipped == 0 && report.isolated_vertices_removed == 0;
+  report.after = unchanged ? report.before : detect_defects(mesh.soup);
   report.components_before = report.before.num_components;
   report.components_after = report.after.num_components;
   report.boundary_edges_before = report.before.boundary_edges.size();
