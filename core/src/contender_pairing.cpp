@@ -24,7 +24,17 @@ Point newell_normal(const Soup& soup, std::size_t f) {
 
 namespace {
 
+// Angles are "diamond" pseudo-angles: monotonic in the true angle, 4 per full turn, and
+// between 0.5 and 1 per radian, so a tie tolerance of 1e-7 is 1e-7 to 2e-7 rad.
+constexpr double kFullTurn = 4.0;
 constexpr double kTieAngle = 1e-7;
+
+// Pseudo-angle of (x, y) in [0, 4): no trigonometry.
+double pseudo_angle(double x, double y) {
+  if (y >= 0)
+    return x >= 0 ? y / (x + y) : 1 - x / (-x + y);
+  return x < 0 ? 2 - y / (-x - y) : 3 + x / (x - y);
+}
 
 void pair(std::vector<Index>& mate, Index a, Index b) {
   mate[a] = b;
@@ -92,14 +102,14 @@ bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
     const double dn = d.norm();
     if (!(dn > 1e-12 * n.norm()) || !(dn > 0))
       return false;
-    order.push_back({std::atan2(OpenMesh::dot(d, e2), OpenMesh::dot(d, e1)), along, side});
+    order.push_back({pseudo_angle(OpenMesh::dot(d, e1), OpenMesh::dot(d, e2)), along, side});
   }
   std::sort(order.begin(), order.end(),
             [](const AngularContender& a, const AngularContender& b) { return a.angle < b.angle; });
-  // Put the cut of the circle in the middle of the widest gap, so no tie straddles it.
+  // Start the cycle after the widest gap, so no run of ties straddles the cut.
   const std::size_t k = order.size();
   std::size_t widest = k - 1;
-  double widest_gap = order.front().angle + 2 * M_PI - order.back().angle;
+  double widest_gap = order.front().angle + kFullTurn - order.back().angle;
   for (std::size_t i = 0; i + 1 < k; ++i) {
     const double gap = order[i + 1].angle - order[i].angle;
     if (gap > widest_gap) {
@@ -107,16 +117,10 @@ bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
       widest = i;
     }
   }
-  const double cut = order[widest].angle + widest_gap / 2;
-  for (auto& c : order) {
-    c.angle -= cut;
-    while (c.angle < 0)
-      c.angle += 2 * M_PI;
-    while (c.angle >= 2 * M_PI)
-      c.angle -= 2 * M_PI;
-  }
-  std::sort(order.begin(), order.end(),
-            [](const AngularContender& a, const AngularContender& b) { return a.angle < b.angle; });
+  const std::size_t first = (widest + 1) % k;
+  for (std::size_t i = 0; i < first; ++i)
+    order[i].angle += kFullTurn;
+  std::rotate(order.begin(), order.begin() + first, order.end());
   // Within a run of ties: along-running first, then by corner.
   for (std::size_t i = 0; i < k;) {
     std::size_t j = i + 1;

@@ -72,7 +72,10 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   auto input_working = std::make_unique<detail::WorkingSoup>(soup);
   std::vector<Index> corner_face = corner_faces(input_working->soup());
   EdgeBridges bridges = group_sides(input_working->soup(), corner_face);
-  report.before = detail::detect(*input_working, corner_face, bridges);
+  const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
+  const bool detecting = options.detect_before_after || filtering;
+  if (detecting)
+    report.before = detail::detect(*input_working, corner_face, bridges);
   report.faces_in = soup.num_faces();
   report.vertices_in = soup.num_vertices();
 
@@ -87,7 +90,6 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
       remove[f] = 1;
   }
   FilteredSoup filtered;
-  const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
   if (filtering) {
     if (options.remove_duplicate_faces) {
       report.duplicate_faces_removed = report.before.duplicate_faces.size();
@@ -143,7 +145,8 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   // detection is then the input's. Otherwise detect again, independently of the pipeline.
   const bool unchanged = !filtering && working.is_identity() && report.vertices_split == 0 &&
                          report.faces_flipped == 0 && report.isolated_vertices_removed == 0;
-  report.after = unchanged ? report.before : detect_defects(mesh.soup);
+  if (detecting)
+    report.after = unchanged ? report.before : detect_defects(mesh.soup);
   report.components_before = report.before.num_components;
   report.components_after = report.after.num_components;
   report.boundary_edges_before = report.before.boundary_edges.size();
