@@ -252,3 +252,18 @@ TEST(Repair, cleanup_options_remove_and_count) {
   EXPECT_EQ(kept.report.faces_set_aside, 1u);
   EXPECT_EQ(kept.mesh.soup.num_vertices(), 43u + kept.report.vertices_split);
 }
+
+TEST(Repair, without_detection_the_mesh_and_the_repair_counts_are_the_same) {
+  const Soup soup = models::prisms24_hexagon();
+  RepairOptions options;
+  options.detect_before_after = false;
+  const RepairResult fast = repair(soup, options);
+  const RepairResult full = repair(soup);
+  EXPECT_EQ(fast.mesh.soup.corner_vertices, full.mesh.soup.corner_vertices);
+  EXPECT_EQ(fast.mesh.soup.positions, full.mesh.soup.positions);
+  EXPECT_EQ(fast.report.vertices_split, full.report.vertices_split);
+  EXPECT_EQ(fast.report.faces_out, full.report.faces_out);
+  EXPECT_EQ(fast.report.before.num_faces, 0u);  // not detected
+  EXPECT_EQ(fast.report.components_after, 0u);
+  EXPECT_EQ(full.report.components_after, 24u);
+}
