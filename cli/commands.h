@@ -17,5 +17,6 @@ void warn_about_reader(const std::string& path, const ReadInfo& info);
 int check_command(const std::vector<std::string>& args);
 int compare_command(const std::vector<std::string>& args);
 int repair_command(const std::vector<std::string>& args);
+int batch_command(const std::vector<std::string>& args);
 
 }  // namespace meshbridge::cli

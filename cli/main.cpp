@@ -26,6 +26,10 @@ const char* kUsage =
     "      --remove-duplicates --remove-degenerate --remove-isolated\n"
     "      --separate EPS              move split vertex copies EPS into their own fan so the\n"
     "                                  repair survives STL's welding by position\n"
+    "  batch INDIR OUTDIR [--format obj|off|ply|stl] [--json] [--quiet]\n"
+    "                                  repair every mesh below INDIR into OUTDIR (same relative\n"
+    "                                  paths), progress on stderr, a summary table on stdout;\n"
+    "                                  exit 0 = all repaired, 2 = some failed\n"
     "\n"
     "formats: OBJ, OFF, PLY, STL (read and written through OpenMesh)\n";
 
@@ -47,6 +51,8 @@ int main(int argc, char** argv) {
       return compare_command(args);
     if (command == "repair")
       return repair_command(args);
+    if (command == "batch")
+      return batch_command(args);
     std::cerr << "meshbridge: unknown command '" << command << "' (try meshbridge --help)\n";
     return kError;
   } catch (const std::bad_alloc&) {

@@ -146,6 +146,22 @@ atomic_output)
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/keep.obj"
   expect_in "$work/keep.obj" "v "
   ;;
+batch)
+  mkdir -p "$work/in/sub"
+  cp "$models/twocubes.obj" "$models/twocubes.off" "$work/in/"
+  cp "$models/prisms24.obj" "$work/in/sub/"
+  expect_exit 0 "$mb" batch "$work/in" "$work/res" --format ply
+  expect_in "$work/out" "3 file(s), 3 repaired, 0 failed"
+  expect_in "$work/out" "| sub/prisms24.obj | 120 | 79 | 38 | 120 | 24 | yes |"
+  expect_in "$work/err" "[3/3]"
+  [ -f "$work/res/twocubes.ply" ] && [ -f "$work/res/twocubes-off.ply" ] && [ -f "$work/res/sub/prisms24.ply" ] \
+    || fail "batch outputs missing: $(ls -R "$work/res")"
+  printf 'v 0 0 0\nf 1 2 3\n' >"$work/in/broken.obj"
+  expect_exit 2 "$mb" batch "$work/in" "$work/res2" --json --quiet
+  expect_in "$work/out" '"file":"broken.obj"'
+  expect_in "$work/out" 'out of range'
+  [ ! -s "$work/err" ] || fail "--quiet printed progress"
+  ;;
 *)
   echo "unknown case $case_name" >&2
   exit 2
