@@ -7,7 +7,12 @@
 //! (2020.09's MeshFilterInterface, 2022+'s FilterPlugin) shares it. Data masks, logging and
 //! parameters are the API glue's business.
 
+// CMeshO: MeshLab 2020.09 declares it in common/ml_mesh_type.h, 2022+ in ml_document/cmesh.h.
+#if __has_include(<common/ml_document/cmesh.h>)
+#include <common/ml_document/cmesh.h>
+#else
 #include <common/ml_mesh_type.h>
+#endif
 
 #include "meshbridge/defect_report.h"
 #include "meshbridge/indexed_mesh.h"

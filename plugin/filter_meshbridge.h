@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 //! \file filter_meshbridge.h
-//! MeshLab 2020.09 filter plugin (MeshFilterInterface): the API glue around cmesh_adapter.h.
+//! MeshLab 2020.09 filter plugin (MeshFilterInterface): the API glue around filter_catalog.h and
+//! filter_actions.h. The MeshLab >= 2022 glue is filter_meshbridge_2022.h.
 
 #include <common/interfaces.h>
 
@@ -13,7 +14,7 @@ class FilterMeshBridgePlugin : public QObject, public MeshFilterInterface {
   Q_INTERFACES(MeshFilterInterface)
 
  public:
-  //! Filter IDs (MeshLab convention: FP_ + what it does).
+  //! Filter IDs (MeshLab convention: FP_ + what it does), in meshlab::all_filters() order.
   enum { FP_DETECT_SINGULAR_DEFECTS, FP_REPAIR_SINGULAR_DEFECTS };
 
   FilterMeshBridgePlugin();
@@ -35,6 +36,6 @@ class FilterMeshBridgePlugin : public QObject, public MeshFilterInterface {
                    vcg::CallBackPos* cb) override;
 
  private:
-  bool detect(MeshDocument& md, const RichParameterList& params, vcg::CallBackPos* cb);
-  bool repair(MeshDocument& md, const RichParameterList& params, vcg::CallBackPos* cb);
+  void detect(MeshDocument& md, const RichParameterList& params);
+  void repair(MeshDocument& md, const RichParameterList& params);
 };

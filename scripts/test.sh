@@ -17,3 +17,8 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMESHBRIDGE_BUILD_TESTS=ON \
   -DMESHLAB_SDK_DIR="$sdk"
 cmake --build "$build" --parallel "$jobs"
 ctest --test-dir "$build" --output-on-failure --parallel "$jobs"
+
+# MeshLab 2025.07 (plugin API >= 2022), built and tested inside a Debian sid root (made once in
+# /var/cache/meshbridge/sid-root; fails loudly without archive access; MESHBRIDGE_SKIP_MESHLAB2025=1
+# skips it for local work only).
+bash scripts/test_meshlab2025.sh

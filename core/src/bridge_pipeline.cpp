@@ -353,7 +353,8 @@ PipelineResult run_pipeline(const WorkingSoup& working, std::vector<Index> corne
 
   std::vector<Index> vertex_origin;
   std::vector<Index> corner_vertex = split_fans(soup, corner_face, mate, vertex_origin);
-  for (int round = 0;; ++round) {
+  // Each round detaches at least one face, and a detached face collides with nothing: this ends.
+  for (;;) {
     const std::vector<Index> detach = find_collisions(soup, corner_face, bridges, corner_vertex,
                                                       flipped, mate, result.sides_stitched);
     if (detach.empty())

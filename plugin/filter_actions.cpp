@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "filter_actions.h"
+
+#include "meshbridge/detect_defects.h"
+
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/flag.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <vcg/complex/algorithms/update/selection.h>
+#include <vcg/complex/algorithms/update/topology.h>
+
+#include <string>
+
+namespace meshbridge::meshlab {
+namespace {
+
+void require_faces(const CMeshO& mesh, const std::string& label, const char* filter) {
+  if (mesh.fn > 0)
+    return;
+  throw FilterInputError(std::string(filter) + " needs a mesh with faces: layer '" + label +
+                         "' has " + std::to_string(mesh.vn) +
+                         " vertices and no faces (a point cloud or edge mesh?). Nothing was "
+                         "changed.");
+}
+
+//! The core's text without its trailing newlines (MeshLab's log adds its own line breaks).
+std::string trimmed(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    text.pop_back();
+  return text;
+}
+
+void refresh_selection_counts(CMeshO& mesh) {
+  mesh.svn = int(vcg::tri::UpdateSelection<CMeshO>::VertexCount(mesh));
+  mesh.sfn = int(vcg::tri::UpdateSelection<CMeshO>::FaceCount(mesh));
+}
+
+FilterCount count(const char* name, std::size_t value) {
+  return {name, static_cast<long long>(value), false};
+}
+
+}  // namespace
+
+DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
+                                      const DetectOptions& options, DetectHost& host) {
+  require_faces(mesh, label, "Detect Singular Defects");
+  DetectOutcome out;
+  CMeshSoup soup = soup_from_cmesh(mesh);
+  out.report = detect_defects(soup.soup);
+
+  // Nothing has changed so far; from here on only the selection, face colours and a new layer.
+  if (options.colour_faces)
+    host.enable_face_colour();
+  out.selection = select_defect_faces(soup, out.report, options.select_faces, options.colour_faces);
+  if (options.select_faces)
+    refresh_selection_counts(mesh);
+
+  // The defect layer stays behind the current one, so the next filter of a script still works
+  // on the mesh itself.
+  const std::string layer_label = label + " defects";
+  CMeshO& layer = host.add_defect_layer(layer_label);
+  out.drawn = build_defect_layer(soup, out.report, layer);
+  layer.Tr = mesh.Tr;
+  vcg::tri::UpdateBounding<CMeshO>::Box(layer);
+  layer.svn = int(vcg::tri::UpdateSelection<CMeshO>::VertexCount(layer));
+
+  out.log = "MeshBridge defects of '" + label + "':\n";
+  out.log += trimmed(to_text(out.report));
+  out.log += "\nDefect layer '" + layer_label + "': " + std::to_string(out.drawn.singular_edges) +
+             " red (singular) edges, " + std::to_string(out.drawn.boundary_edges) +
+             " green (boundary) edges, " + std::to_string(out.drawn.singular_vertex_markers) +
+             " singular vertex markers";
+  if (options.select_faces || options.colour_faces) {
+    out.log += "\n" + std::string(options.select_faces ? "Selected " : "Coloured ") +
+               std::to_string(out.selection.faces) + " faces at singular edges/vertices";
+    if (options.select_faces)
+      out.log += " and " + std::to_string(out.selection.vertices) + " singular vertices";
+  }
+
+  const DefectReport& r = out.report;
+  std::size_t contenders = 0;
+  for (const SingularEdge& e : r.singular_edges)
+    contenders += e.contenders;
+  out.counts = {
+      count("vertices", r.num_vertices),
+      count("faces", r.num_faces),
+      count("edges", r.num_edges),
+      count("singular_edges", r.singular_edges.size()),
+      count("singular_edge_contenders", contenders),
+      count("singular_vertices", r.num_singular_vertices()),
+      count("singular_edge_vertices", r.singular_edge_vertices.size()),
+      count("pinch_vertices", r.pinch_vertices.size()),
+      count("boundary_edges", r.boundary_edges.size()),
+      count("boundary_loops", r.num_boundary_loops),
+      count("isolated_vertices", r.isolated_vertices.size()),
+      count("degenerate_faces", r.degenerate_faces.size()),
+      count("zero_area_faces", r.zero_area_faces.size()),
+      count("duplicate_faces", r.duplicate_faces.size()),
+      count("inconsistent_edges", r.inconsistent_edges.size()),
+      count("nonorientable_components", r.num_nonorientable_components),
+      count("components", r.num_components),
+      {"euler_characteristic", r.euler_characteristic, false},
+      {"watertight", r.watertight ? 1 : 0, true},
+      count("red_edges", out.drawn.singular_edges),
+      count("green_edges", out.drawn.boundary_edges),
+      count("singular_vertex_markers", out.drawn.singular_vertex_markers),
+      count("selected_faces", options.select_faces ? out.selection.faces : 0),
+      count("selected_vertices", options.select_faces ? out.selection.vertices : 0),
+      count("coloured_faces", options.colour_faces ? out.selection.faces : 0),
+  };
+  return out;
+}
+
+RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
+                                      const RepairFilterOptions& options) {
+  require_faces(mesh, label, "Repair Singular Defects");
+  WriteBackOptions write_options;
+  write_options.keep_set_aside_faces = !options.core.remove_degenerate_faces;
+  write_options.recompute_normals = options.recompute_normals;
+
+  RepairOutcome out;
+  const CMeshSoup soup = soup_from_cmesh(mesh);
+  RepairResult result = repair(soup.soup, options.core);
+  // Throws before touching the mesh if the result does not fit.
+  out.written =
+      write_repaired(mesh, soup, result.mesh, result.report.before.excluded_faces, write_options);
+  out.report = std::move(result.report);
+
+  // What MeshLab's own cleaning filters do after changing the mesh: adjacency that was in use is
+  // rebuilt (MeshModel::updateDataMask does the same for FF/VF), border flags, bounding box and
+  // normals are recomputed (MeshModel::UpdateBoxAndNormals), selection counts refreshed.
+  const bool has_ff = mesh.face.IsFFAdjacencyEnabled();
+  if (has_ff)
+    vcg::tri::UpdateTopology<CMeshO>::FaceFace(mesh);
+  if (mesh.vert.IsVFAdjacencyEnabled() && mesh.face.IsVFAdjacencyEnabled())
+    vcg::tri::UpdateTopology<CMeshO>::VertexFace(mesh);
+  if (has_ff) {
+    vcg::tri::UpdateFlags<CMeshO>::FaceBorderFromFF(mesh);
+  } else {
+    vcg::tri::UpdateFlags<CMeshO>::FaceBorderFromNone(mesh);
+  }
+  vcg::tri::UpdateFlags<CMeshO>::VertexBorderFromFaceBorder(mesh);
+  vcg::tri::UpdateBounding<CMeshO>::Box(mesh);
+  if (options.recompute_normals && mesh.fn > 0) {
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(mesh);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexAngleWeighted(mesh);
+  }
+  refresh_selection_counts(mesh);
+
+  const WriteBackReport& w = out.written;
+  out.log = "MeshBridge repair of '" + label + "':\n";
+  out.log += trimmed(to_text(out.report));
+  out.log += "\nLayer now: " + std::to_string(mesh.vn) + " vertices, " + std::to_string(mesh.fn) +
+             " faces (was " + std::to_string(w.vertices_in) + " vertices, " +
+             std::to_string(w.faces_in) + " faces)";
+  if (w.set_aside_faces_kept != 0) {
+    out.log += "\nKept " + std::to_string(w.set_aside_faces_kept) +
+               " degenerate faces unchanged (they repeat a vertex and cannot be manifold; "
+               "'Remove degenerate faces' drops them)";
+  }
+  if (w.polygons_fanned != 0) {
+    out.log += "\nTriangulated " + std::to_string(w.polygons_fanned) + " polygons (" +
+               std::to_string(w.triangles_from_fans) + " extra triangles)";
+  }
+
+  const RepairReport& r = out.report;
+  out.counts = {
+      count("vertices_in", w.vertices_in),
+      count("vertices_out", std::size_t(mesh.vn)),
+      count("faces_in", w.faces_in),
+      count("faces_out", std::size_t(mesh.fn)),
+      count("vertices_split", r.vertices_split),
+      count("faces_flipped", r.faces_flipped),
+      count("sides_cut", r.sides_cut),
+      count("sides_cut_for_orientation", r.sides_cut_for_orientation),
+      count("sides_stitched", r.sides_stitched),
+      count("faces_detached", r.faces_detached),
+      count("faces_split", r.faces_split),
+      count("faces_added_by_split", r.faces_added_by_split),
+      count("faces_set_aside", r.faces_set_aside),
+      count("duplicate_faces_removed", r.duplicate_faces_removed),
+      count("degenerate_faces_removed", r.degenerate_faces_removed),
+      count("isolated_vertices_removed", r.isolated_vertices_removed),
+      count("components_before", r.components_before),
+      count("components_after", r.components_after),
+      count("boundary_edges_before", r.boundary_edges_before),
+      count("boundary_edges_after", r.boundary_edges_after),
+      count("nonorientable_components", r.nonorientable_components),
+      count("singular_edges_before", r.before.singular_edges.size()),
+      count("singular_vertices_before", r.before.num_singular_vertices()),
+      count("singular_edges_after", r.after.singular_edges.size()),
+      count("singular_vertices_after", r.after.num_singular_vertices()),
+      count("degenerate_faces_kept", w.set_aside_faces_kept),
+      count("polygons_triangulated", w.polygons_fanned),
+  };
+  return out;
+}
+
+}  // namespace meshbridge::meshlab

@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "filter_catalog.h"
+
+#include <stdexcept>
+
+namespace meshbridge::meshlab {
+namespace {
+
+const FilterText kDetect = {
+    "Detect Singular Defects (Bridged Half-Edge)",
+    "compute_singular_defects_bridged",
+    "Finds the defects that stop a half-edge structure from holding the mesh, without changing "
+    "it: <b>singular edges</b> (more than two faces on one edge, with their number of faces), "
+    "<b>singular vertices</b> (on a singular edge, or pinch vertices whose faces form more than "
+    "one fan), boundary edges and holes, isolated vertices, degenerate, zero-area and duplicate "
+    "faces, inconsistently oriented edges, non-orientable components, components, Euler "
+    "characteristic.<br>"
+    "The counts go to the log (MeshLab 2022 and later also return them as the filter's result, "
+    "a dictionary in pymeshlab). A new layer <i>&lt;mesh&gt; defects</i> shows them as an edge "
+    "mesh: singular "
+    "edges <b>red</b>, boundary edges <b>green</b> (colour per vertex, quality = faces on the "
+    "edge), plus one selected marker point per singular vertex (red on singular edges, magenta "
+    "for pinch vertices). Optionally selects and colours the faces at the singular elements so "
+    "MeshLab's selection tools can go on from there.<br>"
+    "Edges are pairs of vertex indices: vertices that merely coincide are not merged (use "
+    "<i>Remove Duplicate Vertices</i> first if they should be).<br>"
+    "MeshBridge: edge bridges on top of OpenMesh.",
+};
+
+const FilterText kRepair = {
+    "Repair Singular Defects (Bridged Half-Edge)",
+    "meshing_repair_singular_defects_bridged",
+    "Lossless manifold repair of the current layer, in place: every face is kept with its "
+    "attributes (colour, quality, normal, wedge texture coordinates) and its place in face "
+    "order; every edge ends up with at most two faces and every vertex with one fan.<br>"
+    "The faces of each singular edge are paired by their angular order around the edge (faces "
+    "that close a solid are paired first, a sheet between them is left over), then vertices "
+    "with several fans are split; each copy carries its original's colour, quality, normal and "
+    "texture coordinate. Boundary sides that can be glued back without a new singularity are "
+    "stitched, and each orientable component is consistently oriented (closed ones outward). "
+    "One pass is enough: the repair is idempotent.<br>"
+    "Unlike <i>Repair non Manifold Edges</i> it deletes no face and does not cut every face on "
+    "a singular edge loose. The repair counts go to the log (MeshLab 2022 and later also "
+    "return them as the filter's result, a dictionary in pymeshlab).",
+};
+
+ParameterSpec boolean(const char* name, bool default_value, const char* label,
+                      const char* tooltip) {
+  ParameterSpec p;
+  p.kind = ParameterSpec::Kind::boolean;
+  p.name = name;
+  p.bool_default = default_value;
+  p.label = label;
+  p.tooltip = tooltip;
+  return p;
+}
+
+std::vector<ParameterSpec> make_detect_parameters() {
+  const DetectOptions defaults;
+  return {
+      boolean(parameter::select_faces, defaults.select_faces,
+              "Select faces at singular edges and vertices",
+              "Replace the current selection by the faces that have a side on a singular edge or "
+              "a corner at a pinch vertex, and by the singular vertices, so that MeshLab's "
+              "selection filters can work on them next."),
+      boolean(parameter::colour_faces, defaults.colour_faces,
+              "Colour faces at singular edges and vertices",
+              "Paint those faces: red at singular edges, orange at pinch vertices. Turns on "
+              "per-face colour for the layer and overwrites the colour of those faces."),
+  };
+}
+
+std::vector<ParameterSpec> make_repair_parameters() {
+  const RepairFilterOptions defaults;
+  ParameterSpec pairing;
+  pairing.kind = ParameterSpec::Kind::enumeration;
+  pairing.name = parameter::pairing;
+  pairing.enum_default = defaults.core.pairing == PairingPolicy::combinatorial ? 1 : 0;
+  // Short labels: pymeshlab takes an enum by its label (pairing='Combinatorial') or its index.
+  pairing.enum_values = {"Geometric", "Combinatorial"};
+  pairing.label = "Pairing of faces on singular edges";
+  pairing.tooltip =
+      "How the faces on an edge with more than two faces are paired. Geometric (0): sort them by "
+      "angle around the edge and pair neighbours that enclose the same solid; a sheet between "
+      "two solids is left over; faces without a usable normal fall back to combinatorial. "
+      "Combinatorial (1): faces that run the edge in opposite directions first, in face order, "
+      "then "
+      "the rest in face order.";
+  return {
+      pairing,
+      boolean(parameter::orient, defaults.core.orient, "Orient components consistently",
+              "Flip faces so that every orientable component is consistently oriented, closed "
+              "ones outward (positive volume). Off: every face keeps its vertex order."),
+      boolean(parameter::stitch, defaults.core.stitch, "Stitch boundary sides back",
+              "Glue sides left unpaired on the same edge back together where the result stays "
+              "manifold, so repair opens no hole that was not there."),
+      boolean(parameter::cut_nonorientable, defaults.core.cut_nonorientable,
+              "Orient non-orientable components too",
+              "Also orient components that cannot be oriented (Moebius strips), cutting the "
+              "fewest conflicting edges a spanning tree finds. Off: such components keep their "
+              "faces' directions and each of their inconsistent edges is cut."),
+      boolean(parameter::remove_duplicate_faces, defaults.core.remove_duplicate_faces,
+              "Remove duplicate faces",
+              "Delete faces whose vertex set an earlier face has (counted in the log). Off: "
+              "every face is kept."),
+      boolean(parameter::remove_degenerate_faces, defaults.core.remove_degenerate_faces,
+              "Remove degenerate faces",
+              "Delete faces that repeat a vertex (counted in the log). Off: they are kept "
+              "unchanged in their place; such a face cannot be part of a manifold, so it is "
+              "left as it was."),
+      boolean(parameter::remove_isolated_vertices, defaults.core.remove_isolated_vertices,
+              "Remove isolated vertices", "Delete vertices that no face uses. Off: they are kept."),
+      boolean(parameter::recompute_normals, defaults.recompute_normals, "Recompute normals",
+              "Recompute face and vertex normals afterwards, as MeshLab's own cleaning filters "
+              "do. Off: vertex normals are copied to split vertices and face normals of flipped "
+              "faces are negated, so normals loaded from a file survive."),
+  };
+}
+
+}  // namespace
+
+const std::vector<FilterId>& all_filters() {
+  static const std::vector<FilterId> filters = {FilterId::detect, FilterId::repair};
+  return filters;
+}
+
+const FilterText& filter_text(FilterId id) {
+  switch (id) {
+    case FilterId::detect:
+      return kDetect;
+    case FilterId::repair:
+      return kRepair;
+  }
+  throw std::invalid_argument("unknown MeshBridge filter id " + std::to_string(int(id)));
+}
+
+const std::vector<ParameterSpec>& parameters(FilterId id) {
+  static const std::vector<ParameterSpec> detect = make_detect_parameters();
+  static const std::vector<ParameterSpec> repair = make_repair_parameters();
+  switch (id) {
+    case FilterId::detect:
+      return detect;
+    case FilterId::repair:
+      return repair;
+  }
+  throw std::invalid_argument("unknown MeshBridge filter id " + std::to_string(int(id)));
+}
+
+}  // namespace meshbridge::meshlab

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+//! \file filter_catalog.h
+//! What the MeshBridge filters are called and what they take: names, python names, descriptions
+//! and parameters, shared by every MeshLab adapter (2020.09's MeshFilterInterface and 2022+'s
+//! FilterPlugin). Knows neither Qt nor MeshLab; each adapter turns these specs into its own
+//! RichParameters and reads the values back with the option readers at the end.
+//!
+//! Python names (pymeshlab, MeshLab >= 2022): filter and parameter names below are the ones a
+//! script passes to `MeshSet.apply_filter`; parameter names are already snake_case, so MeshLab's
+//! own python-name rule leaves them unchanged.
+
+#include "filter_actions.h"
+
+#include <string>
+#include <vector>
+
+namespace meshbridge::meshlab {
+
+//! The filters, in menu order.
+enum class FilterId {
+  detect,  //!< "Detect Singular Defects (Bridged Half-Edge)", compute_singular_defects_bridged
+  repair,  //!< "Repair Singular Defects (Bridged Half-Edge)",
+           //!< meshing_repair_singular_defects_bridged
+};
+
+//! Both filters, in menu order.
+const std::vector<FilterId>& all_filters();
+
+//! Names and documentation of one filter.
+struct FilterText {
+  const char* name;         //!< menu and .mlx name
+  const char* python_name;  //!< pymeshlab name (MeshLab >= 2022)
+  const char* info;         //!< HTML help shown by MeshLab
+};
+const FilterText& filter_text(FilterId id);
+
+//! Parameter names (also their python names).
+namespace parameter {
+inline constexpr const char* select_faces = "select_faces";
+inline constexpr const char* colour_faces = "color_faces";
+inline constexpr const char* pairing = "pairing";
+inline constexpr const char* orient = "orient";
+inline constexpr const char* stitch = "stitch";
+inline constexpr const char* cut_nonorientable = "cut_nonorientable";
+inline constexpr const char* remove_duplicate_faces = "remove_duplicate_faces";
+inline constexpr const char* remove_degenerate_faces = "remove_degenerate_faces";
+inline constexpr const char* remove_isolated_vertices = "remove_isolated_vertices";
+inline constexpr const char* recompute_normals = "recompute_normals";
+}  // namespace parameter
+
+//! One parameter of a filter: a bool, or an enum (an index into `enum_values`).
+struct ParameterSpec {
+  enum class Kind { boolean, enumeration };
+  Kind kind = Kind::boolean;
+  const char* name = "";  //!< see namespace parameter
+  bool bool_default = false;
+  int enum_default = 0;
+  std::vector<const char*> enum_values;  //!< labels, index = value
+  const char* label = "";                //!< the dialog's label
+  const char* tooltip = "";
+};
+
+//! The parameters of `id`, in dialog order. Defaults are DetectOptions{}'s and
+//! RepairFilterOptions{}'s (so the core's RepairOptions{} for the core's options).
+const std::vector<ParameterSpec>& parameters(FilterId id);
+
+//! Reads the detect filter's options from a MeshLab RichParameterList (either API generation:
+//! both have getBool(name)).
+template <class ParameterList>
+DetectOptions detect_options(const ParameterList& params) {
+  DetectOptions options;
+  options.select_faces = params.getBool(parameter::select_faces);
+  options.colour_faces = params.getBool(parameter::colour_faces);
+  return options;
+}
+
+//! Reads the repair filter's options from a MeshLab RichParameterList (getBool, getEnum).
+template <class ParameterList>
+RepairFilterOptions repair_options(const ParameterList& params) {
+  RepairFilterOptions options;
+  options.core.pairing = params.getEnum(parameter::pairing) == 1 ? PairingPolicy::combinatorial
+                                                                 : PairingPolicy::geometric;
+  options.core.orient = params.getBool(parameter::orient);
+  options.core.stitch = params.getBool(parameter::stitch);
+  options.core.cut_nonorientable = params.getBool(parameter::cut_nonorientable);
+  options.core.remove_duplicate_faces = params.getBool(parameter::remove_duplicate_faces);
+  options.core.remove_degenerate_faces = params.getBool(parameter::remove_degenerate_faces);
+  options.core.remove_isolated_vertices = params.getBool(parameter::remove_isolated_vertices);
+  options.recompute_normals = params.getBool(parameter::recompute_normals);
+  return options;
+}
+
+}  // namespace meshbridge::meshlab

@@ -1,0 +1,299 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# One MeshLab 2025.07 integration test, run inside the sid root (tests/meshlab2025/CMakeLists.txt):
+# the headless runner (meshbridge-mlrun: MeshLab's own PluginManager, MeshDocument and IO plugins,
+# as pymeshlab uses them) applies our filters and MeshLab's by their python names; the checks are
+# those of tests/meshlab/run_meshlab_test.sh (MeshLab 2020.09 through meshlabserver), plus the
+# filters' result maps.
+#
+# Usage: run_meshlab2025_test.sh MODE [MODEL.obj] [key=value ...]
+#   version                   MeshLab's PluginManager loads the plugin: same version and precision
+#   lists-plugin              both filters under their python names, with their parameters
+#   detect MODEL [k=v...]     log, result map == core, defect layer edges == core, selection
+#   repair MODEL [k=v...]     repair + MeshLab's own manifold checks in the same run
+#   attributes MODEL          colours, qualities, wedge texcoords survive repair, face order kept
+#   no-faces                  a point cloud: MeshLab's precondition error, and our MLException
+#   compare-builtin MODEL     ours vs MeshLab's "Repair non Manifold Edges" (both methods)
+# k=v: expected values of `mlcheck report` on the input (detect) or on the repaired output
+# (repair), as in tests/meshlab/expectations.cmake.
+#
+# Environment (set by CMakeLists.txt): MLRUN, MLCHECK, PLUGIN, MESHLAB_PLUGIN_DIR, WORK.
+set -euo pipefail
+
+: "${MLRUN:?}" "${MLCHECK:?}" "${PLUGIN:?}" "${MESHLAB_PLUGIN_DIR:?}" "${WORK:?}"
+export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-/tmp/runtime-$(id -u)}
+mkdir -p "$XDG_RUNTIME_DIR" && chmod 700 "$XDG_RUNTIME_DIR"
+
+detect_filter=compute_singular_defects_bridged
+repair_filter=meshing_repair_singular_defects_bridged
+# MeshLab's own checks, as tests/meshlab/check_manifold.mlx runs them in 2020.09.
+checks=(filter get_topological_measures
+        filter compute_selection_by_non_manifold_edges_per_face
+        filter compute_selection_by_non_manifold_per_vertex)
+
+mode=${1:?mode}; shift
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+pass() { echo "ok:   $*"; }
+# value KEY FILE: the value of KEY=... in a key=value file (empty if missing)
+value() { sed -n "s/^$1=//p" "$2" | tail -n1; }
+# result FILTER KEY LOG: the value of KEY in the result map of the last FILTER step in LOG
+result() {
+  awk -v f="$1" -v k="$2" '
+    /^filter / { current = $2 }
+    current == f && index($0, "result: " k "=") == 1 { v = substr($0, length("result: " k "=") + 1) }
+    END { print v }' "$3"
+}
+expect_eq() {  # expect_eq WHAT ACTUAL EXPECTED
+  if [ "$2" = "$3" ]; then pass "$1 = $2"; else fail "$1 = '$2', expected '$3'"; fi
+}
+# run LOG STEP...: the runner with MeshLab's IO, cleaning, selection and measuring plugins and
+# ours; stdout (steps, MeshLab's log, result maps) into LOG, stderr into LOG.stderr
+run() {
+  local log=$1; shift
+  echo "+ meshbridge-mlrun ... $*" >&2
+  "$MLRUN" plugin "$MESHLAB_PLUGIN_DIR/libio_base.so" plugin "$MESHLAB_PLUGIN_DIR/libfilter_clean.so" \
+    plugin "$MESHLAB_PLUGIN_DIR/libfilter_select.so" plugin "$MESHLAB_PLUGIN_DIR/libfilter_measure.so" \
+    plugin "$PLUGIN" "$@" >"$log" 2>"$log.stderr"
+}
+loaded_fn() { sed -n 's/^loaded .* \([0-9]*\) vertices, \([0-9]*\) faces$/\2/p' "$1" | tail -n1; }
+
+model=${1:-}
+name=$(basename "${model:-$mode}" .obj)
+dir="$WORK/$mode.$name"
+rm -rf "$dir"
+mkdir -p "$dir"
+cd "$dir"
+
+input_off() {  # MODEL as OFF, the input the 2020.09 tests give meshlabserver
+  [ -f "$model" ] || { echo "no model $model"; exit 1; }
+  "$MLCHECK" to-off "$model" in.off
+}
+check_expectations() {  # check_expectations REPORT k=v...
+  local report=$1; shift
+  local kv
+  for kv in "$@"; do
+    expect_eq "${kv%%=*}" "$(value "${kv%%=*}" "$report")" "${kv#*=}"
+  done
+}
+
+case "$mode" in
+  version)
+    status=0
+    "$MLRUN" plugin "$MESHLAB_PLUGIN_DIR/libio_base.so" plugin "$PLUGIN" version >log.txt 2>&1 || status=$?
+    cat log.txt
+    expect_eq "runner status (PluginManager accepted the plugin)" "$status" 0
+    ours=$(sed -n 's/^plugin libfilter_meshbridge.so version=\(.*\) precision=\(.*\)$/\1 \2/p' log.txt)
+    theirs=$(sed -n 's/^plugin libio_base.so version=\(.*\) precision=\(.*\)$/\1 \2/p' log.txt)
+    common=$(sed -n 's/^meshlab-common version=//p' log.txt)
+    [ -n "$ours" ] || fail "no version line for our plugin"
+    expect_eq "our version and precision == MeshLab's io_base" "$ours" "$theirs"
+    expect_eq "our version (first 6 characters) == libmeshlab-common's" "${ours:0:6}" "${common:0:6}"
+    ;;
+
+  lists-plugin)
+    status=0
+    run list.txt list || status=$?
+    expect_eq "runner status" "$status" 0
+    for f in "$detect_filter (Detect Singular Defects (Bridged Half-Edge))" \
+             "$repair_filter (Repair Singular Defects (Bridged Half-Edge))" \
+             "compute_selection_by_non_manifold_edges_per_face (Select non Manifold Edges)" \
+             "compute_selection_by_non_manifold_per_vertex (Select non Manifold Vertices)" \
+             "meshing_repair_non_manifold_edges (Repair non Manifold Edges)" \
+             "get_topological_measures (Compute Topological Measures)"; do
+      grep -qxF "filter $f" list.txt && pass "lists $f" || fail "does not list $f"
+    done
+    # Our parameters, by python name, with type and default, in dialog order.
+    params() { awk -v f="filter $1 " 'index($0, f) == 1 { on = 1; next } /^filter / { on = 0 } on' list.txt; }
+    expect_eq "$detect_filter parameters" "$(params "$detect_filter" | tr '\n' '|')" \
+      "  select_faces : bool = True|  color_faces : bool = False|"
+    expect_eq "$repair_filter parameters" "$(params "$repair_filter" | tr '\n' '|')" \
+      "  pairing : str = 'Geometric'|  orient : bool = True|  stitch : bool = True|  cut_nonorientable : bool = False|  remove_duplicate_faces : bool = False|  remove_degenerate_faces : bool = False|  remove_isolated_vertices : bool = False|  recompute_normals : bool = True|"
+    ;;
+
+  detect)
+    shift
+    input_off
+    "$MLCHECK" report "$model" >input.txt
+    status=0
+    # Layer "last" is the defect layer; layer 0 the mesh itself, with its selection flags.
+    run log.txt load in.off filter "$detect_filter" \
+      save defects.obj layer=last attributes=vc save mesh.ply layer=0 attributes=vf,ff binary=false \
+      || status=$?
+    cat log.txt
+    expect_eq "runner status" "$status" 0
+    grep -q "^log: MeshBridge defects of" log.txt && pass "report logged" || fail "no report in MeshLab's log"
+    if [ ! -e defects.obj ]; then
+      # Nothing to draw: the defect layer is empty and MeshLab's exporters refuse empty meshes.
+      grep -q "^not saved defects.obj: .* is empty" log.txt \
+        && grep -q "^log: Defect layer .*: 0 red (singular) edges, 0 green (boundary) edges, 0 singular" log.txt \
+        && pass "empty defect layer (nothing to show; not saved)" || fail "no defect layer saved"
+      printf 'vertices=0\nfaces=0\nred_edges=0\ngreen_edges=0\nother_edges=0\nmarker_points=0\n' >defects.txt
+    else
+      "$MLCHECK" report defects.obj >defects.txt
+    fi
+    "$MLCHECK" report mesh.ply >mesh.txt
+    echo "--- core on the input:"; cat input.txt
+    echo "--- defect layer:"; cat defects.txt
+    expect_eq "red edges == core singular edges" "$(value red_edges defects.txt)" "$(value singular_edges input.txt)"
+    expect_eq "green edges == core boundary edges" "$(value green_edges defects.txt)" "$(value boundary_edges input.txt)"
+    expect_eq "other edges" "$(value other_edges defects.txt)" 0
+    expect_eq "defect layer faces" "$(value faces defects.txt)" 0
+    expect_eq "singular vertex markers == core singular vertices" \
+      "$(value marker_points defects.txt)" "$(value singular_vertices input.txt)"
+    # MeshLab triangulates polygons on loading: compare with the file's triangle count.
+    expect_eq "mesh faces unchanged" "$(value faces mesh.txt)" "$(value triangles input.txt)"
+    expect_eq "mesh vertices unchanged" "$(value vertices mesh.txt)" "$(value vertices input.txt)"
+    singular=$(( $(value singular_edges input.txt) + $(value singular_vertices input.txt) ))
+    selected=$(value selected_faces mesh.txt)
+    if [ "$singular" -gt 0 ]; then
+      [ "$selected" -gt 0 ] && pass "selected $selected faces at singular elements" || fail "nothing selected"
+    else
+      expect_eq "selected faces" "$selected" 0
+    fi
+    expect_eq "selected vertices == singular vertices" "$(value selected_vertices mesh.txt)" \
+      "$(value singular_vertices input.txt)"
+    # The result map (pymeshlab's return value) says what the files show.
+    for k in singular_edges singular_edge_contenders singular_vertices pinch_vertices boundary_edges \
+             components inconsistent_edges; do
+      expect_eq "result $k == core" "$(result "$detect_filter" "$k" log.txt)" "$(value "$k" input.txt)"
+    done
+    expect_eq "result faces == MeshLab's triangles" "$(result "$detect_filter" faces log.txt)" "$(value triangles input.txt)"
+    expect_eq "result red_edges == layer" "$(result "$detect_filter" red_edges log.txt)" "$(value red_edges defects.txt)"
+    expect_eq "result green_edges == layer" "$(result "$detect_filter" green_edges log.txt)" "$(value green_edges defects.txt)"
+    expect_eq "result selected_faces == saved selection" "$(result "$detect_filter" selected_faces log.txt)" "$selected"
+    expect_eq "result watertight" "$(result "$detect_filter" watertight log.txt)" \
+      "$([ "$(value watertight input.txt)" = 1 ] && echo True || echo False)"
+    # Both options on: the selected faces are exactly the coloured ones (red at singular edges,
+    # orange at pinch vertices), and the mesh itself is still unchanged.
+    status=0
+    run colour.log load in.off filter "$detect_filter" select_faces=true color_faces=true \
+      save coloured.ply layer=0 attributes=vf,ff,fc binary=false || status=$?
+    expect_eq "runner status (colour faces)" "$status" 0
+    "$MLCHECK" report coloured.ply >coloured.txt
+    expect_eq "coloured faces == selected faces" \
+      "$(( $(value red_faces coloured.txt) + $(value orange_faces coloured.txt) ))" "$(value selected_faces coloured.txt)"
+    expect_eq "result coloured_faces" "$(result "$detect_filter" coloured_faces colour.log)" "$(value selected_faces coloured.txt)"
+    expect_eq "coloured mesh faces unchanged" "$(value faces coloured.txt)" "$(value triangles input.txt)"
+    check_expectations input.txt "$@"
+    ;;
+
+  repair)
+    shift
+    input_off
+    "$MLCHECK" report "$model" >input.txt
+    # MeshLab's own checks on the input first: they must see what the core sees.
+    status=0
+    run before.log load in.off "${checks[@]}" save before.ply attributes=vf,ff binary=false || status=$?
+    expect_eq "runner status (checks on input)" "$status" 0
+    "$MLCHECK" report before.ply >before.txt
+    if [ "$(value singular_edges input.txt)" -gt 0 ]; then
+      [ "$(value selected_faces before.txt)" -gt 0 ] \
+        && pass "MeshLab selects $(value selected_faces before.txt) faces on non-manifold edges of the input" \
+        || fail "MeshLab finds no non-manifold edge in the input"
+    fi
+    expect_eq "MeshLab's non-manifold edges of the input == core singular edges" \
+      "$(result get_topological_measures non_two_manifold_edges before.log)" "$(value singular_edges input.txt)"
+    status=0
+    run log.txt load in.off filter "$repair_filter" "${checks[@]}" \
+      save repaired.ply attributes=vc,vf,ff,fc,fq,wt binary=false || status=$?
+    cat log.txt
+    expect_eq "runner status" "$status" 0
+    "$MLCHECK" report repaired.ply >output.txt
+    echo "--- core on the output:"; cat output.txt
+    expect_eq "faces kept (saved == loaded)" "$(value faces output.txt)" "$(loaded_fn log.txt)"
+    expect_eq "faces kept (saved == file's triangles)" "$(value faces output.txt)" "$(value triangles input.txt)"
+    expect_eq "MeshLab: faces on non-manifold edges (selection)" "$(value selected_faces output.txt)" 0
+    expect_eq "MeshLab: non-manifold vertices (selection)" "$(value selected_vertices output.txt)" 0
+    expect_eq "MeshLab: non_two_manifold_edges" "$(result get_topological_measures non_two_manifold_edges log.txt)" 0
+    expect_eq "MeshLab: non_two_manifold_vertices" "$(result get_topological_measures non_two_manifold_vertices log.txt)" 0
+    expect_eq "MeshLab: is_mesh_two_manifold" "$(result get_topological_measures is_mesh_two_manifold log.txt)" True
+    expect_eq "core: singular edges after" "$(value singular_edges output.txt)" 0
+    expect_eq "core: singular vertices after" "$(value singular_vertices output.txt)" 0
+    grep -q "^log: after: singular edges 0, singular vertices 0" log.txt && pass "repair log" || fail "repair log line missing"
+    expect_eq "result singular_edges_after" "$(result "$repair_filter" singular_edges_after log.txt)" 0
+    expect_eq "result singular_vertices_after" "$(result "$repair_filter" singular_vertices_after log.txt)" 0
+    expect_eq "result faces_out == saved faces" "$(result "$repair_filter" faces_out log.txt)" "$(value faces output.txt)"
+    expect_eq "result vertices_out == saved vertices" "$(result "$repair_filter" vertices_out log.txt)" "$(value vertices output.txt)"
+    expect_eq "result singular_edges_before == core" "$(result "$repair_filter" singular_edges_before log.txt)" "$(value singular_edges input.txt)"
+    check_expectations output.txt "$@"
+    ;;
+
+  attributes)
+    "$MLCHECK" make-attributed "$model" in.ply
+    status=0
+    run log.txt load in.ply filter "$repair_filter" save repaired.ply attributes=vc,vq,fc,fq,wt binary=false \
+      || status=$?
+    cat log.txt
+    expect_eq "runner status" "$status" 0
+    "$MLCHECK" same-attributes in.ply repaired.ply >same.txt || true
+    cat same.txt
+    expect_eq "attribute mismatches" "$(value mismatches same.txt)" 0
+    "$MLCHECK" report repaired.ply >output.txt
+    expect_eq "core: singular edges after" "$(value singular_edges output.txt)" 0
+    expect_eq "core: singular vertices after" "$(value singular_vertices output.txt)" 0
+    ;;
+
+  no-faces)
+    printf 'OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n' >points.off
+    for filter in "$repair_filter" "$detect_filter"; do
+      # As pymeshlab does: MeshLab's own precondition check refuses first.
+      status=0
+      run "$filter.log" load points.off filter "$filter" save out.ply || status=$?
+      cat "$filter.log" "$filter.log.stderr"
+      [ "$status" -ne 0 ] && pass "$filter: refused ($status)" || fail "$filter: status 0"
+      grep -q "^error: .*does not have Any Faces" "$filter.log.stderr" \
+        && pass "$filter: MeshLab's precondition message" || fail "$filter: no precondition message"
+      [ ! -e out.ply ] && pass "$filter: nothing saved" || fail "$filter: a mesh was saved"
+      # Past the precondition check: our own MLException.
+      status=0
+      "$MLRUN" --no-precondition-check plugin "$MESHLAB_PLUGIN_DIR/libio_base.so" plugin "$PLUGIN" \
+        load points.off filter "$filter" save out.ply >"$filter.forced.log" 2>&1 || status=$?
+      cat "$filter.forced.log"
+      [ "$status" -ne 0 ] && pass "$filter (forced): MLException ($status)" || fail "$filter (forced): status 0"
+      grep -q "^error: Failed to apply filter: $filter" "$filter.forced.log" \
+        && grep -q "needs a mesh with faces: layer 'points.off' has 3 vertices and no faces" "$filter.forced.log" \
+        && pass "$filter (forced): clear error message" || fail "$filter (forced): no clear error message"
+      [ ! -e out.ply ] && pass "$filter (forced): nothing saved" || fail "$filter (forced): a mesh was saved"
+    done
+    ;;
+
+  compare-builtin)
+    input_off
+    faces_in=$("$MLCHECK" report "$model" | sed -n 's/^triangles=//p')
+    run_one() {  # run_one LABEL FILTER-STEP...: one runner call, then MeshLab's own checks
+      local label=$1 t0 t1 status=0 fn nm
+      shift
+      t0=$(date +%s%N)
+      run "$label.log" load in.off "$@" filter get_topological_measures \
+        save "$label.ply" attributes=vf,ff binary=false || status=$?
+      t1=$(date +%s%N)
+      fn=$(result get_topological_measures faces_number "$label.log")
+      nm=$(result get_topological_measures is_mesh_two_manifold "$label.log")
+      if [ "$status" -ne 0 ]; then
+        fn=none
+        nm="runner failed, status $status: $(head -n1 "$label.log.stderr")"
+      fi
+      printf '%-34s faces %6s of %6s  wall %5d ms  two-manifold: %s\n' \
+        "$label" "${fn:-?}" "$faces_in" $(( (t1 - t0) / 1000000 )) "$nm" | tee -a table.txt
+      eval "faces_$label=\${fn:-none}"
+    }
+    run_one baseline
+    run_one meshbridge filter "$repair_filter"
+    run_one meshlab_removing_faces filter meshing_repair_non_manifold_edges "method=Remove Faces"
+    run_one meshlab_splitting_vertices filter meshing_repair_non_manifold_edges "method=Split Vertices"
+    echo "(wall time of one runner call each, plugin loading and MeshLab's checks included;"
+    echo " 'baseline' runs no repair)"
+    expect_eq "MeshBridge keeps every face" "$faces_meshbridge" "$faces_in"
+    grep -q "^meshbridge .*two-manifold: True" table.txt && pass "MeshBridge result is two-manifold" \
+      || fail "MeshBridge result not two-manifold"
+    ;;
+
+  *)
+    echo "unknown mode $mode"; exit 2 ;;
+esac
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures check(s) failed; files in $dir"
+  exit 1
+fi
