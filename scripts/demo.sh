@@ -25,7 +25,7 @@ bash scripts/meshlab_private_root.sh make "$meshlab_root" build/release/plugin/l
 
 echo "== meshlabserver: Detect Singular Defects (Bridged Half-Edge) on $model"
 bash scripts/meshlab_private_root.sh run "$meshlab_root" -i "$model" \
-  -o "$out/$name.defects.ply" -l x -m vc -s resources/scripts/detect.mlx \
+  -o "$out/$name.defects.obj" -l x -m vc -s resources/scripts/detect.mlx \
   >"$out/$name.detect.log" 2>&1
 grep -v "^LOG:" "$out/$name.detect.log" | grep -E "MeshBridge|singular|boundary|vertices|faces|components|watertight|Defect layer" | awk '!seen[$0]++' || true
 echo
@@ -41,5 +41,5 @@ echo
 echo "== meshbridge compare $model (OpenMesh's stock loader vs the bridged build)"
 "$tool" compare "$model"
 echo
-echo "wrote $out/$name.defects.ply (defect layer), $out/$name.repaired.ply (repaired mesh)"
+echo "wrote $out/$name.defects.obj (defect layer), $out/$name.repaired.ply (repaired mesh)"
 echo "and the meshlabserver logs $out/$name.detect.log, $out/$name.repair.log"
