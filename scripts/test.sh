@@ -18,6 +18,12 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMESHBRIDGE_BUILD_TESTS=ON \
 cmake --build "$build" --parallel "$jobs"
 ctest --test-dir "$build" --output-on-failure --parallel "$jobs"
 
+# The unit and CLI tests again under AddressSanitizer + UndefinedBehaviorSanitizer (build/asan).
+bash scripts/test_sanitizers.sh
+
+# A short libFuzzer run of each target (clang, ASan, UBSan; build/fuzz); any finding fails.
+bash scripts/fuzz.sh "${MESHBRIDGE_FUZZ_SECONDS:-60}"
+
 # MeshLab 2025.07 (plugin API >= 2022), built and tested inside a Debian sid root (made once in
 # /var/cache/meshbridge/sid-root; fails loudly without archive access; MESHBRIDGE_SKIP_MESHLAB2025=1
 # skips it for local work only).

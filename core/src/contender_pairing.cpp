@@ -45,15 +45,19 @@ void pair(std::vector<Index>& mate, Index a, Index b) {
 // first paired.
 void pair_opposite_in_order(const Soup& soup, const EdgeBridges& bridges,
                             const std::vector<Index>& sides, std::vector<Index>& mate) {
-  for (std::size_t i = 0; i < sides.size(); ++i) {
-    if (mate[sides[i]] != kNoIndex)
+  // Each side takes the earliest still waiting side that runs the other way: the same pairs as
+  // "each unpaired side takes the first later opposite one", in linear time.
+  std::vector<Index> waiting[2];
+  std::size_t head[2] = {0, 0};
+  for (Index side : sides) {
+    if (mate[side] != kNoIndex)
       continue;
-    const bool along = runs_along(soup, bridges, sides[i]);
-    for (std::size_t j = i + 1; j < sides.size(); ++j) {
-      if (mate[sides[j]] == kNoIndex && runs_along(soup, bridges, sides[j]) != along) {
-        pair(mate, sides[i], sides[j]);
-        break;
-      }
+    const int along = runs_along(soup, bridges, side) ? 1 : 0;
+    const int other = 1 - along;
+    if (head[other] < waiting[other].size()) {
+      pair(mate, waiting[other][head[other]++], side);
+    } else {
+      waiting[along].push_back(side);
     }
   }
 }
@@ -121,7 +125,9 @@ bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
   for (std::size_t i = 0; i < first; ++i)
     order[i].angle += kFullTurn;
   std::rotate(order.begin(), order.begin() + first, order.end());
-  // Within a run of ties: along-running first, then by corner.
+  // Within a run of ties: along-running sides first by increasing corner, then against-running
+  // ones by decreasing corner, so coincident copies nest (the outermost pair of the cycle is
+  // made of the first copies) and never interleave.
   for (std::size_t i = 0; i < k;) {
     std::size_t j = i + 1;
     while (j < k && order[j].angle - order[j - 1].angle <= kTieAngle)
@@ -130,7 +136,7 @@ bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
               [](const AngularContender& a, const AngularContender& b) {
                 if (a.along != b.along)
                   return a.along;
-                return a.side < b.side;
+                return a.along ? a.side < b.side : a.side > b.side;
               });
     i = j;
   }

@@ -20,13 +20,14 @@ namespace meshbridge::detail {
 //!
 //! Geometric policy, per singular edge with axis from its smaller to its larger vertex:
 //! contender faces are sorted by the angle of their in-face direction around the axis (Newell
-//! normals); faces at the same angle (coincident, within 1e-7 rad) are ordered along-running
-//! first, then by corner, so two solids touching face to face are never paired across the empty
-//! zero-width gap. Regions of space are labelled by joining the face sides that see each other
-//! across every wedge of every edge; a face whose two sides lie in one region is a sheet.
-//! Then: (a) among non-sheet faces, cyclic neighbours whose wedge lies behind both are paired;
-//! (b) the same among everything still unpaired; (c) elimination pairs what is left,
-//! opposite-running sides only, in cyclic order. An edge with a contender face of zero area,
+//! normals); faces at the same angle (coincident, within about 1e-7 rad) are ordered
+//! along-running first by increasing corner, then against-running by decreasing corner, so two
+//! solids touching face to face are never paired across the empty zero-width gap and coincident
+//! copies nest (see PairingPolicy::geometric). Regions of space are labelled by joining the face
+//! sides that see each other across every wedge of every edge; a face whose two sides lie in one
+//! region is a sheet. Then: (a) among non-sheet faces, cyclic neighbours whose wedge lies behind
+//! both are paired; (b) the same among everything still unpaired; (c) elimination pairs what is
+//! left, opposite-running sides only, in cyclic order. An edge with a contender face of zero area,
 //! or with coincident end points, falls back to the combinatorial rule.
 //!
 //! Combinatorial policy: in corner order, each unpaired side takes the first later unpaired side

@@ -49,20 +49,29 @@ EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face)
   bridges.edge_v0.reserve(num_corners / 2 + 1);
   bridges.edge_v1.reserve(num_corners / 2 + 1);
 
-  // Within a bucket (a handful of sides), order by (larger vertex, corner): insertion sort.
+  // Within a bucket, order by (larger vertex, corner): insertion sort for the usual handful of
+  // sides, std::sort for the rare crowded vertex (no quadratic worst case).
+  const auto before = [&](Index a, Index b) {
+    return high[a] < high[b] || (high[a] == high[b] && a < b);
+  };
   Index out = 0;
   for (std::size_t v = 0; v < num_vertices; ++v) {
+    if (bucket_begin[v] == bucket_begin[v + 1])
+      continue;
     Index* first = sorted.data() + bucket_begin[v];
     Index* last = sorted.data() + bucket_begin[v + 1];
-    for (Index* i = first + 1; i < last; ++i) {
-      const Index c = *i;
-      Index* j = i;
-      while (j > first &&
-             (high[*(j - 1)] > high[c] || (high[*(j - 1)] == high[c] && *(j - 1) > c))) {
-        *j = *(j - 1);
-        --j;
+    if (last - first > 32) {
+      std::sort(first, last, before);
+    } else {
+      for (Index* i = first + 1; i < last; ++i) {
+        const Index c = *i;
+        Index* j = i;
+        while (j > first && before(c, *(j - 1))) {
+          *j = *(j - 1);
+          --j;
+        }
+        *j = c;
       }
-      *j = c;
     }
     for (Index* i = first; i < last;) {
       const Index other = high[*i];

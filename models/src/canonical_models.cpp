@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/models/canonical_models.h"
 
+#include "model_builders.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,14 +15,6 @@
 namespace meshbridge::models {
 
 namespace detail {
-
-constexpr double kPi = 3.14159265358979323846;
-
-//! Appends quad (a, b, c, d) as the triangles (a, b, c), (a, c, d).
-void add_split_quad(Soup& soup, Index a, Index b, Index c, Index d) {
-  soup.add_polygon({a, b, c});
-  soup.add_polygon({a, c, d});
-}
 
 //! The 6 faces of a box as corner quads, outward (counter-clockwise seen from outside).
 //! Corner c is at (c & 1, (c >> 1) & 1, (c >> 2) & 1) in the box's unit frame.
@@ -95,11 +89,6 @@ void add_tetrahedron(Soup& soup, Index a, Index b, Index c, Index d) {
   soup.add_polygon({a, b, d});
   soup.add_polygon({b, c, d});
   soup.add_polygon({a, d, c});
-}
-
-void check_argument(bool ok, const std::string& message) {
-  if (!ok)
-    throw std::invalid_argument(message);
 }
 
 }  // namespace detail

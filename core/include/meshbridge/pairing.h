@@ -10,9 +10,11 @@ enum class PairingPolicy {
   //! Per singular edge, with the axis running from its smaller to its larger vertex index:
   //! 1. Contender faces are sorted by the angle of their in-face direction around the axis
   //!    (from Newell normals, so non-planar polygons work too).
-  //! 2. Ties: faces within 1e-7 rad (coincident faces) are ordered along-running side first,
-  //!    then by corner index; so two solids touching face to face are never paired across the
-  //!    zero-width gap between them. The circle is cut in its widest gap, so no tie straddles it.
+  //! 2. Ties: faces within about 1e-7 rad (coincident faces) are ordered along-running sides
+  //!    first, by increasing corner index, then against-running ones by decreasing corner index;
+  //!    so two solids touching face to face are never paired across the zero-width gap between
+  //!    them, and coincident copies of one solid nest instead of interleaving. The circle is cut
+  //!    in its widest gap, so no run of ties straddles it.
   //! 3. Regions of space are labelled by joining the face sides that see each other across every
   //!    wedge of every edge (boundary edges join a face's two sides). A face whose two sides lie
   //!    in one region is a *sheet* (a fin inside a solid, a rib on a plate, any open surface).

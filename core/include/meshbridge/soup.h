@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <vector>
 
@@ -60,6 +61,16 @@ class Soup {
   }
   Index add_polygon(std::initializer_list<Index> vertices) {
     return add_polygon<std::initializer_list<Index>>(vertices);
+  }
+  //! Appends a copy of a polygon, which may be one of this soup's own.
+  Index add_polygon(PolygonView polygon) {
+    const std::less<const Index*> less;
+    const Index* data = corner_vertices.data();
+    if (!less(polygon.first, data) && less(polygon.first, data + corner_vertices.size())) {
+      const std::vector<Index> copy(polygon.begin(), polygon.end());  // push_back may reallocate
+      return add_polygon<std::vector<Index>>(copy);
+    }
+    return add_polygon<PolygonView>(polygon);
   }
 
   PolygonView polygon(std::size_t f) const {
