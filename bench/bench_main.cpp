@@ -33,6 +33,7 @@
 #include "meshbridge/models/benchmark_models.h"
 #include "meshbridge/models/canonical_models.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/repair_to_openmesh.h"
 #include "meshbridge/stock_build.h"
 
 #include <OpenMesh/Core/IO/importer/ImporterT.hh>
@@ -155,8 +156,7 @@ std::vector<MethodSpec> all_methods() {
                          evaluate(r.mesh.soup, outcome);
                      }});
   methods.push_back({"repair_lean", "MeshBridge: repair without detection reports (indexed)",
-                     Kind::meshbridge, true,
-                     [](const Soup& soup, Clock& clock, Outcome& outcome) {
+                     Kind::meshbridge, true, [](const Soup& soup, Clock& clock, Outcome& outcome) {
                        RepairOptions options;
                        options.detect_before_after = false;
                        const RepairResult r = repair(soup, options);
@@ -166,8 +166,7 @@ std::vector<MethodSpec> all_methods() {
                          evaluate(r.mesh.soup, outcome);
                      }});
   methods.push_back({"repair_lean_om", "MeshBridge: repair without reports + OpenMesh mesh",
-                     Kind::meshbridge, true,
-                     [](const Soup& soup, Clock& clock, Outcome& outcome) {
+                     Kind::meshbridge, true, [](const Soup& soup, Clock& clock, Outcome& outcome) {
                        RepairOptions options;
                        options.detect_before_after = false;
                        const RepairResult r = repair(soup, options);
@@ -176,6 +175,18 @@ std::vector<MethodSpec> all_methods() {
                        outcome.add_face_failures = static_cast<long>(b.add_face_failures);
                        if (wants_evaluation(outcome))
                          evaluate(to_soup(b.mesh), outcome);
+                     }});
+  methods.push_back({"repair_to_om", "MeshBridge: repair_to_openmesh (no reports)",
+                     Kind::meshbridge, true, [](const Soup& soup, Clock& clock, Outcome& outcome) {
+                       RepairOptions options;
+                       options.detect_before_after = false;
+                       const OpenMeshRepair r = repair_to_openmesh(soup, options);
+                       clock.stop();
+                       outcome.add_face_failures = static_cast<long>(r.add_face_failures);
+                       add_note(outcome, r.fast_path ? "fast path: the input was already manifold"
+                                                     : "full repair (first refused face)");
+                       if (wants_evaluation(outcome))
+                         evaluate(to_soup(r.mesh), outcome);
                      }});
   methods.push_back({"repair_om", "MeshBridge: repair + OpenMesh mesh", Kind::meshbridge, true,
                      [](const Soup& soup, Clock& clock, Outcome& outcome) {
@@ -882,16 +893,16 @@ int run_suite(const std::vector<std::string>& args) {
                "repair_lean", "cgal", 20, {&b1, &t1, &b5, &t5});
     {
       Goal g{
-          "repair without reports + OpenMesh mesh no slower than the stock build on the "
+          "repair_to_openmesh (no reports) no slower than the stock build on the "
           "checkerboard, within 1.1x on clean input",
           true, ""};
       for (const Table* t : {&b1, &b5}) {
-        const auto [r, text] = quotient(*t, "repair_lean_om", "stock");
+        const auto [r, text] = quotient(*t, "repair_to_om", "stock");
         g.met = g.met && r <= 1.0;
         g.evidence += t->title + ": " + text + " of stock; ";
       }
       for (const Table* t : {&t1, &t5}) {
-        const auto [r, text] = quotient(*t, "repair_lean_om", "stock");
+        const auto [r, text] = quotient(*t, "repair_to_om", "stock");
         g.met = g.met && r <= 1.1;
         g.evidence += t->title + ": " + text + " of stock; ";
       }

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+//! \file repair_to_openmesh.h
+//! Repair straight into an OpenMesh mesh, at OpenMesh's own speed on clean input.
+
+#include "meshbridge/mesh_types.h"
+#include "meshbridge/repair.h"
+#include "meshbridge/soup.h"
+
+namespace meshbridge {
+
+//! The repaired mesh as OpenMesh holds it, with provenance properties `v:origin` and `f:origin`.
+struct OpenMeshRepair {
+  PolyMesh mesh;
+  RepairReport report;
+  std::size_t add_face_failures = 0;  //!< always 0
+  bool fast_path = false;             //!< true if the input was already a repaired mesh (see below)
+};
+
+//! The same result as `to_openmesh(repair(soup, options).mesh)`, faster on clean input.
+//!
+//! When the options ask for no detection reports and no cleanup, the soup is first handed to
+//! OpenMesh as it is: if every add_face succeeds, every vertex is manifold and every closed
+//! component is oriented outward, that mesh *is* the repair (nothing to split, flip or cut), and
+//! the work is OpenMesh's own build plus one linear check. Otherwise (the first refused face
+//! ends the attempt) the full repair runs. `fast_path` tells which way was taken.
+//! \pre `soup` passes validate_soup() \throw InvalidSoupError naming the offending element
+OpenMeshRepair repair_to_openmesh(const Soup& soup, const RepairOptions& options = {});
+
+}  // namespace meshbridge
