@@ -34,9 +34,7 @@ BridgedMesh build_bridged_mesh(const Soup& soup, const BridgedMeshOptions& optio
   for (Index out = 0; out < origin.size(); ++out)
     bridged.copies[fill[origin[out]]++] = out;
 
-  OpenMeshBuild build = to_openmesh(bridged.indexed);
-  bridged.mesh = std::move(build.mesh);
-  bridged.add_face_failures = build.add_face_failures;
+  bridged.add_face_failures = fill_openmesh(bridged.indexed, bridged.mesh);
   return bridged;
 }
 

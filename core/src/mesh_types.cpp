@@ -9,7 +9,12 @@ namespace meshbridge {
 
 OpenMeshBuild to_openmesh(const IndexedMesh& mesh) {
   OpenMeshBuild build;
-  PolyMesh& out = build.mesh;
+  build.add_face_failures = fill_openmesh(mesh, build.mesh);
+  return build;
+}
+
+std::size_t fill_openmesh(const IndexedMesh& mesh, PolyMesh& out) {
+  std::size_t failures = 0;
   const Soup& soup = mesh.soup;
   out.reserve(soup.num_vertices(), soup.num_corners() / 2 + soup.num_vertices(), soup.num_faces());
   for (const Point& p : soup.positions)
@@ -33,13 +38,13 @@ OpenMeshBuild to_openmesh(const IndexedMesh& mesh) {
       handles.emplace_back(static_cast<int>(v));
     const OpenMesh::FaceHandle fh = out.add_face(handles);
     if (!fh.is_valid()) {
-      ++build.add_face_failures;
+      ++failures;
       continue;
     }
     if (has_origin)
       out.property(face_origin, fh) = mesh.face_origin[f];
   }
-  return build;
+  return failures;
 }
 
 }  // namespace meshbridge

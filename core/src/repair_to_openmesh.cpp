@@ -8,6 +8,7 @@
 
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include <new>
 #include <vector>
 
 namespace meshbridge {
@@ -109,11 +110,12 @@ OpenMeshRepair repair_to_openmesh(const Soup& soup, const RepairOptions& options
     report.vertices_in = report.vertices_out = soup.num_vertices();
     return result;
   }
-  result.mesh = PolyMesh();
+  // Free the abandoned attempt: OpenMesh's clear() keeps every buffer, and its meshes have no
+  // move assignment, so destroy and rebuild the member in place.
+  result.mesh.~PolyMesh();
+  new (&result.mesh) PolyMesh();
   RepairResult repaired = repair(soup, options);
-  OpenMeshBuild build = to_openmesh(repaired.mesh);
-  result.mesh = std::move(build.mesh);
-  result.add_face_failures = build.add_face_failures;
+  result.add_face_failures = fill_openmesh(repaired.mesh, result.mesh);
   result.report = std::move(repaired.report);
   return result;
 }

@@ -32,4 +32,9 @@ struct OpenMeshBuild {
 //! Builds with one add_face() per polygon; a refused polygon is counted, never retried.
 OpenMeshBuild to_openmesh(const IndexedMesh& mesh);
 
+//! The same, into `out` (which must be empty), returning the number of add_face failures.
+//! OpenMesh's meshes have no move operations: `a = std::move(b)` copies the whole mesh, so
+//! code that keeps a PolyMesh as a member builds it in place with this.
+std::size_t fill_openmesh(const IndexedMesh& mesh, PolyMesh& out);
+
 }  // namespace meshbridge
