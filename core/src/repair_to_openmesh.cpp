@@ -3,10 +3,9 @@
 
 #include "meshbridge/validate.h"
 
+#include "openmesh_streams.h"
 #include "union_find.h"
 #include "working_soup.h"
-
-#include <OpenMesh/Core/System/omstream.hh>
 
 #include <new>
 #include <vector>
@@ -14,21 +13,6 @@
 namespace meshbridge {
 
 namespace {
-
-// Mutes OpenMesh's error stream (refused faces are expected here) for the guard's lifetime.
-class MutedOpenMeshErrors {
- public:
-  MutedOpenMeshErrors() : was_enabled_(omerr().is_enabled()) { omerr().disable(); }
-  ~MutedOpenMeshErrors() {
-    if (was_enabled_)
-      omerr().enable();
-  }
-  MutedOpenMeshErrors(const MutedOpenMeshErrors&) = delete;
-  MutedOpenMeshErrors& operator=(const MutedOpenMeshErrors&) = delete;
-
- private:
-  bool was_enabled_;
-};
 
 // Builds `soup` into `mesh` as it is; false at the first polygon OpenMesh refuses or that repeats
 // a vertex, or if the result has a non-manifold vertex or an inward closed component.
@@ -38,7 +22,7 @@ bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
     mesh.add_vertex(p);
   std::vector<OpenMesh::VertexHandle> handles;
   {
-    MutedOpenMeshErrors muted;
+    detail::MutedOpenMeshErrors muted;
     for (std::size_t f = 0; f < soup.num_faces(); ++f) {
       const PolygonView polygon = soup.polygon(f);
       if (detail::has_repeated_vertex(polygon))

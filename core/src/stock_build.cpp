@@ -4,33 +4,14 @@
 #include "meshbridge/validate.h"
 
 #include "json_writer.h"
+#include "openmesh_streams.h"
 #include "union_find.h"
 
 #include <OpenMesh/Core/IO/importer/ImporterT.hh>
-#include <OpenMesh/Core/System/omstream.hh>
 
 #include <sstream>
 
 namespace meshbridge {
-
-namespace {
-
-// Mutes OpenMesh's error stream for the lifetime of the guard.
-class MutedOpenMeshErrors {
- public:
-  MutedOpenMeshErrors() : was_enabled_(omerr().is_enabled()) { omerr().disable(); }
-  ~MutedOpenMeshErrors() {
-    if (was_enabled_)
-      omerr().enable();
-  }
-  MutedOpenMeshErrors(const MutedOpenMeshErrors&) = delete;
-  MutedOpenMeshErrors& operator=(const MutedOpenMeshErrors&) = delete;
-
- private:
-  bool was_enabled_;
-};
-
-}  // namespace
 
 StockBuild build_stock(const Soup& soup) {
   validate_soup(soup);
@@ -40,7 +21,7 @@ StockBuild build_stock(const Soup& soup) {
   report.faces_in = soup.num_faces();
   report.vertices_in = soup.num_vertices();
   {
-    MutedOpenMeshErrors muted;
+    detail::MutedOpenMeshErrors muted;
     OpenMesh::IO::ImporterT<PolyMesh> importer(mesh);
     importer.reserve(static_cast<unsigned>(soup.num_vertices()),
                      static_cast<unsigned>(soup.num_corners() / 2),
