@@ -6,6 +6,7 @@
 #include "union_find.h"
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 
 namespace meshbridge::detail {
@@ -57,8 +58,8 @@ class ParityUnionFind {
 // Glues unpaired sides of one edge back in pairs where the result stays consistently oriented,
 // reversing a whole (smaller) component when that makes two sides run opposite ways.
 std::size_t stitch(const Soup& soup, const std::vector<Index>& corner_face,
-                   const EdgeBridges& bridges, std::vector<Index>& mate,
-                   std::vector<char>& flipped) {
+                   const EdgeBridges& bridges, std::vector<Index>& mate, std::vector<char>& flipped,
+                   std::vector<char>& glued) {
   // Only edges with two or more unpaired sides can be stitched.
   std::vector<std::size_t> candidates;
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
@@ -94,6 +95,8 @@ std::size_t stitch(const Soup& soup, const std::vector<Index>& corner_face,
       if (mate[bridges.contenders[i]] == kNoIndex)
         open.push_back(bridges.contenders[i]);
     }
+    // Angular order, so that what is glued does not depend on the order of faces.
+    sort_by_angle(soup, corner_face, bridges, e, open);
     for (std::size_t i = 0; i < open.size(); ++i) {
       const Index s = open[i];
       if (mate[s] != kNoIndex)
@@ -121,6 +124,7 @@ std::size_t stitch(const Soup& soup, const std::vector<Index>& corner_face,
         }
         mate[s] = t;
         mate[t] = s;
+        glued[s] = glued[t] = 1;
         stitched += 2;
         break;
       }
@@ -134,8 +138,10 @@ std::size_t stitch(const Soup& soup, const std::vector<Index>& corner_face,
   return stitched;
 }
 
-// Reverses whole components: closed ones so that their signed volume is positive, open ones so
-// that fewer of their faces end up reversed.
+// Reverses whole components: closed ones so that their signed volume is positive, open ones (and
+// closed ones of no volume, such as two faces glued back to back) so that fewer of their faces
+// end up reversed. "No volume": |volume| <= 1e-9 times the sum of its terms' magnitudes, below
+// which the sign is rounding noise.
 void choose_component_orientation(const Soup& soup, const std::vector<Index>& corner_face,
                                   const std::vector<Index>& mate, std::vector<char>& flipped) {
   const std::size_t num_faces = soup.num_faces();
@@ -145,7 +151,7 @@ void choose_component_orientation(const Soup& soup, const std::vector<Index>& co
       components.unite(corner_face[c], corner_face[mate[c]]);
   }
   std::vector<char> open(num_faces, 0);
-  std::vector<double> volume(num_faces, 0.0);
+  std::vector<double> volume(num_faces, 0.0), magnitude(num_faces, 0.0);
   std::vector<Index> faces(num_faces, 0), reversed(num_faces, 0);
   for (Index f = 0; f < num_faces; ++f) {
     const Index r = components.find(f);
@@ -155,8 +161,10 @@ void choose_component_orientation(const Soup& soup, const std::vector<Index>& co
     double v = 0;
     const Point& p0 = soup.positions[polygon[0]];
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      v += OpenMesh::dot(
+      const double term = OpenMesh::dot(
           p0, OpenMesh::cross(soup.positions[polygon[i]], soup.positions[polygon[i + 1]]));
+      v += term;
+      magnitude[r] += std::abs(term);
     }
     volume[r] += flipped[f] ? -v : v;
     for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
@@ -168,7 +176,8 @@ void choose_component_orientation(const Soup& soup, const std::vector<Index>& co
   for (Index r = 0; r < num_faces; ++r) {
     if (faces[r] == 0)
       continue;
-    reverse[r] = open[r] ? (2 * reversed[r] > faces[r]) : (volume[r] < 0);
+    const bool flat = std::abs(volume[r]) <= 1e-9 * magnitude[r];
+    reverse[r] = (open[r] || flat) ? (2 * reversed[r] > faces[r]) : (volume[r] < 0);
   }
   for (Index f = 0; f < num_faces; ++f)
     flipped[f] ^= reverse[components.find(f)];
@@ -202,22 +211,52 @@ IndexedMesh emit_mesh(const WorkingSoup& working, const std::vector<Index>& corn
   return mesh;
 }
 
-// Sides whose output edge would carry more than one pair, or two sides running the same way.
-// Only sides on singular edges or unpaired sides of 2-sided edges can collide. Faces of the
-// colliding sides beyond the first pair are returned for detaching; opposite unpaired sides that
-// land on one output edge are paired (they are glued by the output anyway).
-std::vector<Index> find_collisions(const Soup& soup, const std::vector<Index>& corner_face,
-                                   const EdgeBridges& bridges,
-                                   const std::vector<Index>& corner_vertex,
-                                   const std::vector<char>& flipped, std::vector<Index>& mate,
-                                   std::size_t& implicitly_stitched) {
+// One round of making every output edge manifold. Only sides on singular edges or unpaired
+// sides of 2-sided edges can land on one output edge with others (a fan winding twice around a
+// vertex). Per such output edge: two opposite unpaired sides are paired (the output glues them
+// anyway); extra pairs are cut, stitched ones first, keeping one pair; a pair sharing its edge
+// with unpaired sides is cut; unpaired sides that still share one are separated by detaching
+// their faces (the last resort). Returns true if anything changed (fans must be recomputed).
+struct CollisionCounts {
+  std::size_t implicitly_stitched = 0;
+  std::size_t unstitched = 0;
+  std::size_t pairs_cut = 0;  // sides
+  std::vector<Index> detach;
+};
+
+bool resolve_collisions(const Soup& soup, const std::vector<Index>& corner_face,
+                        const EdgeBridges& bridges, const std::vector<Index>& corner_vertex,
+                        const std::vector<char>& flipped, const std::vector<char>& glued,
+                        std::vector<Index>& mate, CollisionCounts& counts) {
   // Output vertex a side starts at, after its face is reversed or not.
   const auto start = [&](Index c) {
     const Index f = corner_face[c];
     return corner_vertex[flipped[f] ? soup.next_corner(c, f) : c];
   };
+  const auto unpair = [&](Index a) {
+    const Index b = mate[a];
+    mate[a] = kNoIndex;
+    mate[b] = kNoIndex;
+    if (glued[a]) {
+      counts.unstitched += 2;
+    } else {
+      counts.pairs_cut += 2;
+    }
+  };
+  // Choices below are made by the faces' sorted vertex lists, which do not depend on the order
+  // of faces or on where a polygon starts.
+  const auto face_key = [&](Index side) {
+    const PolygonView p = soup.polygon(corner_face[side]);
+    std::vector<Index> key(p.begin(), p.end());
+    std::sort(key.begin(), key.end());
+    return key;
+  };
+  const auto pair_key = [&](Index side) {
+    auto a = face_key(side), b = face_key(mate[side]);
+    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+  };
+  bool changed = false;
   std::vector<std::tuple<Index, Index, Index>> keyed;  // (out low, out high, side)
-  std::vector<Index> detach;
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
     const Index k = bridges.num_contenders(e);
     if (k < 2)
@@ -237,32 +276,48 @@ std::vector<Index> find_collisions(const Soup& soup, const std::vector<Index>& c
       while (j < keyed.size() && std::get<0>(keyed[j]) == std::get<0>(keyed[i]) &&
              std::get<1>(keyed[j]) == std::get<1>(keyed[i]))
         ++j;
-      if (j - i == 2) {
-        const Index s = std::get<2>(keyed[i]), t = std::get<2>(keyed[i + 1]);
-        if (mate[s] == t) {
-          // the pair itself
-        } else if (mate[s] == kNoIndex && mate[t] == kNoIndex && start(s) != start(t)) {
-          mate[s] = t;
-          mate[t] = s;
-          implicitly_stitched += 2;
-        } else {
-          detach.push_back(corner_face[t]);
-        }
-      } else if (j - i > 2) {
-        // Keep one pair (or the first side), detach the faces of all others.
-        Index keep_a = std::get<2>(keyed[i]), keep_b = mate[keep_a];
-        for (std::size_t t = i; t < j; ++t) {
-          const Index c = std::get<2>(keyed[t]);
-          if (c != keep_a && c != keep_b)
-            detach.push_back(corner_face[c]);
+      const std::size_t size = j - i;
+      std::vector<Index> pairs, open;  // pairs: the smaller side of each
+      for (std::size_t t = i; t < j; ++t) {
+        const Index c = std::get<2>(keyed[t]);
+        if (mate[c] == kNoIndex) {
+          open.push_back(c);
+        } else if (c < mate[c]) {
+          pairs.push_back(c);
         }
       }
       i = j;
+      if (size < 2 || (size == 2 && pairs.size() == 1))
+        continue;
+      changed = true;
+      if (size == 2 && start(open[0]) != start(open[1])) {
+        mate[open[0]] = open[1];
+        mate[open[1]] = open[0];
+        counts.implicitly_stitched += 2;
+      } else if (!pairs.empty() && (pairs.size() >= 2 || !open.empty())) {
+        // Keep one pair that pairing made (not stitching) if there is more than one pair.
+        Index keep = kNoIndex;
+        if (pairs.size() >= 2) {
+          for (Index p : pairs) {
+            const bool better = keep == kNoIndex || (glued[keep] && !glued[p]) ||
+                                (glued[keep] == glued[p] && pair_key(p) < pair_key(keep));
+            if (better)
+              keep = p;
+          }
+        }
+        for (Index p : pairs) {
+          if (p != keep)
+            unpair(p);
+        }
+      } else {
+        std::sort(open.begin(), open.end(),
+                  [&](Index a, Index b) { return face_key(a) < face_key(b); });
+        for (std::size_t t = 1; t < open.size(); ++t)
+          counts.detach.push_back(corner_face[open[t]]);
+      }
     }
   }
-  std::sort(detach.begin(), detach.end());
-  detach.erase(std::unique(detach.begin(), detach.end()), detach.end());
-  return detach;
+  return changed;
 }
 
 }  // namespace
@@ -346,20 +401,24 @@ PipelineResult run_pipeline(const WorkingSoup& working, std::vector<Index> corne
     flipped.assign(soup.num_faces(), 0);
     result.sides_cut_for_orientation = cut_inconsistent_pairs(soup, mate);
   }
+  std::vector<char> glued(soup.num_corners(), 0);
   if (options.stitch)
-    result.sides_stitched = stitch(soup, corner_face, bridges, mate, flipped);
+    result.sides_stitched = stitch(soup, corner_face, bridges, mate, flipped, glued);
   if (options.orient)
     choose_component_orientation(soup, corner_face, mate, flipped);
 
   std::vector<Index> vertex_origin;
   std::vector<Index> corner_vertex = split_fans(soup, corner_face, mate, vertex_origin);
-  // Each round detaches at least one face, and a detached face collides with nothing: this ends.
-  for (;;) {
-    const std::vector<Index> detach = find_collisions(soup, corner_face, bridges, corner_vertex,
-                                                      flipped, mate, result.sides_stitched);
-    if (detach.empty())
-      break;
-    for (Index f : detach) {
+  // Each round pairs, cuts or detaches something, and nothing is undone: this ends.
+  CollisionCounts collisions;
+  bool resolved_any = false;
+  while (resolve_collisions(soup, corner_face, bridges, corner_vertex, flipped, glued, mate,
+                            collisions)) {
+    resolved_any = true;
+    std::sort(collisions.detach.begin(), collisions.detach.end());
+    collisions.detach.erase(std::unique(collisions.detach.begin(), collisions.detach.end()),
+                            collisions.detach.end());
+    for (Index f : collisions.detach) {
       for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
         if (mate[c] != kNoIndex) {
           mate[mate[c]] = kNoIndex;
@@ -367,9 +426,17 @@ PipelineResult run_pipeline(const WorkingSoup& working, std::vector<Index> corne
         }
       }
     }
-    result.faces_detached += detach.size();
+    result.faces_detached += collisions.detach.size();
+    collisions.detach.clear();
     corner_vertex = split_fans(soup, corner_face, mate, vertex_origin);
   }
+  result.sides_stitched += collisions.implicitly_stitched;
+  result.sides_stitched -= collisions.unstitched;
+  result.sides_cut_to_stay_manifold = collisions.pairs_cut;
+  // Cuts can leave a closed part of a component that was open: orient again (fans do not
+  // depend on orientation).
+  if (resolved_any && options.orient)
+    choose_component_orientation(soup, corner_face, mate, flipped);
   result.vertices_split = vertex_origin.size() - soup.num_vertices();
   for (char f : flipped)
     result.faces_flipped += f;

@@ -30,6 +30,7 @@ struct PipelineResult {
   std::size_t sides_cut_for_orientation = 0;
   std::size_t sides_stitched = 0;
   std::size_t faces_flipped = 0;
+  std::size_t sides_cut_to_stay_manifold = 0;
   std::size_t faces_detached = 0;
   std::size_t vertices_split = 0;
   std::size_t nonorientable_components = 0;

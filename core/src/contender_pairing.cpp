@@ -77,9 +77,10 @@ struct ContenderRange {
   const AngularContender& operator[](std::size_t i) const { return first[i]; }
 };
 
-// Sorts the contenders of edge e by angle around its axis; false if the geometry is unusable.
-bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
-                   const EdgeBridges& bridges, const std::vector<Point>& normals, std::size_t e,
+// Sorts the given sides of edge e by angle around its axis; false if the geometry is unusable.
+template <class NormalOf>
+bool angular_order(const Soup& soup, const EdgeBridges& bridges, std::size_t e,
+                   const Index* sides_begin, const Index* sides_end, NormalOf normal_of,
                    std::vector<AngularContender>& order) {
   order.clear();
   Point axis = soup.positions[bridges.edge_v1[e]] - soup.positions[bridges.edge_v0[e]];
@@ -96,9 +97,9 @@ bool angular_order(const Soup& soup, const std::vector<Index>& corner_face,
   Point e1 = OpenMesh::cross(axis, helper).normalized();
   Point e2 = OpenMesh::cross(axis, e1);
 
-  for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
-    const Index side = bridges.contenders[i];
-    const Point& n = normals[corner_face[side]];
+  for (const Index* it = sides_begin; it != sides_end; ++it) {
+    const Index side = *it;
+    const Point n = normal_of(side);
     const bool along = runs_along(soup, bridges, side);
     Point d = OpenMesh::cross(n, axis);
     if (!along)
@@ -205,7 +206,11 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
   std::vector<std::size_t> order_begin(singular.size() + 1, 0);
   std::vector<char> usable(singular.size());
   for (std::size_t s = 0; s < singular.size(); ++s) {
-    usable[s] = angular_order(soup, corner_face, bridges, normals, singular[s], scratch);
+    const std::size_t e = singular[s];
+    usable[s] = angular_order(
+        soup, bridges, e, bridges.contenders.data() + bridges.begin[e],
+        bridges.contenders.data() + bridges.begin[e + 1],
+        [&](Index side) { return normals[corner_face[side]]; }, scratch);
     if (usable[s])
       flat.insert(flat.end(), scratch.begin(), scratch.end());
     order_begin[s + 1] = flat.size();
@@ -272,6 +277,20 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
     pair_opposite_in_order(soup, bridges, sides, mate);
   }
   return mate;
+}
+
+void sort_by_angle(const Soup& soup, const std::vector<Index>& corner_face,
+                   const EdgeBridges& bridges, std::size_t e, std::vector<Index>& sides) {
+  std::vector<AngularContender> order;
+  const bool usable = angular_order(
+      soup, bridges, e, sides.data(), sides.data() + sides.size(),
+      [&](Index side) { return newell_normal(soup, corner_face[side]); }, order);
+  if (!usable) {
+    std::sort(sides.begin(), sides.end());
+    return;
+  }
+  for (std::size_t i = 0; i < order.size(); ++i)
+    sides[i] = order[i].side;
 }
 
 }  // namespace meshbridge::detail

@@ -40,6 +40,11 @@ inline bool runs_along(const Soup& soup, const EdgeBridges& bridges, Index c) {
   return soup.corner_vertices[c] == bridges.edge_v0[bridges.corner_edge[c]];
 }
 
+//! Puts `sides` (sides of edge e) in the angular order of the geometric policy, starting after
+//! the widest gap; in corner order where the geometry is unusable.
+void sort_by_angle(const Soup& soup, const std::vector<Index>& corner_face,
+                   const EdgeBridges& bridges, std::size_t e, std::vector<Index>& sides);
+
 //! Newell normal (twice the vector area) of polygon f.
 Point newell_normal(const Soup& soup, std::size_t f);
 

@@ -139,6 +139,7 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   report.sides_cut_for_orientation = pipeline.sides_cut_for_orientation;
   report.sides_stitched = pipeline.sides_stitched;
   report.faces_flipped = pipeline.faces_flipped;
+  report.sides_cut_to_stay_manifold = pipeline.sides_cut_to_stay_manifold;
   report.faces_detached = pipeline.faces_detached;
   report.nonorientable_components = pipeline.nonorientable_components;
   // The output is the input itself when nothing was split, flipped, removed or rewritten: its
@@ -164,7 +165,8 @@ std::string to_text(const RepairReport& r) {
   out << "vertices: " << r.vertices_in << " in, " << r.vertices_out << " out (" << r.vertices_split
       << " copies from split fans, " << r.isolated_vertices_removed << " isolated removed)\n";
   out << "sides: " << r.sides_cut << " cut on singular edges, " << r.sides_cut_for_orientation
-      << " cut for orientation, " << r.sides_stitched << " stitched\n";
+      << " cut for orientation, " << r.sides_cut_to_stay_manifold << " cut to stay manifold, "
+      << r.sides_stitched << " stitched\n";
   out << "components: " << r.components_before << " -> " << r.components_after
       << "; boundary edges: " << r.boundary_edges_before << " -> " << r.boundary_edges_after
       << "; non-orientable components: " << r.nonorientable_components << "\n";
@@ -191,6 +193,7 @@ std::string to_json(const RepairReport& r) {
       .number("sides_cut_for_orientation", r.sides_cut_for_orientation)
       .number("sides_stitched", r.sides_stitched)
       .number("faces_flipped", r.faces_flipped)
+      .number("sides_cut_to_stay_manifold", r.sides_cut_to_stay_manifold)
       .number("faces_detached", r.faces_detached)
       .number("components_before", r.components_before)
       .number("components_after", r.components_after)

@@ -7,6 +7,7 @@
 #include "union_find.h"
 #include "working_soup.h"
 
+#include <cmath>
 #include <new>
 #include <vector>
 
@@ -38,7 +39,7 @@ bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
     if (!mesh.is_manifold(v))
       return false;
   }
-  // Closed components must have positive volume; open ones have no preferred side.
+  // Closed components must not have negative volume (beyond rounding, as repair judges it).
   detail::UnionFind components(mesh.n_faces());
   std::vector<char> open(mesh.n_faces(), 0);
   for (auto e : mesh.edges()) {
@@ -52,7 +53,7 @@ bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
       open[(f0.is_valid() ? f0 : f1).idx()] = 1;
     }
   }
-  std::vector<double> volume(mesh.n_faces(), 0.0);
+  std::vector<double> volume(mesh.n_faces(), 0.0), magnitude(mesh.n_faces(), 0.0);
   std::vector<char> component_open(mesh.n_faces(), 0);
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     const Index r = components.find(static_cast<Index>(f));
@@ -60,12 +61,15 @@ bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
     const PolygonView p = soup.polygon(f);
     const Point& p0 = soup.positions[p[0]];
     for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-      volume[r] +=
+      const double term =
           OpenMesh::dot(p0, OpenMesh::cross(soup.positions[p[i]], soup.positions[p[i + 1]]));
+      volume[r] += term;
+      magnitude[r] += std::abs(term);
     }
   }
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    if (components.find(static_cast<Index>(f)) == f && !component_open[f] && volume[f] < 0)
+    if (components.find(static_cast<Index>(f)) == f && !component_open[f] &&
+        volume[f] < -1e-9 * magnitude[f])
       return false;
   }
   return true;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 
@@ -148,6 +149,21 @@ inline double signed_volume(const Soup& soup, const std::vector<Index>& label, I
     }
   }
   return volume / 6;
+}
+
+//! Sum of the magnitudes of the terms of signed_volume(): the scale its rounding error has.
+inline double volume_magnitude(const Soup& soup, const std::vector<Index>& label, Index component) {
+  double magnitude = 0;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    if (label[f] != component)
+      continue;
+    const PolygonView p = soup.polygon(f);
+    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+      magnitude += std::abs(OpenMesh::dot(
+          soup.positions[p[0]], OpenMesh::cross(soup.positions[p[i]], soup.positions[p[i + 1]])));
+    }
+  }
+  return magnitude / 6;
 }
 
 }  // namespace meshbridge::test_support

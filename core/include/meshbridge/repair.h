@@ -48,6 +48,9 @@ struct RepairReport {
   std::size_t sides_cut_for_orientation = 0;  //!< sides unpaired because orientation conflicts
   std::size_t sides_stitched = 0;             //!< unpaired sides glued back in pairs (counts sides)
   std::size_t faces_flipped = 0;              //!< polygons whose corner order was reversed
+  //! Sides unpaired because their fan wound twice around a vertex, putting two pairs on one
+  //! output edge (self-intersecting input); stitches undone for that are not counted here.
+  std::size_t sides_cut_to_stay_manifold = 0;
   std::size_t faces_detached = 0;     //!< last resort: faces cut loose to stay representable
   std::size_t components_before = 0;  //!< as the user sees the input (through all contenders)
   std::size_t components_after = 0;

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Property tests over thousands of seeded random soups: every invariant of repair, idempotence,
+// order independence, provenance.
+
+#include "meshbridge/detect_defects.h"
+#include "meshbridge/repair.h"
+
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace meshbridge;
+using meshbridge::test_support::expect_repair_invariants;
+
+namespace {
+
+// A soup of `faces` polygons (arity 3 to 5) over a small pool of vertices in general position,
+// so that edges are shared by 1 to many polygons in every orientation; some polygons repeat a
+// vertex and some are exact or reversed duplicates.
+Soup random_soup(std::uint32_t seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  const int vertices = 6 + static_cast<int>(random() % 20);
+  const int faces = 4 + static_cast<int>(random() % 40);
+  Soup soup;
+  for (int v = 0; v < vertices; ++v)
+    soup.add_vertex({coordinate(random), coordinate(random), coordinate(random)});
+  std::vector<Index> polygon;
+  for (int f = 0; f < faces; ++f) {
+    const unsigned kind = random() % 20;
+    if (kind == 0 && soup.num_faces() > 0) {  // duplicate, maybe reversed
+      const PolygonView p = soup.polygon(random() % soup.num_faces());
+      polygon.assign(p.begin(), p.end());
+      if (random() % 2)
+        std::reverse(polygon.begin(), polygon.end());
+    } else {
+      polygon.clear();
+      const int arity = 3 + static_cast<int>(random() % 3);
+      for (int i = 0; i < arity; ++i)
+        polygon.push_back(random() % vertices);
+      if (kind > 2) {  // mostly simple polygons: redraw repeats
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+          while (std::count(polygon.begin(), polygon.end(), polygon[i]) > 1)
+            polygon[i] = random() % vertices;
+        }
+      }
+    }
+    soup.add_polygon(polygon);
+  }
+  return soup;
+}
+
+constexpr std::uint32_t kSoups = 2000;
+
+}  // namespace
+
+TEST(RepairProperties, invariants_hold_on_random_soups_with_every_policy) {
+  for (std::uint32_t seed = 1; seed <= kSoups; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const Soup soup = random_soup(seed);
+    RepairOptions options;
+    options.pairing = seed % 3 == 0 ? PairingPolicy::combinatorial : PairingPolicy::geometric;
+    options.stitch = seed % 5 != 0;
+    options.cut_nonorientable = seed % 7 == 0;
+    expect_repair_invariants(soup, repair(soup, options));
+    if (::testing::Test::HasFailure())
+      return;
+  }
+}
+
+TEST(RepairProperties, repair_is_idempotent_on_random_soups) {
+  for (std::uint32_t seed = 1; seed <= kSoups; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const RepairResult once = repair(random_soup(seed));
+    const RepairResult twice = repair(once.mesh.soup);
+    EXPECT_EQ(twice.mesh.soup.corner_vertices, once.mesh.soup.corner_vertices);
+    EXPECT_EQ(twice.mesh.soup.positions, once.mesh.soup.positions);
+    EXPECT_EQ(twice.report.vertices_split, 0u);
+    EXPECT_EQ(twice.report.faces_flipped, 0u);
+    if (::testing::Test::HasFailure())
+      return;
+  }
+}
+
+TEST(RepairProperties, detection_does_not_depend_on_face_order_or_polygon_start) {
+  for (std::uint32_t seed = 1; seed <= kSoups; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const Soup soup = random_soup(seed);
+    const DefectReport a = detect_defects(soup);
+    const DefectReport b = detect_defects(test_support::shuffled(soup, seed));
+    EXPECT_EQ(a.singular_edges.size(), b.singular_edges.size());
+    EXPECT_EQ(a.singular_edge_vertices, b.singular_edge_vertices);
+    EXPECT_EQ(a.pinch_vertices, b.pinch_vertices);
+    EXPECT_EQ(a.boundary_edges.size(), b.boundary_edges.size());
+    EXPECT_EQ(a.num_boundary_loops, b.num_boundary_loops);
+    EXPECT_EQ(a.inconsistent_edges.size(), b.inconsistent_edges.size());
+    EXPECT_EQ(a.num_nonorientable_components, b.num_nonorientable_components);
+    EXPECT_EQ(a.num_components, b.num_components);
+    EXPECT_EQ(a.euler_characteristic, b.euler_characteristic);
+    EXPECT_EQ(a.duplicate_faces.size(), b.duplicate_faces.size());
+    EXPECT_EQ(a.degenerate_faces.size(), b.degenerate_faces.size());
+    if (::testing::Test::HasFailure())
+      return;
+  }
+}
+
+TEST(RepairProperties, repair_counts_do_not_depend_on_face_order_or_polygon_start) {
+  std::size_t differing = 0;
+  for (std::uint32_t seed = 1; seed <= kSoups; ++seed) {
+    const Soup soup = random_soup(seed);
+    const RepairResult a = repair(soup);
+    const RepairResult b = repair(test_support::shuffled(soup, seed));
+    if (a.mesh.soup.num_vertices() != b.mesh.soup.num_vertices() ||
+        a.report.components_after != b.report.components_after ||
+        a.report.boundary_edges_after != b.report.boundary_edges_after) {
+      ++differing;
+      if (differing < 5)
+        ADD_FAILURE() << "seed " << seed << ": " << a.mesh.soup.num_vertices() << "/"
+                      << b.mesh.soup.num_vertices() << " v, " << a.report.components_after << "/"
+                      << b.report.components_after << " components, "
+                      << a.report.boundary_edges_after << "/" << b.report.boundary_edges_after
+                      << " boundary";
+    }
+  }
+  EXPECT_EQ(differing, 0u);
+}
