@@ -16,12 +16,10 @@ namespace meshbridge {
 
 namespace detail {
 
-namespace {
-
 // Polygons whose vertex set an earlier polygon has. Faces are bucketed by their smallest vertex
 // (counting sort, O(#F + #V)); each bucket is sorted by the faces' sorted vertex lists, so equal
 // sets end up side by side, and all but the earliest face of each run are duplicates.
-std::vector<Index> duplicate_faces(const Soup& soup) {
+std::vector<Index> duplicate_polygons(const Soup& soup) {
   const std::size_t num_faces = soup.num_faces();
   std::vector<Index> smallest(num_faces);
   std::vector<Index> bucket_begin(soup.num_vertices() + 1, 0);
@@ -62,8 +60,6 @@ std::vector<Index> duplicate_faces(const Soup& soup) {
   std::sort(duplicates.begin(), duplicates.end());
   return duplicates;
 }
-
-}  // namespace
 
 DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner_face,
                     const EdgeBridges& bridges) {
@@ -168,7 +164,14 @@ DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner
     if (newell_normal(input, f).sqrnorm() <= limit * limit)
       report.zero_area_faces.push_back(f);
   }
-  report.duplicate_faces = duplicate_faces(input);
+  // Duplicates among the polygons as built (a collapsed polygon can duplicate another), reported
+  // by input face.
+  for (Index f : duplicate_polygons(soup))
+    report.duplicate_faces.push_back(working.face_origin(f));
+  std::sort(report.duplicate_faces.begin(), report.duplicate_faces.end());
+  report.duplicate_faces.erase(
+      std::unique(report.duplicate_faces.begin(), report.duplicate_faces.end()),
+      report.duplicate_faces.end());
 
   report.watertight = soup.num_faces() > 0 && report.boundary_edges.empty() &&
                       report.singular_edges.empty() && report.num_singular_vertices() == 0 &&

@@ -11,6 +11,9 @@
 
 namespace meshbridge::detail {
 
+//! Polygons of `soup` whose vertex set an earlier polygon has (all but the first of each set).
+std::vector<Index> duplicate_polygons(const Soup& soup);
+
 DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner_face,
                     const EdgeBridges& bridges);
 

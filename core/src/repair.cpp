@@ -68,47 +68,51 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   validate_soup(soup);
   RepairResult result;
   RepairReport& report = result.report;
-  // Detection on the input; its grouping is reused below when nothing is removed first.
-  auto input_working = std::make_unique<detail::WorkingSoup>(soup);
-  std::vector<Index> corner_face = corner_faces(input_working->soup());
-  EdgeBridges bridges = group_sides(input_working->soup(), corner_face);
+  // The simple polygons actually built; their grouping is reused below when nothing is removed.
+  const detail::WorkingSoup simple(soup);
+  std::vector<Index> corner_face = corner_faces(simple.soup());
+  EdgeBridges bridges = group_sides(simple.soup(), corner_face);
   const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
   const bool detecting = options.detect_before_after || filtering;
   if (detecting)
-    report.before = detail::detect(*input_working, corner_face, bridges);
+    report.before = detail::detect(simple, corner_face, bridges);
   report.faces_in = soup.num_faces();
   report.vertices_in = soup.num_vertices();
 
-  // Cleanup removals first, so everything after works on what is kept.
-  std::vector<char> remove(soup.num_faces(), 0);
-  if (options.remove_duplicate_faces) {
-    for (Index f : report.before.duplicate_faces)
-      remove[f] = 1;
-  }
-  if (options.remove_degenerate_faces) {
-    for (Index f : report.before.degenerate_faces)
-      remove[f] = 1;
-  }
+  // Cleanup removals, on the simple polygons (a collapsed polygon can duplicate another one), so
+  // that a second repair finds nothing more to remove.
   FilteredSoup filtered;
+  std::unique_ptr<detail::WorkingSoup> filtered_working;
   if (filtering) {
+    const Soup& polygons = simple.soup();
+    std::vector<char> remove(polygons.num_faces(), 0);
     if (options.remove_duplicate_faces) {
-      report.duplicate_faces_removed = report.before.duplicate_faces.size();
+      for (Index f : detail::duplicate_polygons(polygons)) {
+        remove[f] = 1;
+        ++report.duplicate_faces_removed;
+      }
     }
-    for (Index f : report.before.degenerate_faces) {
-      // A degenerate duplicate counts once, as a duplicate.
-      const bool already = options.remove_duplicate_faces &&
-                           std::binary_search(report.before.duplicate_faces.begin(),
-                                              report.before.duplicate_faces.end(), f);
-      report.degenerate_faces_removed += (options.remove_degenerate_faces && !already) ? 1 : 0;
+    if (options.remove_degenerate_faces) {
+      std::vector<char> degenerate(soup.num_faces(), 0);
+      for (Index f : report.before.degenerate_faces)
+        degenerate[f] = 1;
+      for (Index f = 0; f < polygons.num_faces(); ++f) {
+        if (degenerate[simple.face_origin(f)] && !remove[f]) {
+          remove[f] = 1;
+          ++report.degenerate_faces_removed;
+        }
+      }
     }
-    filtered = without_faces(soup, remove);
+    filtered = without_faces(polygons, remove);
+    for (Index& f : filtered.face_origin)
+      f = simple.face_origin(f);
+    for (Index& c : filtered.corner_origin)
+      c = simple.corner_origin(c);
+    filtered_working = std::make_unique<detail::WorkingSoup>(filtered.soup);  // already simple
+    corner_face = corner_faces(filtered_working->soup());
+    bridges = group_sides(filtered_working->soup(), corner_face);
   }
-  if (filtering) {
-    input_working = std::make_unique<detail::WorkingSoup>(filtered.soup);
-    corner_face = corner_faces(input_working->soup());
-    bridges = group_sides(input_working->soup(), corner_face);
-  }
-  const detail::WorkingSoup& working = *input_working;
+  const detail::WorkingSoup& working = filtering ? *filtered_working : simple;
   detail::PipelineOptions pipeline_options;
   pipeline_options.pairing = options.pairing;
   pipeline_options.orient = options.orient;
@@ -130,9 +134,12 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   }
 
   report.faces_out = mesh.soup.num_faces();
-  report.faces_set_aside = working.excluded_faces().size();
-  report.faces_split = working.faces_split();
-  report.faces_added_by_split = working.faces_added_by_split();
+  // With remove_degenerate_faces, degenerate polygons left with < 3 corners count as removed.
+  report.faces_set_aside = options.remove_degenerate_faces ? 0 : simple.excluded_faces().size();
+  if (options.remove_degenerate_faces)
+    report.degenerate_faces_removed += simple.excluded_faces().size();
+  report.faces_split = simple.faces_split();
+  report.faces_added_by_split = simple.faces_added_by_split();
   report.vertices_out = mesh.soup.num_vertices();
   report.vertices_split = pipeline.vertices_split;
   report.sides_cut = pipeline.sides_cut;
@@ -144,7 +151,7 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   report.nonorientable_components = pipeline.nonorientable_components;
   // The output is the input itself when nothing was split, flipped, removed or rewritten: its
   // detection is then the input's. Otherwise detect again, independently of the pipeline.
-  const bool unchanged = !filtering && working.is_identity() && report.vertices_split == 0 &&
+  const bool unchanged = !filtering && simple.is_identity() && report.vertices_split == 0 &&
                          report.faces_flipped == 0 && report.isolated_vertices_removed == 0;
   if (detecting)
     report.after = unchanged ? report.before : detect_defects(mesh.soup);

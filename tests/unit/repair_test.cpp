@@ -267,3 +267,23 @@ TEST(Repair, without_detection_the_mesh_and_the_repair_counts_are_the_same) {
   EXPECT_EQ(fast.report.components_after, 0u);
   EXPECT_EQ(full.report.components_after, 24u);
 }
+
+TEST(Repair, a_collapsed_polygon_that_duplicates_another_is_removed_once) {
+  // Found by fuzz_repair: 0 1 2 3 2 0 collapses to the triangle 0 1 2, which face 1 repeats.
+  Soup soup;
+  for (const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)})
+    soup.add_vertex(p);
+  soup.add_polygon({0, 1, 2, 3, 2, 0});
+  soup.add_polygon({1, 2, 0});
+  RepairOptions options;
+  options.stitch = false;
+  options.remove_duplicate_faces = true;
+  options.remove_isolated_vertices = true;
+  const RepairResult once = repair(soup, options);
+  EXPECT_EQ(once.report.before.duplicate_faces, std::vector<Index>{1});
+  EXPECT_EQ(once.report.duplicate_faces_removed, 1u);
+  EXPECT_EQ(once.report.faces_out, 1u);
+  const RepairResult twice = repair(once.mesh.soup, options);
+  EXPECT_EQ(twice.mesh.soup.corner_vertices, once.mesh.soup.corner_vertices);
+  EXPECT_EQ(twice.report.duplicate_faces_removed, 0u);
+}
