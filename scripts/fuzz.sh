@@ -57,6 +57,7 @@ printf '%-12s %12s %8s %10s  %s\n' target executions exec/s corpus findings
 for target in "${targets[@]}"; do
   corpus="$build/corpus/$target"
   findings="$build/findings/$target"
+  rm -rf "$findings"  # findings of this run only; the corpus keeps growing across runs
   mkdir -p "$corpus" "$findings"
   inputs=("$corpus" "tests/fuzz/corpus/$target")
   options=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024
