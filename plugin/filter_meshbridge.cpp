@@ -3,6 +3,7 @@
 
 #include "filter_actions.h"
 #include "filter_catalog.h"
+#include "meshlab_document_host.h"
 
 #include <exception>
 #include <string>
@@ -15,22 +16,6 @@ mbm::FilterId filter_id(MeshFilterInterface::FilterIDType filter) {
   return filter == FilterMeshBridgePlugin::FP_REPAIR_SINGULAR_DEFECTS ? mbm::FilterId::repair
                                                                       : mbm::FilterId::detect;
 }
-
-//! The 2020.09 document seen by the shared detect filter.
-class DetectHost2020 final : public mbm::DetectHost {
- public:
-  explicit DetectHost2020(MeshDocument& md) : md_(md), mesh_(*md.mm()) {}
-  void enable_face_colour() override { mesh_.updateDataMask(MeshModel::MM_FACECOLOR); }
-  CMeshO& add_defect_layer(const std::string& label) override {
-    MeshModel* layer = md_.addNewMesh("", QString::fromStdString(label), false);
-    layer->updateDataMask(MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTQUALITY);
-    return layer->cm;
-  }
-
- private:
-  MeshDocument& md_;
-  MeshModel& mesh_;
-};
 
 }  // namespace
 
@@ -130,7 +115,7 @@ bool FilterMeshBridgePlugin::applyFilter(QAction* action, MeshDocument& md,
 
 void FilterMeshBridgePlugin::detect(MeshDocument& md, const RichParameterList& params) {
   MeshModel& m = *md.mm();
-  DetectHost2020 host(md);
+  mbm::MeshDocumentHost host(md);
   const mbm::DetectOutcome out = mbm::detect_singular_defects(m.cm, m.label().toStdString(),
                                                               mbm::detect_options(params), host);
   Log(out.log);

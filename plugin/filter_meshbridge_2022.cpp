@@ -3,6 +3,7 @@
 
 #include "filter_actions.h"
 #include "filter_catalog.h"
+#include "meshlab_document_host.h"
 
 #include <exception>
 #include <string>
@@ -15,22 +16,6 @@ mbm::FilterId filter_id(MeshLabPlugin::ActionIDType filter) {
   return filter == FilterMeshBridgePlugin::FP_REPAIR_SINGULAR_DEFECTS ? mbm::FilterId::repair
                                                                       : mbm::FilterId::detect;
 }
-
-//! The MeshLab >= 2022 document seen by the shared detect filter.
-class DetectHost2022 final : public mbm::DetectHost {
- public:
-  explicit DetectHost2022(MeshDocument& md) : md_(md), mesh_(*md.mm()) {}
-  void enable_face_colour() override { mesh_.updateDataMask(MeshModel::MM_FACECOLOR); }
-  CMeshO& add_defect_layer(const std::string& label) override {
-    MeshModel* layer = md_.addNewMesh("", QString::fromStdString(label), false);
-    layer->updateDataMask(MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTQUALITY);
-    return layer->cm;
-  }
-
- private:
-  MeshDocument& md_;
-  MeshModel& mesh_;
-};
 
 //! The counts as pymeshlab converts them: int (or bool for flags) QVariants.
 std::map<std::string, QVariant> result_map(const std::vector<mbm::FilterCount>& counts) {
@@ -132,7 +117,7 @@ std::map<std::string, QVariant> FilterMeshBridgePlugin::applyFilter(const QActio
   try {
     switch (ID(action)) {
       case FP_DETECT_SINGULAR_DEFECTS: {
-        DetectHost2022 host(md);
+        mbm::MeshDocumentHost host(md);
         const mbm::DetectOutcome out =
             mbm::detect_singular_defects(m.cm, label, mbm::detect_options(params), host);
         log(out.log);
