@@ -69,35 +69,14 @@ struct MethodSpec {
   Method run;
 };
 
-//! OpenMesh's stock build, the loop of build_stock() (ImporterT: add_face, and on refusal the
-//! face again on copied vertices) without its statistics pass, so the baseline is not slowed.
+//! OpenMesh's stock build (ImporterT: add_face, and on refusal the face again on copied
+//! vertices) without build_stock()'s statistics pass, so the baseline is not slowed.
 void stock_build_method(const Soup& soup, Clock& clock, Outcome& outcome) {
-  PolyMesh mesh;
-  std::size_t detached = 0, lost = 0;
-  {
-    const bool was_enabled = omerr().is_enabled();
-    omerr().disable();
-    OpenMesh::IO::ImporterT<PolyMesh> importer(mesh);
-    importer.reserve(static_cast<unsigned>(soup.num_vertices()),
-                     static_cast<unsigned>(soup.num_corners() / 2),
-                     static_cast<unsigned>(soup.num_faces()));
-    for (const Point& p : soup.positions)
-      importer.add_vertex(p);
-    OpenMesh::IO::BaseImporter::VHandles handles;
-    for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-      handles.clear();
-      for (Index v : soup.polygon(f))
-        handles.emplace_back(static_cast<int>(v));
-      const std::size_t vertices_before = mesh.n_vertices();
-      const OpenMesh::FaceHandle fh = importer.add_face(handles);
-      if (!fh.is_valid())
-        ++lost;
-      else if (mesh.n_vertices() != vertices_before)
-        ++detached;
-    }
-    if (was_enabled)
-      omerr().enable();
-  }
+  StockBuildOptions options;
+  options.count_boundary_and_components = false;
+  const StockBuild stock = build_stock(soup, options);
+  const PolyMesh& mesh = stock.mesh;
+  const std::size_t detached = stock.report.faces_detached, lost = stock.report.faces_lost;
   clock.stop();
   add_note(outcome, "%zu faces detached on copied vertices, %zu lost", detached, lost);
   if (wants_evaluation(outcome))

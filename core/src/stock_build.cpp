@@ -13,7 +13,7 @@
 
 namespace meshbridge {
 
-StockBuild build_stock(const Soup& soup) {
+StockBuild build_stock(const Soup& soup, const StockBuildOptions& options) {
   validate_soup(soup);
   StockBuild build;
   StockBuildReport& report = build.report;
@@ -44,6 +44,8 @@ StockBuild build_stock(const Soup& soup) {
   }
   report.vertices_created = mesh.n_vertices();
   report.faces_kept = mesh.n_faces();
+  if (!options.count_boundary_and_components)
+    return build;
   detail::UnionFind components(mesh.n_faces());
   for (auto e : mesh.edges()) {
     if (mesh.is_boundary(e)) {

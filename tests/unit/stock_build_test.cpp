@@ -31,3 +31,15 @@ TEST(StockBuild, clean_input_is_kept_whole) {
   EXPECT_EQ(stock.report.boundary_edges, 0u);
   EXPECT_EQ(stock.report.components, 1u);
 }
+
+TEST(StockBuild, without_statistics_the_build_is_the_same) {
+  const Soup soup = models::two_cubes_sharing_edge();
+  StockBuildOptions options;
+  options.count_boundary_and_components = false;
+  const StockBuild lean = build_stock(soup, options);
+  EXPECT_EQ(lean.report.vertices_created, 38u);
+  EXPECT_EQ(lean.report.faces_detached, 8u);
+  EXPECT_EQ(lean.report.boundary_edges, 0u);  // not counted
+  EXPECT_EQ(lean.report.components, 0u);
+  EXPECT_EQ(lean.mesh.n_edges(), build_stock(soup).mesh.n_edges());
+}

@@ -28,11 +28,17 @@ struct StockBuild {
   StockBuildReport report;
 };
 
+struct StockBuildOptions {
+  //! Count boundary edges and components of the result (one pass over its edges). Off: both
+  //! stay 0, and the call is exactly OpenMesh's import loop (what benchmarks time).
+  bool count_boundary_and_components = true;
+};
+
 //! Feeds the soup to OpenMesh's ImporterT (the class its file readers use): add_face, and on
 //! refusal the face again on duplicated vertices; polygons with a repeated vertex are dropped.
 //! OpenMesh's error stream is muted while it runs.
 //! \pre `soup` passes validate_soup() \throw InvalidSoupError naming the offending element
-StockBuild build_stock(const Soup& soup);
+StockBuild build_stock(const Soup& soup, const StockBuildOptions& options = {});
 
 std::string to_text(const StockBuildReport& report);
 std::string to_json(const StockBuildReport& report);
