@@ -25,14 +25,8 @@ scripts="$SOURCE_DIR/resources/scripts"
 check_mlx="$SOURCE_DIR/tests/meshlab/check_manifold.mlx"
 
 mode=${1:?mode}; shift
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-pass() { echo "ok:   $*"; }
-# value KEY FILE: the value of KEY=... in a key=value file (empty if missing)
-value() { sed -n "s/^$1=//p" "$2" | tail -n1; }
-expect_eq() {  # expect_eq WHAT ACTUAL EXPECTED
-  if [ "$2" = "$3" ]; then pass "$1 = $2"; else fail "$1 = '$2', expected '$3'"; fi
-}
+# fail, pass, value, expect_eq, input_off, check_expectations
+source "$(dirname "${BASH_SOURCE[0]}")/check_helpers.sh"
 # server LOG ARGS...: runs meshlabserver, its stdout (the filter log) into LOG; returns its status
 server() {
   local log=$1; shift
@@ -52,18 +46,6 @@ if [ "$mode" != root ]; then
   cd "$dir"
 fi
 
-input_off() {  # converts MODEL to OFF (Debian's meshlabserver aborts on any OBJ input)
-  [ -f "$model" ] || { echo "no model $model"; exit 1; }
-  "$MLCHECK" to-off "$model" in.off
-}
-
-check_expectations() {  # check_expectations REPORT k=v...
-  local report=$1; shift
-  local kv
-  for kv in "$@"; do
-    expect_eq "${kv%%=*}" "$(value "${kv%%=*}" "$report")" "${kv#*=}"
-  done
-}
 
 case "$mode" in
   root)

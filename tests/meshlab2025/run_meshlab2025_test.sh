@@ -32,20 +32,14 @@ checks=(filter get_topological_measures
         filter compute_selection_by_non_manifold_per_vertex)
 
 mode=${1:?mode}; shift
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-pass() { echo "ok:   $*"; }
-# value KEY FILE: the value of KEY=... in a key=value file (empty if missing)
-value() { sed -n "s/^$1=//p" "$2" | tail -n1; }
+# fail, pass, value, expect_eq, input_off, check_expectations
+source "$(dirname "${BASH_SOURCE[0]}")/../meshlab/check_helpers.sh"
 # result FILTER KEY LOG: the value of KEY in the result map of the last FILTER step in LOG
 result() {
   awk -v f="$1" -v k="$2" '
     /^filter / { current = $2 }
     current == f && index($0, "result: " k "=") == 1 { v = substr($0, length("result: " k "=") + 1) }
     END { print v }' "$3"
-}
-expect_eq() {  # expect_eq WHAT ACTUAL EXPECTED
-  if [ "$2" = "$3" ]; then pass "$1 = $2"; else fail "$1 = '$2', expected '$3'"; fi
 }
 # run LOG STEP...: the runner with MeshLab's IO, cleaning, selection and measuring plugins and
 # ours; stdout (steps, MeshLab's log, result maps) into LOG, stderr into LOG.stderr
@@ -64,18 +58,6 @@ dir="$WORK/$mode.$name"
 rm -rf "$dir"
 mkdir -p "$dir"
 cd "$dir"
-
-input_off() {  # MODEL as OFF, the input the 2020.09 tests give meshlabserver
-  [ -f "$model" ] || { echo "no model $model"; exit 1; }
-  "$MLCHECK" to-off "$model" in.off
-}
-check_expectations() {  # check_expectations REPORT k=v...
-  local report=$1; shift
-  local kv
-  for kv in "$@"; do
-    expect_eq "${kv%%=*}" "$(value "${kv%%=*}" "$report")" "${kv#*=}"
-  done
-}
 
 case "$mode" in
   version)
