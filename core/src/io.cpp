@@ -36,12 +36,24 @@ class SoupImporter : public BaseImporter {
  public:
   //! \param file_size bounds what reserve() believes: no header makes it reserve more than a
   //! file of this size can hold.
-  SoupImporter(Soup& soup, std::uintmax_t file_size) : soup_(soup), file_size_(file_size) {}
+  //! The reader may add at most file_size / 2 + 16 vertices and file_size + 16 faces: every
+  //! format spends at least 2 bytes on a vertex ("v\n", three int8 coordinates) and 1 on a face
+  //! (a binary PLY corner count). More means the reader loops on a header count with nothing
+  //! behind it (e.g. a PLY vertex element without properties): add_vertex and add_face then
+  //! throw ReadError instead of letting the soup grow to gigabytes.
+  SoupImporter(Soup& soup, const std::string& path, std::uintmax_t file_size)
+      : soup_(soup),
+        path_(path),
+        file_size_(file_size),
+        max_vertices_(file_size / 2 + 16),
+        max_faces_(file_size + 16) {}
 
   OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override {
     return add_vertex(OpenMesh::Vec3d(p[0], p[1], p[2]));
   }
   OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d& p) override {
+    if (soup_.num_vertices() >= max_vertices_)
+      throw_fabricated("vertices", max_vertices_);
     return OpenMesh::VertexHandle(static_cast<int>(soup_.add_vertex(p)));
   }
   OpenMesh::VertexHandle add_vertex() override { return add_vertex(OpenMesh::Vec3d(0, 0, 0)); }
@@ -50,6 +62,8 @@ class SoupImporter : public BaseImporter {
     return OpenMesh::HalfedgeHandle();
   }
   OpenMesh::FaceHandle add_face(const VHandles& indices) override {
+    if (soup_.num_faces() >= max_faces_)
+      throw_fabricated("faces", max_faces_);
     for (const auto& vh : indices) {
       if (vh.idx() < 0) {
         bad_index_ = "face " + std::to_string(soup_.num_faces()) + " refers to vertex index " +
@@ -118,8 +132,17 @@ class SoupImporter : public BaseImporter {
   const std::string& bad_index() const { return bad_index_; }
 
  private:
+  [[noreturn]] void throw_fabricated(const char* what, std::uintmax_t limit) const {
+    throw ReadError(path_ + ": OpenMesh's reader produced more than " + std::to_string(limit) +
+                    " " + what + ", more than a file of " + std::to_string(file_size_) +
+                    " bytes can hold (a header count with no data behind it)");
+  }
+
   Soup& soup_;
+  std::string path_;
   std::uintmax_t file_size_ = 0;
+  std::uintmax_t max_vertices_ = 0;
+  std::uintmax_t max_faces_ = 0;
   std::size_t edges_ = 0;
   std::string bad_index_;
 };
@@ -143,14 +166,20 @@ std::string lower_extension(const std::string& path) {
 class CapturedOpenMeshErrors {
  public:
   CapturedOpenMeshErrors()
-      : previous_(std::cerr.rdbuf(captured_.rdbuf())), log_was_enabled_(omlog().is_enabled()) {
+      : previous_(std::cerr.rdbuf(captured_.rdbuf())),
+        log_was_enabled_(omlog().is_enabled()),
+        errors_were_enabled_(omerr().is_enabled()) {
     omlog().disable();
   }
+  // Restores both streams: a reader that disables omerr() for a while does not re-enable it when
+  // the importer throws through it.
   ~CapturedOpenMeshErrors() {
     omerr().flush();
     std::cerr.rdbuf(previous_);
     if (log_was_enabled_)
       omlog().enable();
+    if (errors_were_enabled_)
+      omerr().enable();
   }
   CapturedOpenMeshErrors(const CapturedOpenMeshErrors&) = delete;
   CapturedOpenMeshErrors& operator=(const CapturedOpenMeshErrors&) = delete;
@@ -170,6 +199,7 @@ class CapturedOpenMeshErrors {
   std::ostringstream captured_;  // declared first: constructed before std::cerr points at it
   std::streambuf* previous_;
   bool log_was_enabled_;
+  bool errors_were_enabled_;
 };
 
 // Counts what the file itself declares, without OpenMesh: OBJ records, OFF and ASCII/binary PLY
@@ -582,9 +612,14 @@ std::uint32_t read_unsigned(const unsigned char* b, std::size_t size, bool big_e
 std::size_t check_ply(const std::string& path, std::uintmax_t size) {
   std::ifstream in(path, std::ios::binary);
   const PlyHeader h = ply_header(in, path);
-  if (!h.readable || h.dimension != 3)
+  if (!h.readable)
     return 0;  // OpenMesh refuses it itself
   const std::string where = path + ": ";
+  if (h.dimension != 3) {
+    // OpenMesh's ASCII reader refuses this, its binary reader reads on and makes up vertices.
+    throw ReadError(where + "the PLY vertex element has " + std::to_string(h.dimension) +
+                    " coordinate properties (x, y, z), not 3");
+  }
   const auto what = [&](const PlyElement& e, unsigned int i) {
     return "PLY " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count);
   };
@@ -893,7 +928,7 @@ Soup read_soup(const std::string& path, ReadInfo* info) {
     obj_text.str(obj_without_material_libraries(path));
 
   Soup soup;
-  SoupImporter importer(soup, size);
+  SoupImporter importer(soup, path, size);
   OpenMesh::IO::Options options;
   bool ok = false;
   std::string reader_message;

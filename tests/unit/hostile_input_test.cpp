@@ -525,7 +525,7 @@ TEST_F(HostileFile, ply_header_without_end_or_with_unknown_format) {
                           "ply\nformat ascii 1.0\nelement vertex 3\nproperty quaternion x\n"
                           "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
                           "0\n1\n2\n3 0 1 2\n",
-                          "Only vertex dimension 3 is supported");
+                          "the PLY vertex element has 0 coordinate properties (x, y, z), not 3");
   expect_error<ReadError>("float_indices.ply",
                           "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
                           "property float y\nproperty float z\nelement face 1\n"
@@ -538,6 +538,24 @@ TEST_F(HostileFile, ply_header_without_end_or_with_unknown_format) {
                           "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
                           "element 'junk' declares 4000000000 items without any property");
+}
+
+// Fuzz finding (fuzz_read, CI run of 2026-11-22): OpenMesh's binary PLY reader does not check the
+// vertex dimension, so a vertex element without properties made it add 10^8 vertices out of no
+// bytes at all (a 1.5 GiB allocation). Both encodings now get the same clear error.
+TEST_F(HostileFile, ply_vertex_element_without_coordinates) {
+  expect_error<ReadError>("no_properties_binary.ply",
+                          "ply\nformat binary_little_endian 1.0\nelement vertex 100000000\n"
+                          "end_header\n",
+                          "the PLY vertex element has 0 coordinate properties (x, y, z), not 3");
+  expect_error<ReadError>("no_properties_ascii.ply",
+                          "ply\nformat ascii 1.0\nelement vertex 100000000\nelement face 0\n"
+                          "end_header\n",
+                          "the PLY vertex element has 0 coordinate properties (x, y, z), not 3");
+  expect_error<ReadError>("only_x_binary.ply",
+                          "ply\nformat binary_big_endian 1.0\nelement vertex 2000000000\n"
+                          "property float x\nend_header\n",
+                          "the PLY vertex element has 1 coordinate properties (x, y, z), not 3");
 }
 
 TEST_F(HostileFile, binary_stl_reads_a_tetrahedron_welded) {
