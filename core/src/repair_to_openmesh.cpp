@@ -17,10 +17,18 @@ namespace {
 
 // Builds `soup` into `mesh` as it is; false at the first polygon OpenMesh refuses or that repeats
 // a vertex, or if the result has a non-manifold vertex or an inward closed component.
+//
+// Everything beyond the stock build's add_vertex / add_face runs in linear passes (no vertex
+// circulation): components are joined through the polygons' vertices (in a mesh whose vertices
+// are manifold, vertex-connected is edge-connected), each polygon's volume term is added at its
+// first vertex, and a vertex with more than one outgoing boundary halfedge is non-manifold
+// (OpenMesh's is_manifold counts the same halfedges, through a circulation).
 bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
   mesh.reserve(soup.num_vertices(), soup.num_corners() / 2 + soup.num_vertices(), soup.num_faces());
   for (const Point& p : soup.positions)
     mesh.add_vertex(p);
+  detail::UnionFind components(soup.num_vertices());
+  std::vector<double> volume(soup.num_vertices(), 0.0), magnitude(soup.num_vertices(), 0.0);
   std::vector<OpenMesh::VertexHandle> handles;
   {
     detail::MutedOpenMeshErrors muted;
@@ -33,43 +41,42 @@ bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
         handles.emplace_back(static_cast<int>(v));
       if (!mesh.add_face(handles).is_valid())
         return false;
+      const Point& p0 = soup.positions[polygon[0]];
+      double term_sum = 0.0, magnitude_sum = 0.0;
+      for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+        const double term = OpenMesh::dot(
+            p0, OpenMesh::cross(soup.positions[polygon[i]], soup.positions[polygon[i + 1]]));
+        term_sum += term;
+        magnitude_sum += std::abs(term);
+      }
+      volume[polygon[0]] += term_sum;
+      magnitude[polygon[0]] += magnitude_sum;
+      for (std::size_t i = 1; i < polygon.size(); ++i)
+        components.unite(polygon[0], polygon[i]);
     }
   }
-  for (auto v : mesh.vertices()) {
-    if (!mesh.is_manifold(v))
-      return false;
+  std::vector<char> open(soup.num_vertices(), 0);  // 1 boundary halfedge out; 2: non-manifold
+  for (auto h : mesh.halfedges()) {
+    if (mesh.is_boundary(h)) {
+      char& count = open[mesh.from_vertex_handle(h).idx()];
+      if (count != 0)
+        return false;
+      count = 1;
+    }
   }
   // Closed components must not have negative volume (beyond rounding, as repair judges it).
-  detail::UnionFind components(mesh.n_faces());
-  std::vector<char> open(mesh.n_faces(), 0);
-  for (auto e : mesh.edges()) {
-    const auto h0 = mesh.halfedge_handle(e, 0);
-    const auto h1 = mesh.halfedge_handle(e, 1);
-    const auto f0 = mesh.face_handle(h0);
-    const auto f1 = mesh.face_handle(h1);
-    if (f0.is_valid() && f1.is_valid()) {
-      components.unite(static_cast<Index>(f0.idx()), static_cast<Index>(f1.idx()));
-    } else {
-      open[(f0.is_valid() ? f0 : f1).idx()] = 1;
+  std::vector<char> component_open(soup.num_vertices(), 0);
+  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
+    const Index root = components.find(static_cast<Index>(v));
+    component_open[root] |= open[v];
+    if (root != v) {
+      volume[root] += volume[v];
+      magnitude[root] += magnitude[v];
     }
   }
-  std::vector<double> volume(mesh.n_faces(), 0.0), magnitude(mesh.n_faces(), 0.0);
-  std::vector<char> component_open(mesh.n_faces(), 0);
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const Index r = components.find(static_cast<Index>(f));
-    component_open[r] |= open[f];
-    const PolygonView p = soup.polygon(f);
-    const Point& p0 = soup.positions[p[0]];
-    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-      const double term =
-          OpenMesh::dot(p0, OpenMesh::cross(soup.positions[p[i]], soup.positions[p[i + 1]]));
-      volume[r] += term;
-      magnitude[r] += std::abs(term);
-    }
-  }
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    if (components.find(static_cast<Index>(f)) == f && !component_open[f] &&
-        volume[f] < -1e-9 * magnitude[f])
+  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
+    if (components.find(static_cast<Index>(v)) == v && !component_open[v] &&
+        volume[v] < -1e-9 * magnitude[v])
       return false;
   }
   return true;

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 using namespace meshbridge;
 
 namespace {
@@ -87,4 +90,59 @@ TEST(RepairToOpenMesh, with_reports_the_full_repair_runs) {
   EXPECT_FALSE(r.fast_path);
   EXPECT_TRUE(r.report.after.watertight);
   EXPECT_EQ(r.mesh.n_faces(), 80u);
+}
+
+// Two closed solids on one vertex: in no face order may the fast path accept the pinch (its
+// linear checks count boundary halfedges; OpenMesh refuses the face that would close the second
+// fan around the shared vertex).
+TEST(RepairToOpenMesh, pinched_solids_never_take_the_fast_path_in_any_face_order) {
+  const Soup hourglass = models::hourglass();
+  std::vector<std::size_t> order(hourglass.num_faces());
+  for (std::size_t f = 0; f < order.size(); ++f)
+    order[f] = f;
+  std::size_t orders = 0;
+  do {
+    Soup soup;
+    soup.positions = hourglass.positions;
+    for (std::size_t f : order)
+      soup.add_polygon(hourglass.polygon(f));
+    const OpenMeshRepair r = repair_to_openmesh(soup, lean());
+    ASSERT_FALSE(r.fast_path) << "order " << orders;
+    ASSERT_EQ(r.mesh.n_vertices(), 8u);
+    ++orders;
+  } while (std::next_permutation(order.begin(), order.end()));
+  EXPECT_EQ(orders, 40320u);
+}
+
+// Components are judged one by one: an inward closed sphere next to an outward one (and an open
+// patch) sends the soup to the full repair, which flips exactly the inward one.
+TEST(RepairToOpenMesh, one_inward_component_among_others_is_flipped) {
+  const Soup sphere = models::icosphere(1);
+  Soup soup;
+  const auto append = [&](const Soup& part, double shift, bool inward, std::size_t faces) {
+    const Index base = static_cast<Index>(soup.num_vertices());
+    for (const Point& p : part.positions)
+      soup.add_vertex(p + Point(shift, 0, 0));
+    for (std::size_t f = 0; f < faces; ++f) {
+      std::vector<Index> polygon;
+      for (Index v : part.polygon(f))
+        polygon.push_back(base + v);
+      if (inward)
+        std::reverse(polygon.begin(), polygon.end());
+      soup.add_polygon(polygon);
+    }
+  };
+  append(sphere, 0, false, sphere.num_faces());
+  append(sphere, 5, true, sphere.num_faces());
+  append(sphere, 10, true, 20);  // open: its orientation is kept
+  const OpenMeshRepair r = repair_to_openmesh(soup, lean());
+  EXPECT_FALSE(r.fast_path);
+  EXPECT_EQ(r.report.faces_flipped, 80u);
+  expect_same_as_reference(soup, r);
+
+  Soup outward;  // the same without the inward sphere is clean
+  std::swap(soup, outward);
+  append(sphere, 0, false, sphere.num_faces());
+  append(sphere, 10, true, 20);
+  EXPECT_TRUE(repair_to_openmesh(soup, lean()).fast_path);
 }
