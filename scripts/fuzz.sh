@@ -7,6 +7,14 @@
 # a larger SECONDS, e.g. `bash scripts/fuzz.sh 3600`. Installs clang if it is missing.
 # Usage: bash scripts/fuzz.sh [SECONDS] [TARGET...]   (targets: fuzz_repair fuzz_read)
 #   FUZZ_EXTRA_FLAGS="-fno-sanitize=..." adds compiler flags, e.g. to get past a known finding.
+#   FUZZ_RUNS=N makes the run reproducible (what scripts/test.sh, i.e. CI, does): N executions per
+#   target from seed FUZZ_SEED (default 1), starting from the committed corpus and the seeds only
+#   (a fresh working corpus in build/fuzz/repro/), with no time limit. The same commit then gives
+#   the same inputs on every machine: CI cannot fail on a finding a local run of the same command
+#   did not show. New bugs are hunted by the timed, randomly seeded campaigns. Address space
+#   randomisation is turned off for these runs (setarch -R; libstdc++ takes address-dependent
+#   branches, which changes coverage); where the kernel refuses that, the run says it is not
+#   reproducible and goes on.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -15,9 +23,14 @@ seconds="${1:-60}"
 shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_repair fuzz_read)
-case "$seconds" in
-  '' | *[!0-9]*) echo "fuzz.sh: SECONDS must be a whole number, got '$seconds'" >&2; exit 2 ;;
-esac
+runs="${FUZZ_RUNS:-}"
+seed="${FUZZ_SEED:-1}"
+for number in "$seconds" "$runs" "$seed"; do
+  case "$number" in
+    *[!0-9]*) echo "fuzz.sh: SECONDS, FUZZ_RUNS and FUZZ_SEED are whole numbers, got '$number'" >&2; exit 2 ;;
+  esac
+done
+[ -n "$seconds" ] || seconds=60
 jobs="$(nproc 2>/dev/null || echo 2)"
 
 # Debian bookworm: clang 14 with libFuzzer and the sanitizer runtimes.
@@ -52,22 +65,37 @@ done
 
 export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
+launcher=()
+if [ -n "$runs" ]; then
+  if setarch "$(uname -m)" -R true 2>/dev/null; then
+    launcher=(setarch "$(uname -m)" -R)
+  else
+    echo "fuzz.sh: cannot turn off address space randomisation here: this run is not reproducible" >&2
+  fi
+fi
 status=0
 printf '%-12s %12s %8s %10s  %s\n' target executions exec/s corpus findings
 for target in "${targets[@]}"; do
-  corpus="$build/corpus/$target"
   findings="$build/findings/$target"
-  rm -rf "$findings"  # findings of this run only; the corpus keeps growing across runs
+  rm -rf "$findings"  # findings of this run only
+  options=(-timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 -max_len=65536
+    -print_final_stats=1 -artifact_prefix="$findings/")
+  if [ -n "$runs" ]; then
+    corpus="$build/repro/$target"  # reproducible: starts empty every time
+    rm -rf "$corpus"
+    options+=(-runs="$runs" -seed="$seed" -reload=0)
+  else
+    corpus="$build/corpus/$target"  # campaigns: keeps growing across runs
+    options+=(-max_total_time="$seconds")
+  fi
   mkdir -p "$corpus" "$findings"
   inputs=("$corpus" "tests/fuzz/corpus/$target")
-  options=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024
-    -max_len=65536 -print_final_stats=1 -artifact_prefix="$findings/")
   if [ "$target" = fuzz_read ]; then
     inputs+=("$seeds")
     options+=(-dict=tests/fuzz/fuzz_read.dict)
   fi
   log="$build/$target.log"
-  "$build/$target" "${options[@]}" "${inputs[@]}" >"$log" 2>&1 || true
+  "${launcher[@]}" "$build/$target" "${options[@]}" "${inputs[@]}" >"$log" 2>&1 || true
   executions="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -n 1)"
   speed="$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -n 1)"
   found=$(find "$findings" -type f \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' \

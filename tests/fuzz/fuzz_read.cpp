@@ -18,9 +18,13 @@
 
 namespace {
 
-std::string scratch_dir() {
-  const char* shm = "/dev/shm";
-  return access(shm, W_OK) == 0 ? shm : "/tmp";
+// The same path length on every machine and for every process (the pid zero-padded): the path
+// appears in error messages, and a reproducible run (scripts/fuzz.sh with FUZZ_RUNS) needs the
+// same coverage, so the same inputs, wherever it runs.
+std::string scratch_base() {
+  char pid[16];
+  std::snprintf(pid, sizeof pid, "%010ld", static_cast<long>(::getpid()));
+  return std::string("/tmp/meshbridge_fuzz_read_") + pid;
 }
 
 }  // namespace
@@ -30,8 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0)
     return 0;
   static const char* const kExtensions[] = {"obj", "off", "ply", "stl", "OBJ", "Off", "PLY", "STL"};
-  static const std::string kBase =
-      scratch_dir() + "/meshbridge_fuzz_read_" + std::to_string(::getpid());
+  static const std::string kBase = scratch_base();
   const std::string path = kBase + "." + kExtensions[data[0] % 8];
   {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
