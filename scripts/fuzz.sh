@@ -84,6 +84,7 @@ for target in "${targets[@]}"; do
     corpus="$build/repro/$target"  # reproducible: starts empty every time
     rm -rf "$corpus"
     options+=(-runs="$runs" -seed="$seed" -reload=0)
+    export MESHBRIDGE_FUZZ_SCRATCH_ID="repro_$target"  # fuzz_read's file names: no pid
   else
     corpus="$build/corpus/$target"  # campaigns: keeps growing across runs
     options+=(-max_total_time="$seconds")

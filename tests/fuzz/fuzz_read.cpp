@@ -13,18 +13,20 @@
 #include <unistd.h>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 
 namespace {
 
-// The same path length on every machine and for every process (the pid zero-padded): the path
-// appears in error messages, and a reproducible run (scripts/fuzz.sh with FUZZ_RUNS) needs the
-// same coverage, so the same inputs, wherever it runs.
+// Where each input is written. The path reaches libFuzzer's table of compared bytes (through the
+// intercepted memcmp/strcmp of the readers), so a reproducible run (scripts/fuzz.sh with
+// FUZZ_RUNS sets MESHBRIDGE_FUZZ_SCRATCH_ID) uses a fixed name; otherwise the pid keeps parallel
+// jobs apart.
 std::string scratch_base() {
-  char pid[16];
-  std::snprintf(pid, sizeof pid, "%010ld", static_cast<long>(::getpid()));
-  return std::string("/tmp/meshbridge_fuzz_read_") + pid;
+  const char* id = std::getenv("MESHBRIDGE_FUZZ_SCRATCH_ID");
+  return std::string("/tmp/meshbridge_fuzz_read_") +
+         (id != nullptr && *id != '\0' ? std::string(id) : std::to_string(::getpid()));
 }
 
 }  // namespace
