@@ -18,5 +18,7 @@ int check_command(const std::vector<std::string>& args);
 int compare_command(const std::vector<std::string>& args);
 int repair_command(const std::vector<std::string>& args);
 int batch_command(const std::vector<std::string>& args);
+//! Draws the defects with Qt on the "offscreen" platform and writes a PNG (cli/defect_snapshot.h).
+int snapshot_command(const std::vector<std::string>& args);
 
 }  // namespace meshbridge::cli

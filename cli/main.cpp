@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// meshbridge: check, compare and repair non-manifold polygon meshes.
+// meshbridge: check, compare, repair and picture non-manifold polygon meshes.
 
 #include "arguments.h"
 #include "commands.h"
@@ -30,6 +30,11 @@ const char* kUsage =
     "                                  repair every mesh below INDIR into OUTDIR (same relative\n"
     "                                  paths), progress on stderr, a summary table on stdout;\n"
     "                                  exit 0 = all repaired, 2 = some failed\n"
+    "  snapshot FILE OUT.png [--size N] [--view iso|x|y|z]\n"
+    "                                  PNG picture of the defects (drawn with Qt, no display\n"
+    "                                  needed): edges grey, boundary green, singular edges and\n"
+    "                                  vertices red; N pixels square (default 800), view\n"
+    "                                  iso (default) or along an axis; exit codes as check\n"
     "\n"
     "formats: OBJ, OFF, PLY, STL (read and written through OpenMesh)\n";
 
@@ -53,6 +58,8 @@ int main(int argc, char** argv) {
       return repair_command(args);
     if (command == "batch")
       return batch_command(args);
+    if (command == "snapshot")
+      return snapshot_command(args);
     std::cerr << "meshbridge: unknown command '" << command << "' (try meshbridge --help)\n";
     return kError;
   } catch (const std::bad_alloc&) {

@@ -41,5 +41,10 @@ echo
 echo "== meshbridge compare $model (OpenMesh's stock loader vs the bridged build)"
 "$tool" compare "$model"
 echo
-echo "wrote $out/$name.defects.obj (defect layer), $out/$name.repaired.ply (repaired mesh)"
+echo "== meshbridge snapshot: the defects as a picture, before and after repair"
+"$tool" snapshot "$model" "$out/$name.defects.png" || [ $? -eq 1 ]
+"$tool" snapshot "$out/$name.repaired.ply" "$out/$name.repaired.png" || [ $? -eq 1 ]
+echo
+echo "wrote $out/$name.defects.obj (defect layer), $out/$name.repaired.ply (repaired mesh),"
+echo "$out/$name.defects.png and $out/$name.repaired.png (pictures)"
 echo "and the meshlabserver logs $out/$name.detect.log, $out/$name.repair.log"

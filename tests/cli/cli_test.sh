@@ -26,6 +26,18 @@ expect_in() {  # expect_in FILE TEXT
 json_field() {  # json_field FILE KEY -> first number after "KEY":
   grep -o "\"$2\":[0-9-]*" "$1" | head -1 | cut -d: -f2
 }
+is_png() {  # is_png FILE: starts with the 8-byte PNG signature
+  [ "$(od -An -tx1 -N8 "$1" 2>/dev/null | tr -d ' \n')" = 89504e470d0a1a0a ]
+}
+png_size() {  # png_size FILE -> "WIDTHxHEIGHT" from the IHDR chunk (big-endian, bytes 16..23)
+  local b
+  read -ra b <<<"$(od -An -tu1 -j16 -N8 "$1")"
+  echo "$(((b[0] << 24) | (b[1] << 16) | (b[2] << 8) | b[3]))x$(((b[4] << 24) | (b[5] << 16) |
+    (b[6] << 8) | b[7]))"
+}
+pixels() {  # pixels FILE COLOUR -> N from "COLOUR pixels N" in a snapshot's output line
+  grep -o "$2 pixels [0-9]*" "$1" | head -1 | cut -d' ' -f3
+}
 
 case "$case_name" in
 check_exit_codes)
@@ -161,6 +173,66 @@ batch)
   expect_in "$work/out" '"file":"broken.obj"'
   expect_in "$work/out" 'out of range'
   [ ! -s "$work/err" ] || fail "--quiet printed progress"
+  ;;
+snapshot)
+  expect_exit 1 "$mb" snapshot "$models/twocubes.obj" "$work/twocubes.png"
+  expect_in "$work/out" "1 singular edges, 2 singular vertices, 0 boundary edges"
+  is_png "$work/twocubes.png" || fail "twocubes.png is not a PNG"
+  [ "$(png_size "$work/twocubes.png")" = 800x800 ] || fail "size: $(png_size "$work/twocubes.png")"
+  [ "$(pixels "$work/out" red)" -gt 0 ] 2>/dev/null || fail "no red pixels: $(cat "$work/out")"
+  [ "$(pixels "$work/out" green)" = 0 ] || fail "green pixels on a model without boundary"
+  # Nothing on stderr: Qt's chatter is filtered (only "no legend" where no font renders).
+  [ -z "$(grep -v "has no legend" "$work/err")" ] || fail "stderr not empty: $(cat "$work/err")"
+  expect_exit 0 "$mb" snapshot "$models/icosphere.obj" "$work/ico.png" --size 321 --view x
+  is_png "$work/ico.png" || fail "ico.png is not a PNG"
+  [ "$(png_size "$work/ico.png")" = 321x321 ] || fail "--size 321: $(png_size "$work/ico.png")"
+  [ "$(pixels "$work/out" red)" = 0 ] || fail "red pixels for icosphere: $(cat "$work/out")"
+  [ "$(pixels "$work/out" green)" = 0 ] || fail "green pixels for icosphere"
+  expect_exit 1 "$mb" snapshot "$models/cube_with_hole.obj" "$work/hole.png" --view=z --size=64
+  [ "$(png_size "$work/hole.png")" = 64x64 ] || fail "--size=64: $(png_size "$work/hole.png")"
+  [ "$(pixels "$work/out" green)" -gt 0 ] 2>/dev/null || fail "no green pixels for cube_with_hole"
+  [ "$(pixels "$work/out" red)" = 0 ] || fail "red pixels for cube_with_hole"
+  for view in iso x y z; do
+    expect_exit 1 "$mb" snapshot "$models/prisms24.obj" "$work/p-$view.png" --view "$view" --size 99
+    [ "$(pixels "$work/out" red)" -gt 0 ] 2>/dev/null || fail "no red pixels in prisms24, $view"
+  done
+  ls -a "$work" | grep -q tmp && fail "temporary file left behind"
+  expect_exit 0 "$mb" --help
+  expect_in "$work/out" "snapshot FILE OUT.png"
+  ;;
+snapshot_errors)
+  expect_exit 2 "$mb" snapshot "$work/missing.obj" "$work/a.png"
+  expect_in "$work/err" "cannot open"
+  [ ! -e "$work/a.png" ] || fail "missing input left an output"
+  printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' >"$work/range.obj"
+  echo "previous content" >"$work/keep.png"
+  expect_exit 2 "$mb" snapshot "$work/range.obj" "$work/keep.png"
+  expect_in "$work/err" "out of range"
+  [ "$(cat "$work/keep.png")" = "previous content" ] || fail "output overwritten on bad input"
+  expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/nodir/a.png"
+  expect_in "$work/err" "nodir/a.png: cannot write the PNG"
+  [ ! -e "$work/nodir" ] || fail "created a directory"
+  mkdir "$work/locked"
+  chmod 555 "$work/locked"
+  if ! touch "$work/locked/probe" 2>/dev/null; then  # root writes anyway: nothing to test then
+    expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/locked/a.png"
+    expect_in "$work/err" "cannot write the PNG"
+    [ -z "$(ls -A "$work/locked")" ] || fail "file left in the locked directory: $(ls -A "$work/locked")"
+  fi
+  chmod 755 "$work/locked"
+  mkdir "$work/dir.png"  # the PNG is written, but cannot replace a directory: the temporary goes
+  expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/dir.png"
+  expect_in "$work/err" "cannot move the written file into place"
+  ls -a "$work" | grep -q tmp && fail "temporary file left behind: $(ls -a "$work")"
+  expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --size 8
+  expect_in "$work/err" "--size expects a whole number of pixels from 16 to 8192"
+  expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --view top
+  expect_in "$work/err" "--view must be iso, x, y or z"
+  expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.jpg"
+  expect_in "$work/err" "name it .png"
+  expect_exit 2 "$mb" snapshot "$models/twocubes.obj"
+  expect_in "$work/err" "usage: meshbridge snapshot FILE OUT.png"
+  [ ! -e "$work/a.png" ] && [ ! -e "$work/a.jpg" ] || fail "an output was written on a usage error"
   ;;
 *)
   echo "unknown case $case_name" >&2

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// A picture of a soup's defects, drawn with Qt into an image (no window, no display). The CLI's
+// `snapshot` command writes it as PNG; the core knows nothing of it.
+
+#include "meshbridge/defect_report.h"
+#include "meshbridge/soup.h"
+
+#include <QImage>
+
+#include <cstddef>
+#include <string>
+
+namespace meshbridge::cli {
+
+//! The direction the orthographic camera looks from (always toward the model's centre).
+enum class SnapshotView {
+  //! from about +(1,1,1): azimuth 45 deg (from +x toward +y), elevation 30 deg, +z up; a little
+  //! below the exact isometric (35.26 deg), where a box's back corner hides behind its front one
+  iso,
+  x,  //!< from +x, +z up, +y to the right
+  y,  //!< from +y, +z up, -x to the right
+  z   //!< from +z (top view), +y up, +x to the right
+};
+
+//! Parses "iso", "x", "y" or "z". \throw std::invalid_argument naming the text otherwise
+SnapshotView parse_snapshot_view(const std::string& text);
+//! "iso", "x", "y" or "z".
+const char* to_string(SnapshotView view);
+
+//! Options of draw_defect_snapshot, every default documented.
+struct SnapshotOptions {
+  //! Width and height of the square image in pixels (default 800); kMinSize .. kMaxSize.
+  int size = 800;
+  static constexpr int kMinSize = 16;
+  static constexpr int kMaxSize = 8192;
+  SnapshotView view = SnapshotView::iso;  //!< default iso
+  //! Blank border on every side, as a fraction of `size` (default 0.05).
+  double margin = 0.05;
+  //! Draw the legend line of counts at the top (default true). It is left out anyway when no
+  //! QGuiApplication exists or text does not render (no font found offscreen).
+  bool legend = true;
+};
+
+//! What draw_defect_snapshot made.
+struct DefectSnapshot {
+  QImage image;               //!< size x size, QImage::Format_ARGB32, opaque
+  bool legend_drawn = false;  //!< false if the legend was off or text does not render
+  //! Pixels within kColorTolerance per channel of the red (220,0,0) / green (0,160,0) the
+  //! defects are drawn in, counted in the finished image (the antialiased rims of the lines,
+  //! blended with what lies under them, mostly fall outside and are not counted).
+  std::size_t red_pixels = 0;
+  std::size_t green_pixels = 0;
+  static constexpr int kColorTolerance = 48;
+};
+
+//! Draws `soup` as an orthographic wireframe with its defects from `report` on top, antialiased,
+//! on white, in layers: every polygon side light grey (192,192,192) 1 px, then boundary edges
+//! green (0,160,0) 2 px, then singular edges red (220,0,0) 3 px, then singular vertices
+//! (singular-edge endpoints and pinch vertices) as red dots 7 px across; widths grow with `size`
+//! above 800. No hidden lines are removed, so defects at the back show through. The vertices
+//! used by polygons are fitted into the image inside the margin (below the legend, if one is
+//! drawn), keeping the aspect ratio; a model that projects to a single point is drawn at the
+//! centre. The legend is one black line, "N singular edges, M singular vertices, K boundary
+//! edges"; text needs a QGuiApplication (the `snapshot` command makes one on the "offscreen"
+//! platform), so without one the legend is left out and the rest is drawn all the same.
+//! \pre `soup` passes validate_soup(); `report` is detect_defects(soup); `options.size` in
+//! [kMinSize, kMaxSize]; `options.margin` in [0, 0.45]
+//! \throw InvalidSoupError from validate_soup()
+//! \throw std::invalid_argument naming the bad option, or a report vertex the soup lacks
+DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report,
+                                    const SnapshotOptions& options = {});
+
+}  // namespace meshbridge::cli
