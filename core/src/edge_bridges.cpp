@@ -20,31 +20,29 @@ EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face)
   const std::size_t num_vertices = soup.num_vertices();
   const auto& cv = soup.corner_vertices;
 
-  // Smaller and larger end of every side.
-  std::vector<Index> low(num_corners), high(num_corners);
-  for (std::size_t c = 0; c < num_corners; ++c) {
-    const Index a = cv[c];
-    const Index b = cv[soup.next_corner(static_cast<Index>(c), corner_face[c])];
-    low[c] = std::min(a, b);
-    high[c] = std::max(a, b);
-  }
-
-  // Counting sort of the sides by their smaller vertex.
+  // Counting sort of the sides by their smaller vertex; `high` keeps each side's larger vertex.
+  // Three arrays of one Index per side in all: `sorted` becomes the contenders and `high` is
+  // overwritten with each side's edge, becoming corner_edge (no copies).
+  std::vector<Index> high(num_corners);
   std::vector<Index> bucket_begin(num_vertices + 1, 0);
-  for (std::size_t c = 0; c < num_corners; ++c)
-    ++bucket_begin[low[c] + 1];
-  for (std::size_t v = 0; v < num_vertices; ++v)
-    bucket_begin[v + 1] += bucket_begin[v];
   std::vector<Index> sorted(num_corners);
   {
+    std::vector<Index> low(num_corners);
+    for (std::size_t c = 0; c < num_corners; ++c) {
+      const Index a = cv[c];
+      const Index b = cv[soup.next_corner(static_cast<Index>(c), corner_face[c])];
+      low[c] = std::min(a, b);
+      high[c] = std::max(a, b);
+      ++bucket_begin[low[c] + 1];
+    }
+    for (std::size_t v = 0; v < num_vertices; ++v)
+      bucket_begin[v + 1] += bucket_begin[v];
     std::vector<Index> fill(bucket_begin.begin(), bucket_begin.end() - 1);
     for (std::size_t c = 0; c < num_corners; ++c)
       sorted[fill[low[c]]++] = static_cast<Index>(c);
   }
 
   EdgeBridges bridges;
-  bridges.contenders.resize(num_corners);
-  bridges.corner_edge.resize(num_corners);
   bridges.begin.reserve(num_corners / 2 + 2);
   bridges.edge_v0.reserve(num_corners / 2 + 1);
   bridges.edge_v1.reserve(num_corners / 2 + 1);
@@ -54,7 +52,6 @@ EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face)
   const auto before = [&](Index a, Index b) {
     return high[a] < high[b] || (high[a] == high[b] && a < b);
   };
-  Index out = 0;
   for (std::size_t v = 0; v < num_vertices; ++v) {
     if (bucket_begin[v] == bucket_begin[v + 1])
       continue;
@@ -78,13 +75,14 @@ EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face)
       const Index edge = static_cast<Index>(bridges.edge_v0.size());
       bridges.edge_v0.push_back(static_cast<Index>(v));
       bridges.edge_v1.push_back(other);
-      for (; i < last && high[*i] == other; ++i) {
-        bridges.contenders[out++] = *i;
-        bridges.corner_edge[*i] = edge;
-      }
-      bridges.begin.push_back(out);
+      // Only later sides of this bucket are compared again: a side's entry can become its edge.
+      for (; i < last && high[*i] == other; ++i)
+        high[*i] = edge;
+      bridges.begin.push_back(static_cast<Index>(i - sorted.data()));
     }
   }
+  bridges.contenders = std::move(sorted);
+  bridges.corner_edge = std::move(high);
   return bridges;
 }
 
