@@ -215,6 +215,7 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
       flat.insert(flat.end(), scratch.begin(), scratch.end());
     order_begin[s + 1] = flat.size();
   }
+  normals = std::vector<Point>();  // only the angular orders needed them
   const auto order_of = [&](std::size_t s) {
     return ContenderRange{flat.data() + order_begin[s], flat.data() + order_begin[s + 1]};
   };

@@ -149,6 +149,9 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   report.sides_cut_to_stay_manifold = pipeline.sides_cut_to_stay_manifold;
   report.faces_detached = pipeline.faces_detached;
   report.nonorientable_components = pipeline.nonorientable_components;
+  // The pipeline's grouping and pairing (about 20 bytes per side) are not needed any more: free
+  // them before the second detection allocates its own.
+  pipeline = detail::PipelineResult();
   // The output is the input itself when nothing was split, flipped, removed or rewritten: its
   // detection is then the input's. Otherwise detect again, independently of the pipeline.
   const bool unchanged = !filtering && simple.is_identity() && report.vertices_split == 0 &&
