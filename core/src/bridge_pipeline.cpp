@@ -345,24 +345,18 @@ std::vector<Index> split_fans(const Soup& soup, const std::vector<Index>& corner
   vertex_origin.resize(num_vertices);
   for (std::size_t v = 0; v < num_vertices; ++v)
     vertex_origin[v] = static_cast<Index>(v);
+  // A fan's root is its first corner: fans are numbered in corner order, the first fan of each
+  // vertex keeps the vertex, the others get copies appended.
   std::vector<char> taken(num_vertices, 0);
-  std::vector<Index> root_vertex(num_corners, kNoIndex);
-  std::vector<Index> corner_vertex(num_corners);
-  for (Index c = 0; c < num_corners; ++c) {
-    const Index r = fans.find(c);
-    if (root_vertex[r] == kNoIndex) {
-      const Index v = cv[c];
-      if (!taken[v]) {
-        taken[v] = 1;
-        root_vertex[r] = v;
-      } else {
-        root_vertex[r] = static_cast<Index>(vertex_origin.size());
-        vertex_origin.push_back(v);
-      }
+  return std::move(fans).take_labels([&](Index root) {
+    const Index v = cv[root];
+    if (!taken[v]) {
+      taken[v] = 1;
+      return v;
     }
-    corner_vertex[c] = root_vertex[r];
-  }
-  return corner_vertex;
+    vertex_origin.push_back(v);
+    return static_cast<Index>(vertex_origin.size() - 1);
+  });
 }
 
 PipelineResult run_pipeline(const WorkingSoup& working, const PipelineOptions& options) {

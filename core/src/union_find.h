@@ -5,6 +5,7 @@
 
 #include "meshbridge/soup.h"
 
+#include <utility>
 #include <vector>
 
 namespace meshbridge::detail {
@@ -34,6 +35,18 @@ class UnionFind {
     return true;
   }
   std::size_t size() const { return parent_.size(); }
+
+  //! Consumes the sets: element x gets label_of_root(r) of its set's root r (the set's smallest
+  //! element), called once per set in increasing order of roots. One pass, no find(): a parent is
+  //! always smaller than its child, so it is labelled first.
+  template <class LabelOfRoot>
+  std::vector<Index> take_labels(LabelOfRoot label_of_root) && {
+    for (std::size_t x = 0; x < parent_.size(); ++x) {
+      const Index p = parent_[x];
+      parent_[x] = p == x ? label_of_root(static_cast<Index>(x)) : parent_[p];
+    }
+    return std::move(parent_);
+  }
 
  private:
   std::vector<Index> parent_;
