@@ -7,6 +7,7 @@
 #include "bridge_pipeline.h"
 #include "detection.h"
 #include "json_writer.h"
+#include "release_memory.h"
 #include "working_soup.h"
 
 #include <algorithm>
@@ -162,6 +163,7 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   report.components_after = report.after.num_components;
   report.boundary_edges_before = report.before.boundary_edges.size();
   report.boundary_edges_after = report.after.boundary_edges.size();
+  detail::release_free_memory();
   return result;
 }
 
