@@ -68,13 +68,19 @@ struct AngularContender {
   Index side;
 };
 
+// A contender in its edge's angular order, the angle dropped once sorted (half the memory).
+struct OrderedSide {
+  Index side;
+  bool along;
+};
+
 struct ContenderRange {
-  const AngularContender* first;
-  const AngularContender* last;
-  const AngularContender* begin() const { return first; }
-  const AngularContender* end() const { return last; }
+  const OrderedSide* first;
+  const OrderedSide* last;
+  const OrderedSide* begin() const { return first; }
+  const OrderedSide* end() const { return last; }
   std::size_t size() const { return static_cast<std::size_t>(last - first); }
-  const AngularContender& operator[](std::size_t i) const { return first[i]; }
+  const OrderedSide& operator[](std::size_t i) const { return first[i]; }
 };
 
 // Sorts the given sides of edge e by angle around its axis; false if the geometry is unusable.
@@ -146,22 +152,22 @@ bool angular_order(const Soup& soup, const EdgeBridges& bridges, std::size_t e,
 
 // The side of a contender face that looks into the wedge after it (counter-clockwise) and the
 // one that looks into the wedge before it. Face side ids: 2f front, 2f+1 back.
-Index ccw_face_side(const AngularContender& c, Index face) {
+Index ccw_face_side(const OrderedSide& c, Index face) {
   return 2 * face + (c.along ? 0 : 1);
 }
-Index cw_face_side(const AngularContender& c, Index face) {
+Index cw_face_side(const OrderedSide& c, Index face) {
   return 2 * face + (c.along ? 1 : 0);
 }
 
 // Pairs cyclic neighbours (in `cycle`) whose wedge lies behind both faces: the first runs against
 // the axis, the next along it.
-void pair_behind_neighbours(const std::vector<AngularContender>& cycle, std::vector<Index>& mate) {
+void pair_behind_neighbours(const std::vector<OrderedSide>& cycle, std::vector<Index>& mate) {
   const std::size_t m = cycle.size();
   if (m < 2)
     return;
   for (std::size_t t = 0; t < m; ++t) {
-    const AngularContender& a = cycle[t];
-    const AngularContender& b = cycle[(t + 1) % m];
+    const OrderedSide& a = cycle[t];
+    const OrderedSide& b = cycle[(t + 1) % m];
     if (!a.along && b.along && mate[a.side] == kNoIndex && mate[b.side] == kNoIndex) {
       pair(mate, a.side, b.side);
     }
@@ -202,7 +208,8 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
   std::vector<Point> normals(soup.num_faces());
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
     normals[f] = newell_normal(soup, f);
-  std::vector<AngularContender> flat, scratch;
+  std::vector<AngularContender> scratch;
+  std::vector<OrderedSide> flat;
   std::vector<std::size_t> order_begin(singular.size() + 1, 0);
   std::vector<char> usable(singular.size());
   for (std::size_t s = 0; s < singular.size(); ++s) {
@@ -212,7 +219,8 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
         bridges.contenders.data() + bridges.begin[e + 1],
         [&](Index side) { return normals[corner_face[side]]; }, scratch);
     if (usable[s])
-      flat.insert(flat.end(), scratch.begin(), scratch.end());
+      for (const AngularContender& c : scratch)
+        flat.push_back({c.side, c.along});
     order_begin[s + 1] = flat.size();
   }
   normals = std::vector<Point>();  // only the angular orders needed them
@@ -241,20 +249,20 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
       continue;
     const ContenderRange order = order_of(s);
     for (std::size_t t = 0; t < order.size(); ++t) {
-      const AngularContender& a = order[t];
-      const AngularContender& b = order[(t + 1) % order.size()];
+      const OrderedSide& a = order[t];
+      const OrderedSide& b = order[(t + 1) % order.size()];
       regions.unite(ccw_face_side(a, corner_face[a.side]), cw_face_side(b, corner_face[b.side]));
     }
   }
 
-  std::vector<AngularContender> cycle;
+  std::vector<OrderedSide> cycle;
   for (std::size_t s = 0; s < singular.size(); ++s) {
     if (!usable[s]) {
       combinatorial(singular[s]);
       continue;
     }
     const ContenderRange order = order_of(s);
-    const auto is_sheet = [&](const AngularContender& c) {
+    const auto is_sheet = [&](const OrderedSide& c) {
       const Index f = corner_face[c.side];
       return regions.find(2 * f) == regions.find(2 * f + 1);
     };
