@@ -19,16 +19,15 @@ namespace {
 // a vertex, or if the result has a non-manifold vertex or an inward closed component.
 //
 // Everything beyond the stock build's add_vertex / add_face runs in linear passes (no vertex
-// circulation): components are joined through the polygons' vertices (in a mesh whose vertices
-// are manifold, vertex-connected is edge-connected), each polygon's volume term is added at its
-// first vertex, and a vertex with more than one outgoing boundary halfedge is non-manifold
-// (OpenMesh's is_manifold counts the same halfedges, through a circulation).
+// circulation) and needs one Index per vertex: components are joined through the polygons'
+// vertices (in a mesh whose vertices are manifold, vertex-connected is edge-connected), a vertex
+// with more than one outgoing boundary halfedge is non-manifold (OpenMesh's is_manifold counts
+// the same halfedges, through a circulation), and volumes are summed per component.
 bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
   mesh.reserve(soup.num_vertices(), soup.num_corners() / 2 + soup.num_vertices(), soup.num_faces());
   for (const Point& p : soup.positions)
     mesh.add_vertex(p);
   detail::UnionFind components(soup.num_vertices());
-  std::vector<double> volume(soup.num_vertices(), 0.0), magnitude(soup.num_vertices(), 0.0);
   std::vector<OpenMesh::VertexHandle> handles;
   {
     detail::MutedOpenMeshErrors muted;
@@ -41,42 +40,42 @@ bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
         handles.emplace_back(static_cast<int>(v));
       if (!mesh.add_face(handles).is_valid())
         return false;
-      const Point& p0 = soup.positions[polygon[0]];
-      double term_sum = 0.0, magnitude_sum = 0.0;
-      for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-        const double term = OpenMesh::dot(
-            p0, OpenMesh::cross(soup.positions[polygon[i]], soup.positions[polygon[i + 1]]));
-        term_sum += term;
-        magnitude_sum += std::abs(term);
-      }
-      volume[polygon[0]] += term_sum;
-      magnitude[polygon[0]] += magnitude_sum;
       for (std::size_t i = 1; i < polygon.size(); ++i)
         components.unite(polygon[0], polygon[i]);
     }
   }
-  std::vector<char> open(soup.num_vertices(), 0);  // 1 boundary halfedge out; 2: non-manifold
+  std::size_t num_components = 0;
+  const std::vector<Index> component = std::move(components).take_labels([&](Index) {
+    return static_cast<Index>(num_components++);
+  });
+  std::vector<char> open(num_components, 0);
+  std::vector<char> boundary_out(soup.num_vertices(), 0);
   for (auto h : mesh.halfedges()) {
     if (mesh.is_boundary(h)) {
-      char& count = open[mesh.from_vertex_handle(h).idx()];
-      if (count != 0)
-        return false;
-      count = 1;
+      const int v = mesh.from_vertex_handle(h).idx();
+      if (boundary_out[v])
+        return false;  // a second gap at v
+      boundary_out[v] = 1;
+      open[component[v]] = 1;
     }
   }
   // Closed components must not have negative volume (beyond rounding, as repair judges it).
-  std::vector<char> component_open(soup.num_vertices(), 0);
-  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-    const Index root = components.find(static_cast<Index>(v));
-    component_open[root] |= open[v];
-    if (root != v) {
-      volume[root] += volume[v];
-      magnitude[root] += magnitude[v];
+  std::vector<double> volume(num_components, 0.0), magnitude(num_components, 0.0);
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const PolygonView polygon = soup.polygon(f);
+    const Index c = component[polygon[0]];
+    if (open[c])
+      continue;
+    const Point& p0 = soup.positions[polygon[0]];
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+      const double term = OpenMesh::dot(
+          p0, OpenMesh::cross(soup.positions[polygon[i]], soup.positions[polygon[i + 1]]));
+      volume[c] += term;
+      magnitude[c] += std::abs(term);
     }
   }
-  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-    if (components.find(static_cast<Index>(v)) == v && !component_open[v] &&
-        volume[v] < -1e-9 * magnitude[v])
+  for (std::size_t c = 0; c < num_components; ++c) {
+    if (!open[c] && volume[c] < -1e-9 * magnitude[c])
       return false;
   }
   return true;
