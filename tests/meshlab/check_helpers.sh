@@ -22,3 +22,11 @@ check_expectations() {  # check_expectations REPORT k=v...
     expect_eq "${kv%%=*}" "$(value "${kv%%=*}" "$report")" "${kv#*=}"
   done
 }
+expect_attributes_kept_and_manifold() {  # IN OUT: OUT has IN's attributes and no singular element
+  "$MLCHECK" same-attributes "$1" "$2" >same.txt || true
+  cat same.txt
+  expect_eq "attribute mismatches" "$(value mismatches same.txt)" 0
+  "$MLCHECK" report "$2" >output.txt
+  expect_eq "core: singular edges after" "$(value singular_edges output.txt)" 0
+  expect_eq "core: singular vertices after" "$(value singular_vertices output.txt)" 0
+}
