@@ -10,8 +10,9 @@
 #   FUZZ_RUNS=N makes the run reproducible (what scripts/test.sh, i.e. CI, does): N executions per
 #   target from seed FUZZ_SEED (default 1), starting from the committed corpus and the seeds only
 #   (a fresh working corpus in build/fuzz/repro/), with no time limit. The same commit then gives
-#   the same inputs on every machine: CI cannot fail on a finding a local run of the same command
-#   did not show. New bugs are hunted by the timed, randomly seeded campaigns. Address space
+#   the same inputs on every machine (fuzz_repair exactly; fuzz_read for at least its first 20000
+#   executions, then nearly), so CI runs what a local run of the same command runs. New bugs are
+#   hunted by the timed, randomly seeded campaigns. Address space
 #   randomisation is turned off for these runs (setarch -R; libstdc++ takes address-dependent
 #   branches, which changes coverage); where the kernel refuses that, the run says it is not
 #   reproducible and goes on.
