@@ -30,3 +30,9 @@ expect_attributes_kept_and_manifold() {  # IN OUT: OUT has IN's attributes and n
   expect_eq "core: singular edges after" "$(value singular_edges output.txt)" 0
   expect_eq "core: singular vertices after" "$(value singular_vertices output.txt)" 0
 }
+finish_checks() {  # DIR: exit 1 naming DIR if any check failed
+  if [ "$failures" -ne 0 ]; then
+    echo "$failures check(s) failed; files in $1"
+    exit 1
+  fi
+}

@@ -216,7 +216,4 @@ case "$mode" in
     echo "unknown mode $mode"; exit 2 ;;
 esac
 
-if [ "$failures" -ne 0 ]; then
-  echo "$failures check(s) failed; files in $dir"
-  exit 1
-fi
+finish_checks "$dir"

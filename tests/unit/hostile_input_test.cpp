@@ -728,14 +728,7 @@ TEST_F(HostileFile, valid_variants_of_every_format_still_read) {
 
 namespace {
 
-Soup triangle() {
-  Soup soup;
-  soup.add_vertex({0, 0, 0});
-  soup.add_vertex({1, 0, 0});
-  soup.add_vertex({0, 1, 0});
-  soup.add_polygon({0, 1, 2});
-  return soup;
-}
+using test_support::triangle;
 
 //! validate_soup, detect_defects and repair must all throw InvalidSoupError naming `expected`.
 void expect_invalid(const Soup& soup, const std::string& expected) {

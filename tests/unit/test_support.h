@@ -84,6 +84,16 @@ inline void expect_repair_invariants(const Soup& input, const RepairResult& resu
   EXPECT_TRUE(std::is_sorted(mesh.face_origin.begin(), mesh.face_origin.end()));
 }
 
+//! One triangle (0,0,0), (1,0,0), (0,1,0): the smallest valid soup, for tests that break it.
+inline Soup triangle() {
+  Soup soup;
+  soup.add_vertex({0, 0, 0});
+  soup.add_vertex({1, 0, 0});
+  soup.add_vertex({0, 1, 0});
+  soup.add_polygon({0, 1, 2});
+  return soup;
+}
+
 //! The same soup with faces shuffled and every polygon's start corner rotated (seeded).
 inline Soup shuffled(const Soup& soup, std::uint32_t seed) {
   std::mt19937 random(seed);

@@ -4,6 +4,8 @@
 #include "meshbridge/errors.h"
 #include "meshbridge/repair.h"
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,14 +16,7 @@ using namespace meshbridge;
 
 namespace {
 
-Soup triangle() {
-  Soup soup;
-  soup.add_vertex({0, 0, 0});
-  soup.add_vertex({1, 0, 0});
-  soup.add_vertex({0, 1, 0});
-  soup.add_polygon({0, 1, 2});
-  return soup;
-}
+using test_support::triangle;
 
 std::string error_of(const Soup& soup) {
   try {
