@@ -3,7 +3,7 @@
 
 #include "meshbridge/validate.h"
 
-#include "bridge_pipeline.h"
+#include "pipeline/run_pipeline.h"
 #include "working_soup.h"
 
 namespace meshbridge {
@@ -19,8 +19,8 @@ BridgedMesh build_bridged_mesh(const Soup& soup, const BridgedMeshOptions& optio
 
   BridgedMesh bridged;
   bridged.indexed = std::move(pipeline.mesh);
-  bridged.bridges = std::move(pipeline.bridges);
-  bridged.mate = std::move(pipeline.mate);
+  bridged.bridges = std::move(pipeline.grouped.bridges);
+  bridged.mate = std::move(pipeline.pairing.mate);
 
   const auto& origin = bridged.indexed.vertex_origin;
   bridged.copies_begin.assign(soup.num_vertices() + 1, 0);

@@ -3,10 +3,9 @@
 
 #include "meshbridge/validate.h"
 
-#include "bridge_pipeline.h"
-#include "contender_pairing.h"
 #include "detection.h"
-#include "orientation.h"
+#include "pipeline/fans.h"
+#include "pipeline/orientation.h"
 #include "union_find.h"
 
 #include <algorithm>
@@ -61,8 +60,9 @@ std::vector<Index> duplicate_polygons(const Soup& soup) {
   return duplicates;
 }
 
-DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner_face,
-                    const EdgeBridges& bridges) {
+DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped) {
+  const std::vector<Index>& corner_face = grouped.corner_face;
+  const EdgeBridges& bridges = grouped.bridges;
   const Soup& input = working.input();
   const Soup& soup = working.soup();
   DefectReport report;
@@ -114,8 +114,8 @@ DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner
   }
 
   // Vertices: isolated, on singular edges, pinched (more than one fan through 2-sided edges).
-  std::vector<Index> vertex_origin;
-  split_fans(soup, corner_face, manifold_mate, vertex_origin);
+  const std::vector<Index> vertex_origin =
+      split_fans(soup, corner_face, manifold_mate).vertex_origin;
   std::vector<char> pinched(soup.num_vertices(), 0);
   for (std::size_t i = soup.num_vertices(); i < vertex_origin.size(); ++i) {
     pinched[vertex_origin[i]] = 1;
@@ -184,9 +184,7 @@ DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner
 DefectReport detect_defects(const Soup& soup) {
   validate_soup(soup);
   const detail::WorkingSoup working(soup);
-  const std::vector<Index> corner_face = corner_faces(working.soup());
-  const EdgeBridges bridges = group_sides(working.soup(), corner_face);
-  return detail::detect(working, corner_face, bridges);
+  return detail::detect(working, detail::group_sides(working.soup()));
 }
 
 }  // namespace meshbridge

@@ -3,8 +3,8 @@
 // Detection on an already grouped working soup, shared by detect_defects() and repair().
 
 #include "meshbridge/defect_report.h"
-#include "meshbridge/edge_bridges.h"
 
+#include "pipeline/grouping.h"
 #include "working_soup.h"
 
 #include <vector>
@@ -14,7 +14,7 @@ namespace meshbridge::detail {
 //! Polygons of `soup` whose vertex set an earlier polygon has (all but the first of each set).
 std::vector<Index> duplicate_polygons(const Soup& soup);
 
-DefectReport detect(const WorkingSoup& working, const std::vector<Index>& corner_face,
-                    const EdgeBridges& bridges);
+//! Detection on `working`, whose sides are `grouped` (as from group_sides(working.soup())).
+DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped);
 
 }  // namespace meshbridge::detail

@@ -4,9 +4,9 @@
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/validate.h"
 
-#include "bridge_pipeline.h"
 #include "detection.h"
 #include "json_writer.h"
+#include "pipeline/run_pipeline.h"
 #include "release_memory.h"
 #include "working_soup.h"
 
@@ -71,12 +71,11 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   RepairReport& report = result.report;
   // The simple polygons actually built; their grouping is reused below when nothing is removed.
   const detail::WorkingSoup simple(soup);
-  std::vector<Index> corner_face = corner_faces(simple.soup());
-  EdgeBridges bridges = group_sides(simple.soup(), corner_face);
+  detail::GroupedSides grouped = detail::group_sides(simple.soup());
   const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
   const bool detecting = options.detect_before_after || filtering;
   if (detecting)
-    report.before = detail::detect(simple, corner_face, bridges);
+    report.before = detail::detect(simple, grouped);
   report.faces_in = soup.num_faces();
   report.vertices_in = soup.num_vertices();
 
@@ -110,8 +109,7 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
     for (Index& c : filtered.corner_origin)
       c = simple.corner_origin(c);
     filtered_working = std::make_unique<detail::WorkingSoup>(filtered.soup);  // already simple
-    corner_face = corner_faces(filtered_working->soup());
-    bridges = group_sides(filtered_working->soup(), corner_face);
+    grouped = detail::group_sides(filtered_working->soup());
   }
   const detail::WorkingSoup& working = filtering ? *filtered_working : simple;
   detail::PipelineOptions pipeline_options;
@@ -120,7 +118,7 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   pipeline_options.cut_nonorientable = options.cut_nonorientable;
   pipeline_options.stitch = options.stitch;
   detail::PipelineResult pipeline =
-      detail::run_pipeline(working, std::move(corner_face), std::move(bridges), pipeline_options);
+      detail::run_pipeline(working, std::move(grouped), pipeline_options);
 
   IndexedMesh& mesh = result.mesh;
   mesh = std::move(pipeline.mesh);
@@ -142,14 +140,14 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   report.faces_split = simple.faces_split();
   report.faces_added_by_split = simple.faces_added_by_split();
   report.vertices_out = mesh.soup.num_vertices();
-  report.vertices_split = pipeline.vertices_split;
-  report.sides_cut = pipeline.sides_cut;
-  report.sides_cut_for_orientation = pipeline.sides_cut_for_orientation;
-  report.sides_stitched = pipeline.sides_stitched;
-  report.faces_flipped = pipeline.faces_flipped;
-  report.sides_cut_to_stay_manifold = pipeline.sides_cut_to_stay_manifold;
-  report.faces_detached = pipeline.faces_detached;
-  report.nonorientable_components = pipeline.nonorientable_components;
+  report.vertices_split = pipeline.counts.vertices_split;
+  report.sides_cut = pipeline.counts.sides_cut;
+  report.sides_cut_for_orientation = pipeline.counts.sides_cut_for_orientation;
+  report.sides_stitched = pipeline.counts.sides_stitched;
+  report.faces_flipped = pipeline.counts.faces_flipped;
+  report.sides_cut_to_stay_manifold = pipeline.counts.sides_cut_to_stay_manifold;
+  report.faces_detached = pipeline.counts.faces_detached;
+  report.nonorientable_components = pipeline.counts.nonorientable_components;
   // The pipeline's grouping and pairing (about 20 bytes per side) are not needed any more: free
   // them before the second detection allocates its own.
   pipeline = detail::PipelineResult();

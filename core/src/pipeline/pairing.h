@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Pairing the contenders of every edge bridge (DESIGN section 4).
+// Stage 2, pairing: the contenders of every edge bridge in pairs (DESIGN section 4).
 
-#include "meshbridge/edge_bridges.h"
 #include "meshbridge/pairing.h"
-#include "meshbridge/soup.h"
+
+#include "pipeline/grouping.h"
 
 #include <vector>
 
@@ -32,20 +32,12 @@ namespace meshbridge::detail {
 //!
 //! Combinatorial policy: in corner order, each unpaired side takes the first later unpaired side
 //! that runs the other way.
-std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& corner_face,
-                                   const EdgeBridges& bridges, PairingPolicy policy);
-
-//! True if side c of `soup` runs from the smaller to the larger vertex of its edge.
-inline bool runs_along(const Soup& soup, const EdgeBridges& bridges, Index c) {
-  return soup.corner_vertices[c] == bridges.edge_v0[bridges.corner_edge[c]];
-}
+std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped,
+                                   PairingPolicy policy);
 
 //! Puts `sides` (sides of edge e) in the angular order of the geometric policy, starting after
 //! the widest gap; in corner order where the geometry is unusable.
-void sort_by_angle(const Soup& soup, const std::vector<Index>& corner_face,
-                   const EdgeBridges& bridges, std::size_t e, std::vector<Index>& sides);
-
-//! Newell normal (twice the vector area) of polygon f.
-Point newell_normal(const Soup& soup, std::size_t f);
+void sort_by_angle(const Soup& soup, const GroupedSides& grouped, std::size_t e,
+                   std::vector<Index>& sides);
 
 }  // namespace meshbridge::detail

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "contender_pairing.h"
+#include "pipeline/pairing.h"
 
 #include "union_find.h"
 
@@ -7,20 +7,6 @@
 #include <cmath>
 
 namespace meshbridge::detail {
-
-Point newell_normal(const Soup& soup, std::size_t f) {
-  const PolygonView polygon = soup.polygon(f);
-  Point n(0, 0, 0);
-  const std::size_t k = polygon.size();
-  for (std::size_t i = 0; i < k; ++i) {
-    const Point& p = soup.positions[polygon[i]];
-    const Point& q = soup.positions[polygon[(i + 1) % k]];
-    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-  }
-  return n;
-}
 
 namespace {
 
@@ -176,8 +162,10 @@ void pair_behind_neighbours(const std::vector<OrderedSide>& cycle, std::vector<I
 
 }  // namespace
 
-std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& corner_face,
-                                   const EdgeBridges& bridges, PairingPolicy policy) {
+std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped,
+                                   PairingPolicy policy) {
+  const std::vector<Index>& corner_face = grouped.corner_face;
+  const EdgeBridges& bridges = grouped.bridges;
   std::vector<Index> mate(soup.num_corners(), kNoIndex);
   std::vector<std::size_t> singular;
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
@@ -288,8 +276,10 @@ std::vector<Index> pair_contenders(const Soup& soup, const std::vector<Index>& c
   return mate;
 }
 
-void sort_by_angle(const Soup& soup, const std::vector<Index>& corner_face,
-                   const EdgeBridges& bridges, std::size_t e, std::vector<Index>& sides) {
+void sort_by_angle(const Soup& soup, const GroupedSides& grouped, std::size_t e,
+                   std::vector<Index>& sides) {
+  const std::vector<Index>& corner_face = grouped.corner_face;
+  const EdgeBridges& bridges = grouped.bridges;
   std::vector<AngularContender> order;
   const bool usable = angular_order(
       soup, bridges, e, sides.data(), sides.data() + sides.size(),

@@ -1,5 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "orientation.h"
+#include "pipeline/orientation.h"
+
+#include "union_find.h"
+
+#include <cmath>
 
 namespace meshbridge::detail {
 
@@ -93,6 +97,49 @@ OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>
     }
   }
   return counts;
+}
+
+void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing) {
+  const std::vector<Index>& corner_face = grouped.corner_face;
+  const std::vector<Index>& mate = pairing.mate;
+  std::vector<char>& flipped = pairing.flipped;
+  const std::size_t num_faces = soup.num_faces();
+  UnionFind components(num_faces);
+  for (Index c = 0; c < mate.size(); ++c) {
+    if (mate[c] != kNoIndex)
+      components.unite(corner_face[c], corner_face[mate[c]]);
+  }
+  std::vector<char> open(num_faces, 0);
+  std::vector<double> volume(num_faces, 0.0), magnitude(num_faces, 0.0);
+  std::vector<Index> faces(num_faces, 0), reversed(num_faces, 0);
+  for (Index f = 0; f < num_faces; ++f) {
+    const Index r = components.find(f);
+    ++faces[r];
+    reversed[r] += flipped[f];
+    const PolygonView polygon = soup.polygon(f);
+    double v = 0;
+    const Point& p0 = soup.positions[polygon[0]];
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+      const double term = OpenMesh::dot(
+          p0, OpenMesh::cross(soup.positions[polygon[i]], soup.positions[polygon[i + 1]]));
+      v += term;
+      magnitude[r] += std::abs(term);
+    }
+    volume[r] += flipped[f] ? -v : v;
+    for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
+      if (mate[c] == kNoIndex)
+        open[r] = 1;
+    }
+  }
+  std::vector<char> reverse(num_faces, 0);
+  for (Index r = 0; r < num_faces; ++r) {
+    if (faces[r] == 0)
+      continue;
+    const bool flat = std::abs(volume[r]) <= 1e-9 * magnitude[r];
+    reverse[r] = (open[r] || flat) ? (2 * reversed[r] > faces[r]) : (volume[r] < 0);
+  }
+  for (Index f = 0; f < num_faces; ++f)
+    flipped[f] ^= reverse[components.find(f)];
 }
 
 }  // namespace meshbridge::detail

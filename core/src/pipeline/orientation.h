@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Consistent orientation of the faces connected through paired sides.
+// Stage 3, orientation: faces connected through paired sides made consistent (before
+// stitching), then each component turned as a whole (after stitching).
 
 #include "meshbridge/soup.h"
+
+#include "pipeline/grouping.h"
+#include "pipeline/side_pairing.h"
 
 #include <vector>
 
@@ -27,5 +31,11 @@ std::size_t cut_inconsistent_pairs(const Soup& soup, std::vector<Index>& mate);
 
 //! True if some pair's sides run the same way (start at the same vertex).
 bool has_inconsistent_pair(const Soup& soup, const std::vector<Index>& mate);
+
+//! Reverses whole components (faces joined through `pairing.mate`): closed ones so that their
+//! signed volume is positive, open ones (and closed ones of no volume, such as two faces glued
+//! back to back) so that fewer of their faces end up reversed. "No volume": |volume| <= 1e-9
+//! times the sum of its terms' magnitudes, below which the sign is rounding noise.
+void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing);
 
 }  // namespace meshbridge::detail

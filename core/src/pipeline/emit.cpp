@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "pipeline/emit.h"
+
+namespace meshbridge::detail {
+
+IndexedMesh emit_mesh(const WorkingSoup& working, VertexSplit split,
+                      const std::vector<char>& flipped) {
+  const std::vector<Index>& corner_vertex = split.corner_vertex;
+  std::vector<Index>& vertex_origin = split.vertex_origin;
+  const Soup& soup = working.soup();
+  IndexedMesh mesh;
+  mesh.vertex_origin = std::move(vertex_origin);
+  mesh.soup.positions.resize(mesh.vertex_origin.size());
+  for (std::size_t v = 0; v < mesh.vertex_origin.size(); ++v) {
+    mesh.soup.positions[v] = soup.positions[mesh.vertex_origin[v]];
+  }
+  mesh.soup.corner_vertices.resize(soup.num_corners());
+  mesh.soup.face_begin = soup.face_begin;
+  mesh.corner_origin.resize(soup.num_corners());
+  mesh.face_origin.resize(soup.num_faces());
+  for (Index f = 0; f < soup.num_faces(); ++f) {
+    mesh.face_origin[f] = working.face_origin(f);
+    const Index first = soup.face_begin[f];
+    const Index last = soup.face_begin[f + 1];
+    for (Index c = first; c < last; ++c) {
+      // Reversal keeps the first corner: c0 c1 ... ck-1 -> c0 ck-1 ... c1.
+      const Index source = (flipped[f] && c != first) ? first + (last - c) : c;
+      mesh.soup.corner_vertices[c] = corner_vertex[source];
+      mesh.corner_origin[c] = working.corner_origin(source);
+    }
+  }
+  return mesh;
+}
+
+}  // namespace meshbridge::detail

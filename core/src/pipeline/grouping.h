@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Stage 1, grouping: every polygon side of the working soup filed under its vertex pair.
+// Detection uses this stage only (plus the fan and orientation labelling it shares).
+
+#include "meshbridge/edge_bridges.h"
+#include "meshbridge/soup.h"
+
+#include <vector>
+
+namespace meshbridge::detail {
+
+//! The sides of a soup grouped by vertex pair: what every later stage reads.
+struct GroupedSides {
+  std::vector<Index> corner_face;  //!< #C: face of each corner (and of the side it starts)
+  EdgeBridges bridges;             //!< the contenders of every vertex pair
+};
+
+//! Groups the sides of `soup` in O(#C). \pre `soup` passes validate_soup()
+GroupedSides group_sides(const Soup& soup);
+
+//! True if side c runs from the smaller to the larger vertex of its edge.
+inline bool runs_along(const Soup& soup, const EdgeBridges& bridges, Index c) {
+  return soup.corner_vertices[c] == bridges.edge_v0[bridges.corner_edge[c]];
+}
+
+//! Newell normal (twice the vector area) of polygon f.
+Point newell_normal(const Soup& soup, std::size_t f);
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The two-phase bridged construction shared by build_bridged_mesh() and repair(): (1) group the
+// sides, pair them, orient, stitch, split fans, keep output edges manifold; (2) emit the final
+// indexed mesh once. One stage per file in this folder; run_pipeline.cpp tells the story.
+
+#include "meshbridge/indexed_mesh.h"
+#include "meshbridge/pairing.h"
+
+#include "pipeline/grouping.h"
+#include "pipeline/side_pairing.h"
+#include "working_soup.h"
+
+#include <vector>
+
+namespace meshbridge::detail {
+
+struct PipelineOptions {
+  PairingPolicy pairing = PairingPolicy::geometric;
+  bool orient = true;
+  bool cut_nonorientable = false;
+  bool stitch = true;
+};
+
+//! What the pipeline did, counted in sides (polygon sides) or faces.
+struct PipelineCounts {
+  std::size_t sides_cut = 0;                   //!< singular-edge contenders pairing left unpaired
+  std::size_t sides_cut_for_orientation = 0;   //!< pairs cut because orientation conflicts
+  std::size_t sides_stitched = 0;              //!< net: stitched, implicitly stitched, unstitched
+  std::size_t faces_flipped = 0;               //!< faces reversed
+  std::size_t sides_cut_to_stay_manifold = 0;  //!< pairs cut so output edges stay manifold
+  std::size_t faces_detached = 0;              //!< faces cut loose (last resort)
+  std::size_t vertices_split = 0;              //!< vertex copies added
+  std::size_t nonorientable_components = 0;
+};
+
+struct PipelineResult {
+  GroupedSides grouped;  //!< over the working soup
+  SidePairing pairing;   //!< final pairing and flips of the working soup's sides and faces
+  IndexedMesh mesh;      //!< origins refer to the *input* soup
+  PipelineCounts counts;
+};
+
+//! Runs on `working` with its sides already grouped (as from group_sides(working.soup()));
+//! the grouping is moved into the result.
+PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
+                            const PipelineOptions& options);
+//! Same, grouping the sides itself.
+PipelineResult run_pipeline(const WorkingSoup& working, const PipelineOptions& options);
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The state the pipeline's stages hand on after grouping (see run_pipeline.h for the order).
+
+#include "meshbridge/soup.h"
+
+#include <vector>
+
+namespace meshbridge::detail {
+
+//! Which sides are glued to which, and which faces are reversed. Pairing fills `mate`;
+//! orientation fills `flipped` and may cut pairs; stitching glues more pairs (marking them
+//! `stitched`); making output edges manifold cuts some again.
+struct SidePairing {
+  std::vector<Index> mate;     //!< #C: side paired with side c, or kNoIndex (a boundary side)
+  std::vector<char> stitched;  //!< #C: 1 if c's pair was made by stitching, not by pairing
+  std::vector<char> flipped;   //!< #F: 1 if the face's corner order is to be reversed
+};
+
+//! Output vertices: one per fan of every input vertex.
+struct VertexSplit {
+  std::vector<Index> corner_vertex;  //!< #C: output vertex of each corner
+  std::vector<Index> vertex_origin;  //!< #V_out: input vertex of each output vertex
+};
+
+}  // namespace meshbridge::detail
