@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "filter_actions.h"
 
+#include "defect_tubes.h"
+
 #include "meshbridge/detect_defects.h"
 
 #include <vcg/complex/algorithms/update/bounding.h>
@@ -39,10 +41,68 @@ FilterCount count(const char* name, std::size_t value) {
   return {name, static_cast<long long>(value), false};
 }
 
+void clear_selection(CMeshO& mesh) {
+  vcg::tri::UpdateSelection<CMeshO>::FaceClear(mesh);
+  vcg::tri::UpdateSelection<CMeshO>::VertexClear(mesh);
+  refresh_selection_counts(mesh);
+}
+
 }  // namespace
 
+std::string defect_layer_label(const std::string& mesh_label) {
+  std::string name = mesh_label;
+  const std::size_t dot = name.find_last_of('.');
+  if (dot != std::string::npos && dot > 0) {
+    const std::string ext = name.substr(dot + 1);
+    const bool is_extension =
+        !ext.empty() && ext.size() <= 5 && ext.find_first_of(" /\\()") == std::string::npos;
+    if (is_extension)
+      name.erase(dot);
+  }
+  for (char& c : name) {
+    if (c == '.')
+      c = '_';
+  }
+  return name + " - defects";
+}
+
+std::vector<std::string> html_log_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::string line;
+  auto flush = [&] {
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\r'))
+      line.pop_back();
+    lines.push_back(line);
+    line.clear();
+  };
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        line += "&amp;";
+        break;
+      case '<':
+        line += "&lt;";
+        break;
+      case '>':
+        line += "&gt;";
+        break;
+      case '\n':
+        flush();
+        break;
+      default:
+        line += c;
+    }
+  }
+  if (!line.empty())
+    flush();
+  // MeshLab's log adds its own breaks: no empty entries at the end.
+  while (!lines.empty() && lines.back().empty())
+    lines.pop_back();
+  return lines;
+}
+
 DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
-                                      const DetectOptions& options, DetectHost& host) {
+                                      const DetectOptions& options, DocumentHost& host) {
   require_faces(mesh, label, "Detect Singular Defects");
   DetectOutcome out;
   CMeshSoup soup = soup_from_cmesh(mesh);
@@ -56,26 +116,28 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
     refresh_selection_counts(mesh);
 
   // The defect layer stays behind the current one, so the next filter of a script still works
-  // on the mesh itself.
-  const std::string layer_label = label + " defects";
-  CMeshO& layer = host.add_defect_layer(layer_label);
-  out.drawn = build_defect_layer(soup, out.report, layer);
+  // on the mesh itself; it replaces the layer a previous Detect of this mesh made.
+  out.label = defect_layer_label(label);
+  const bool tubes = options.layer_form == DefectLayerForm::tubes;
+  CMeshO& layer = host.add_defect_layer(out.label, tubes);
+  out.drawn = tubes ? build_defect_tubes(soup, out.report, layer)
+                    : build_defect_layer(soup, out.report, layer);
   layer.Tr = mesh.Tr;
   vcg::tri::UpdateBounding<CMeshO>::Box(layer);
   layer.svn = int(vcg::tri::UpdateSelection<CMeshO>::VertexCount(layer));
 
   out.log = "MeshBridge defects of '" + label + "':\n";
   out.log += trimmed(to_text(out.report));
-  out.log += "\nDefect layer '" + layer_label + "': " + std::to_string(out.drawn.singular_edges) +
-             " red (singular) edges, " + std::to_string(out.drawn.boundary_edges) +
-             " green (boundary) edges, " + std::to_string(out.drawn.singular_vertex_markers) +
-             " singular vertex markers";
   if (options.select_faces || options.colour_faces) {
     out.log += "\n" + std::string(options.select_faces ? "Selected " : "Coloured ") +
                std::to_string(out.selection.faces) + " faces at singular edges/vertices";
     if (options.select_faces)
       out.log += " and " + std::to_string(out.selection.vertices) + " singular vertices";
   }
+  out.log += "\nDefect layer '" + out.label + "': " + std::to_string(out.drawn.singular_edges) +
+             " red (singular) edges, " + std::to_string(out.drawn.boundary_edges) +
+             " green (boundary) edges, " + std::to_string(out.drawn.singular_vertex_markers) +
+             " singular vertex markers";
 
   const DefectReport& r = out.report;
   std::size_t contenders = 0;
@@ -112,7 +174,7 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
 }
 
 RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
-                                      const RepairFilterOptions& options) {
+                                      const RepairFilterOptions& options, DocumentHost& host) {
   require_faces(mesh, label, "Repair Singular Defects");
   WriteBackOptions write_options;
   write_options.keep_set_aside_faces = !options.core.remove_degenerate_faces;
@@ -146,6 +208,10 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
     vcg::tri::UpdateNormal<CMeshO>::PerVertexAngleWeighted(mesh);
   }
   refresh_selection_counts(mesh);
+  // The defects Detect showed are gone: its layer and its selection would only mislead.
+  out.defect_layers_removed = host.remove_layers(defect_layer_label(label));
+  if (out.defect_layers_removed != 0)
+    clear_selection(mesh);
 
   const WriteBackReport& w = out.written;
   out.log = "MeshBridge repair of '" + label + "':\n";
@@ -161,6 +227,17 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
   if (w.polygons_fanned != 0) {
     out.log += "\nTriangulated " + std::to_string(w.polygons_fanned) + " polygons (" +
                std::to_string(w.triangles_from_fans) + " extra triangles)";
+  }
+  if (out.defect_layers_removed != 0) {
+    out.log += "\nRemoved the defect layer '" + defect_layer_label(label) +
+               "' and cleared the selection Detect made (run Detect again to check the result)";
+  }
+  if (out.report.vertices_split != 0) {
+    out.log += "\nTo keep the repair, save as PLY, OBJ or OFF";
+    out.log += host.can_save_3mf() ? " (or 3MF)" : "";
+    out.log += ": they keep the " + std::to_string(out.report.vertices_split) +
+               " split vertices apart. STL stores no shared vertices, so loading an STL "
+               "re-welds them and the defects come back";
   }
 
   const RepairReport& r = out.report;

@@ -36,35 +36,66 @@ struct FilterCount {
 
 // ---- detect ----------------------------------------------------------------------------------
 
+//! How the defect layer shows the defects.
+enum class DefectLayerForm {
+  //! Triangles: a thin tube along each defect edge and a marker at each singular vertex, in
+  //! per-vertex and per-face colour (defect_tubes.h). MeshLab shows them in colour by default.
+  tubes,
+  //! The raw edges: an edge mesh, two vertices and one edge per defect edge, coloured per
+  //! vertex, plus one isolated marker vertex per singular vertex. For scripts; MeshLab draws
+  //! edges as thin lines in a user colour unless told otherwise.
+  edges,
+};
+
 //! Options of the detect filter.
 struct DetectOptions {
   //! Replace the face and vertex selection by the faces with a side on a singular edge or a
   //! corner at a pinch vertex, and by the singular vertices. Default: on.
   bool select_faces = true;
   //! Paint those faces: red at singular edges, orange at pinch vertices (per-face colour is
-  //! turned on through DetectHost::enable_face_colour()). Default: off.
+  //! turned on through DocumentHost::enable_face_colour()). Default: off.
   bool colour_faces = false;
+  //! What the defect layer holds. Default: tubes.
+  DefectLayerForm layer_form = DefectLayerForm::tubes;
 };
 
-//! What the detect filter needs from MeshLab's document; each adapter implements it with its
-//! API's MeshModel/MeshDocument calls.
-class DetectHost {
+//! What the filters need from MeshLab's document; each adapter implements it with its API's
+//! MeshModel/MeshDocument calls.
+class DocumentHost {
  public:
-  virtual ~DetectHost() = default;
+  virtual ~DocumentHost() = default;
   //! Turns on per-face colour of the current layer (called only with `colour_faces`).
   virtual void enable_face_colour() = 0;
-  //! Appends a layer labelled `label`, with per-vertex colour and quality, behind the current
-  //! one (the current layer stays current); returns its mesh. Called once, after detection
-  //! succeeded.
-  virtual CMeshO& add_defect_layer(const std::string& label) = 0;
+  //! Removes every layer labelled `label` other than the current one, then appends a layer
+  //! labelled `label`, with per-vertex colour and quality (and per-face colour if
+  //! `face_colour`), behind the current one (the current layer stays current); returns its mesh.
+  //! Called once, after detection succeeded.
+  virtual CMeshO& add_defect_layer(const std::string& label, bool face_colour) = 0;
+  //! Removes every layer labelled `label` other than the current one; returns how many.
+  virtual std::size_t remove_layers(const std::string& label) = 0;
+  //! True if this MeshLab can save 3MF files (an exporter for it is loaded).
+  virtual bool can_save_3mf() const = 0;
 };
+
+//! The label of the defect layer of a mesh labelled `mesh_label`: its name without the file
+//! extension, then " - defects" ("t_junction_rib.off" -> "t_junction_rib - defects"). Dots
+//! left in the name become '_' (MeshLab's layer list shows a label up to its last dot).
+std::string defect_layer_label(const std::string& mesh_label);
+
+//! `text` as lines for MeshLab's log, which is rich text: one entry per line of `text`, with
+//! '&', '<' and '>' escaped, so that every line arrives and nothing is read as a tag.
+std::vector<std::string> html_log_lines(const std::string& text);
 
 //! What detect_singular_defects() found and did.
 struct DetectOutcome {
   DefectReport report;        //!< the core's detection on the layer's live faces
   DefectLayerCounts drawn;    //!< what the defect layer shows
   DefectSelection selection;  //!< faces and vertices selected (or coloured)
-  std::string log;            //!< one readable block: report, defect layer, selection
+  std::string label;          //!< the defect layer's label (defect_layer_label())
+  //! Plain text, one line per line: the report, the selection, then as its last line the
+  //! summary "Defect layer '<label>': N red (singular) edges, M green (boundary) edges, K
+  //! singular vertex markers". Pass it through html_log_lines() for MeshLab's log.
+  std::string log;
   //! The numbers, in this order: vertices, faces (triangles), edges, singular_edges,
   //! singular_edge_contenders (sides on singular edges, summed), singular_vertices,
   //! singular_edge_vertices, pinch_vertices, boundary_edges, boundary_loops, isolated_vertices,
@@ -76,11 +107,13 @@ struct DetectOutcome {
 };
 
 //! Detects the singular defects of `mesh` (labelled `label`) without changing its geometry;
-//! then selects/colours faces as `options` say and fills a new defect layer from `host`.
+//! then selects/colours faces as `options` say (colours and the colour mask of `mesh` are left
+//! alone unless `colour_faces`) and fills a new defect layer from `host`, replacing the one a
+//! previous Detect made.
 //! \throw FilterInputError if `mesh` has no faces (nothing changed, no layer added)
 //! \throw std::exception from the core (before anything changed)
 DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
-                                      const DetectOptions& options, DetectHost& host);
+                                      const DetectOptions& options, DocumentHost& host);
 
 // ---- repair ----------------------------------------------------------------------------------
 
@@ -97,7 +130,11 @@ struct RepairFilterOptions {
 struct RepairOutcome {
   RepairReport report;      //!< the core's repair report (detection before and after included)
   WriteBackReport written;  //!< what the write-back into CMeshO did
-  std::string log;          //!< one readable block of counts
+  //! Defect layers of this mesh that were removed (they showed the defects before repair).
+  std::size_t defect_layers_removed = 0;
+  //! Plain text, one line per line: the counts, then (when vertices were split) which formats
+  //! keep the repair. Pass it through html_log_lines() for MeshLab's log.
+  std::string log;
   //! The numbers, in this order: vertices_in, vertices_out, faces_in, faces_out (the layer's,
   //! faces in triangles); the core's vertices_split, faces_flipped, sides_cut,
   //! sides_cut_for_orientation, sides_stitched, faces_detached, faces_split,
@@ -112,11 +149,13 @@ struct RepairOutcome {
 //! Repairs `mesh` (labelled `label`) in place, losslessly: every face is kept with its
 //! attributes and its place in face order. Afterwards face-face and vertex-face adjacency are
 //! rebuilt if they were enabled, border flags, bounding box and selection counts are
-//! recomputed, and normals too if `options.recompute_normals`. The adapter still tells MeshLab
-//! what changed (data masks, "modified").
+//! recomputed, and normals too if `options.recompute_normals`. The defect layer of `mesh` (see
+//! defect_layer_label()) is removed through `host`, and if there was one, the face and vertex
+//! selection of `mesh` (made by that Detect) is cleared, so what is on screen after Repair is
+//! the repaired mesh. The adapter still tells MeshLab what changed (data masks, "modified").
 //! \throw FilterInputError if `mesh` has no faces (nothing changed)
 //! \throw std::exception from the core or the write-back (then `mesh` is unchanged)
 RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
-                                      const RepairFilterOptions& options);
+                                      const RepairFilterOptions& options, DocumentHost& host);
 
 }  // namespace meshbridge::meshlab

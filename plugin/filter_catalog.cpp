@@ -16,11 +16,14 @@ const FilterText kDetect = {
     "faces, inconsistently oriented edges, non-orientable components, components, Euler "
     "characteristic.<br>"
     "The counts go to the log (MeshLab 2022 and later also return them as the filter's result, "
-    "a dictionary in pymeshlab). A new layer <i>&lt;mesh&gt; defects</i> shows them as an edge "
-    "mesh: singular "
-    "edges <b>red</b>, boundary edges <b>green</b> (colour per vertex, quality = faces on the "
-    "edge), plus one selected marker point per singular vertex (red on singular edges, magenta "
-    "for pinch vertices). Optionally selects and colours the faces at the singular elements so "
+    "a dictionary in pymeshlab), ending with one summary line. A new layer <i>&lt;mesh&gt; - "
+    "defects</i> shows them: by default a thin tube along each singular edge (<b>red</b>) and "
+    "each boundary edge (<b>green</b>), and a small marker at each singular vertex (red on "
+    "singular edges, magenta for pinch vertices), sized from the bounding box and visible "
+    "without changing any render setting; or, for scripts, the raw edges as an edge mesh "
+    "(colour per vertex, quality = faces on the edge, one selected marker point per singular "
+    "vertex). A second Detect replaces the layer; Repair removes it. The mesh's own colours "
+    "are left alone. Optionally selects and colours the faces at the singular elements so "
     "MeshLab's selection tools can go on from there.<br>"
     "Edges are pairs of vertex indices: vertices that merely coincide are not merged (use "
     "<i>Remove Duplicate Vertices</i> first if they should be).<br>"
@@ -57,6 +60,16 @@ ParameterSpec boolean(const char* name, bool default_value, const char* label,
 
 std::vector<ParameterSpec> make_detect_parameters() {
   const DetectOptions defaults;
+  ParameterSpec layer_form;
+  layer_form.kind = ParameterSpec::Kind::enumeration;
+  layer_form.name = parameter::defect_layer;
+  layer_form.enum_default = defaults.layer_form == DefectLayerForm::edges ? 1 : 0;
+  layer_form.enum_values = {"Tubes", "Edges"};
+  layer_form.label = "Defect layer";
+  layer_form.tooltip =
+      "Tubes (0): thin tubes along the defect edges and markers at singular vertices, a "
+      "triangle mesh MeshLab shows in colour by default. Edges (1): the raw edges as an edge "
+      "mesh (PLY/OBJ export keeps them), for scripts.";
   return {
       boolean(parameter::select_faces, defaults.select_faces,
               "Select faces at singular edges and vertices",
@@ -67,6 +80,7 @@ std::vector<ParameterSpec> make_detect_parameters() {
               "Colour faces at singular edges and vertices",
               "Paint those faces: red at singular edges, orange at pinch vertices. Turns on "
               "per-face colour for the layer and overwrites the colour of those faces."),
+      layer_form,
   };
 }
 

@@ -39,6 +39,7 @@ const FilterText& filter_text(FilterId id);
 namespace parameter {
 inline constexpr const char* select_faces = "select_faces";
 inline constexpr const char* colour_faces = "color_faces";
+inline constexpr const char* defect_layer = "defect_layer";
 inline constexpr const char* pairing = "pairing";
 inline constexpr const char* orient = "orient";
 inline constexpr const char* stitch = "stitch";
@@ -66,12 +67,17 @@ struct ParameterSpec {
 const std::vector<ParameterSpec>& parameters(FilterId id);
 
 //! Reads the detect filter's options from a MeshLab RichParameterList (either API generation:
-//! both have getBool(name)).
+//! both have getBool(name) and getEnum(name)). A script that predates `defect_layer` gets the
+//! default (tubes).
 template <class ParameterList>
 DetectOptions detect_options(const ParameterList& params) {
   DetectOptions options;
   options.select_faces = params.getBool(parameter::select_faces);
   options.colour_faces = params.getBool(parameter::colour_faces);
+  if (params.hasParameter(parameter::defect_layer)) {
+    options.layer_form = params.getEnum(parameter::defect_layer) == 1 ? DefectLayerForm::edges
+                                                                      : DefectLayerForm::tubes;
+  }
   return options;
 }
 

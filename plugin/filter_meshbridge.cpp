@@ -54,7 +54,10 @@ int FilterMeshBridgePlugin::getPreConditions(QAction*) const {
 int FilterMeshBridgePlugin::postCondition(QAction* action) const {
   switch (ID(action)) {
     case FP_DETECT_SINGULAR_DEFECTS:
-      return MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_FACEFLAGSELECT | MeshModel::MM_FACECOLOR;
+      // Not MM_FACECOLOR: that would switch the mesh's rendering to per-face colour (a grey STL
+      // turns white). With "colour faces" the colour mask is turned on, and MeshLab's comparison
+      // of data masks before and after the filter updates the rendering.
+      return MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_FACEFLAGSELECT;
     case FP_REPAIR_SINGULAR_DEFECTS:
       // Topology and vertex count change; copies of split vertices bring their colour/quality.
       return MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
@@ -113,18 +116,25 @@ bool FilterMeshBridgePlugin::applyFilter(QAction* action, MeshDocument& md,
   return false;
 }
 
+void FilterMeshBridgePlugin::log_lines(const std::string& text) {
+  // MeshLab's log is rich text and breaks lines between entries only: one entry per line.
+  for (const std::string& line : mbm::html_log_lines(text))
+    Log(line);
+}
+
 void FilterMeshBridgePlugin::detect(MeshDocument& md, const RichParameterList& params) {
   MeshModel& m = *md.mm();
-  mbm::MeshDocumentHost host(md);
+  mbm::MeshDocumentHost host(md, false);  // MeshLab 2020.09 has no 3MF exporter
   const mbm::DetectOutcome out = mbm::detect_singular_defects(m.cm, m.label().toStdString(),
                                                               mbm::detect_options(params), host);
-  Log(out.log);
+  log_lines(out.log);
 }
 
 void FilterMeshBridgePlugin::repair(MeshDocument& md, const RichParameterList& params) {
   MeshModel& m = *md.mm();
-  const mbm::RepairOutcome out =
-      mbm::repair_singular_defects(m.cm, m.label().toStdString(), mbm::repair_options(params));
+  mbm::MeshDocumentHost host(md, false);
+  const mbm::RepairOutcome out = mbm::repair_singular_defects(m.cm, m.label().toStdString(),
+                                                              mbm::repair_options(params), host);
   m.setMeshModified(true);
-  Log(out.log);
+  log_lines(out.log);
 }

@@ -8,6 +8,8 @@
 
 #include <QObject>
 
+#include <string>
+
 class FilterMeshBridgePlugin : public QObject, public MeshFilterInterface {
   Q_OBJECT
   Q_PLUGIN_METADATA(IID MESH_FILTER_INTERFACE_IID FILE "filter_meshbridge.json")
@@ -38,4 +40,5 @@ class FilterMeshBridgePlugin : public QObject, public MeshFilterInterface {
  private:
   void detect(MeshDocument& md, const RichParameterList& params);
   void repair(MeshDocument& md, const RichParameterList& params);
+  void log_lines(const std::string& text);  //!< html_log_lines(), one Log() each
 };

@@ -5,6 +5,9 @@
 #include "filter_catalog.h"
 #include "meshlab_document_host.h"
 
+#include <common/globals.h>
+#include <common/plugins/plugin_manager.h>
+
 #include <exception>
 #include <string>
 
@@ -30,7 +33,22 @@ std::map<std::string, QVariant> result_map(const std::vector<mbm::FilterCount>& 
   return result;
 }
 
+//! Whether MeshLab's plugin manager has a 3MF exporter (Debian's 2025.07 has none).
+bool can_save_3mf() {
+  for (const QString& format : meshlab::pluginManagerInstance().outputMeshFormatList()) {
+    if (format.compare("3mf", Qt::CaseInsensitive) == 0)
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+void FilterMeshBridgePlugin::log_lines(const std::string& text) {
+  // MeshLab's log is rich text: one entry per line, escaped.
+  for (const std::string& line : mbm::html_log_lines(text))
+    log(line);
+}
 
 FilterMeshBridgePlugin::FilterMeshBridgePlugin() {
   typeList = {FP_DETECT_SINGULAR_DEFECTS, FP_REPAIR_SINGULAR_DEFECTS};
@@ -75,7 +93,9 @@ int FilterMeshBridgePlugin::getPreConditions(const QAction*) const {
 int FilterMeshBridgePlugin::postCondition(const QAction* action) const {
   switch (ID(action)) {
     case FP_DETECT_SINGULAR_DEFECTS:
-      return MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_FACEFLAGSELECT | MeshModel::MM_FACECOLOR;
+      // MM_FACECOLOR only when faces were coloured (applyFilter): it switches the mesh's
+      // rendering to per-face colour.
+      return MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_FACEFLAGSELECT;
     case FP_REPAIR_SINGULAR_DEFECTS:
       // Topology and vertex count change; copies of split vertices bring their colour/quality.
       return MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
@@ -117,18 +137,21 @@ std::map<std::string, QVariant> FilterMeshBridgePlugin::applyFilter(const QActio
   try {
     switch (ID(action)) {
       case FP_DETECT_SINGULAR_DEFECTS: {
-        mbm::MeshDocumentHost host(md);
-        const mbm::DetectOutcome out =
-            mbm::detect_singular_defects(m.cm, label, mbm::detect_options(params), host);
-        log(out.log);
+        mbm::MeshDocumentHost host(md, can_save_3mf());
+        const mbm::DetectOptions options = mbm::detect_options(params);
+        const mbm::DetectOutcome out = mbm::detect_singular_defects(m.cm, label, options, host);
+        log_lines(out.log);
         postConditionMask = postCondition(action);
+        if (options.colour_faces)
+          postConditionMask |= MeshModel::MM_FACECOLOR;
         return result_map(out.counts);
       }
       case FP_REPAIR_SINGULAR_DEFECTS: {
+        mbm::MeshDocumentHost host(md, can_save_3mf());
         const mbm::RepairOutcome out =
-            mbm::repair_singular_defects(m.cm, label, mbm::repair_options(params));
+            mbm::repair_singular_defects(m.cm, label, mbm::repair_options(params), host);
         m.setMeshModified(true);
-        log(out.log);
+        log_lines(out.log);
         postConditionMask = postCondition(action);
         return result_map(out.counts);
       }

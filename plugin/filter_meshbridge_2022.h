@@ -22,6 +22,8 @@
 
 #include <QObject>
 
+#include <string>
+
 class FilterMeshBridgePlugin : public QObject, public FilterPlugin {
   Q_OBJECT
   MESHLAB_PLUGIN_IID_EXPORTER(FILTER_PLUGIN_IID)
@@ -53,4 +55,7 @@ class FilterMeshBridgePlugin : public QObject, public FilterPlugin {
                                               const RichParameterList& params, MeshDocument& md,
                                               unsigned int& postConditionMask,
                                               vcg::CallBackPos* cb) override;
+
+ private:
+  void log_lines(const std::string& text);  //!< html_log_lines(), one log() each
 };

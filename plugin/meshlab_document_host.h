@@ -1,29 +1,56 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 //! \file meshlab_document_host.h
-//! The MeshLab document as the shared detect filter sees it. Header-only and written against
-//! the MeshDocument / MeshModel names both MeshLab generations share: each adapter includes it
+//! The MeshLab document as the shared filters see it. Header-only and written against the
+//! MeshDocument / MeshModel names both MeshLab generations share: each adapter includes it
 //! after its own SDK's headers (the two adapters are never compiled together).
 
 #include "filter_actions.h"
 
 #include <string>
+#include <vector>
 
 namespace meshbridge::meshlab {
 
-class MeshDocumentHost final : public DetectHost {
+class MeshDocumentHost final : public DocumentHost {
  public:
-  explicit MeshDocumentHost(MeshDocument& md) : md_(md), mesh_(*md.mm()) {}
+  //! `can_save_3mf`: whether the running MeshLab has a 3MF exporter (the adapter asks its API).
+  MeshDocumentHost(MeshDocument& md, bool can_save_3mf)
+      : md_(md), mesh_(*md.mm()), can_save_3mf_(can_save_3mf) {}
   void enable_face_colour() override { mesh_.updateDataMask(MeshModel::MM_FACECOLOR); }
-  CMeshO& add_defect_layer(const std::string& label) override {
+  CMeshO& add_defect_layer(const std::string& label, bool face_colour) override {
+    remove_layers(label);
     MeshModel* layer = md_.addNewMesh("", QString::fromStdString(label), false);
-    layer->updateDataMask(MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTQUALITY);
+    int mask = MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTQUALITY;
+    if (face_colour)
+      mask |= MeshModel::MM_FACECOLOR;
+    layer->updateDataMask(mask);
     return layer->cm;
+  }
+  std::size_t remove_layers(const std::string& label) override {
+    const QString wanted = QString::fromStdString(label);
+    std::vector<MeshModel*> doomed;
+    for (MeshModel* m = md_.nextMesh(); m != nullptr; m = md_.nextMesh(m)) {
+      if (m != &mesh_ && m->label() == wanted)
+        doomed.push_back(m);
+    }
+    for (MeshModel* m : doomed) {
+#if __has_include(<common/ml_document/mesh_document.h>)
+      md_.delMesh(m->id());  // MeshLab >= 2022
+#else
+      md_.delMesh(m);  // MeshLab 2020.09
+#endif
+    }
+    return doomed.size();
+  }
+  bool can_save_3mf() const override {
+    return can_save_3mf_;
   }
 
  private:
   MeshDocument& md_;
   MeshModel& mesh_;
+  bool can_save_3mf_;
 };
 
 }  // namespace meshbridge::meshlab

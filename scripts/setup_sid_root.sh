@@ -8,7 +8,9 @@
 #  2. apt inside: sid main + deb-src, Acquire::Check-Valid-Until "false" (the archive's Release
 #     file may be past its Valid-Until), no recommends, no docs/man pages/locales;
 #  3. installs meshlab, g++, cmake, make, Qt5 (qtbase5-dev, libqt5opengl5-dev: sid's MeshLab
-#     2025.07 is a Qt5 build), Eigen, GLEW and OpenMesh's runtime; OpenMesh's headers and CMake
+#     2025.07 is a Qt5 build), Eigen, GLEW and OpenMesh's runtime, the libraries MeshLab's own
+#     plugins need (muparser, qhull_r, lib3ds, openctm), and for the real-GUI test Xvfb, xdotool,
+#     x11-utils, ImageMagick, Mesa's software GL and a font; OpenMesh's headers and CMake
 #     files come from `apt-get download libopenmesh-dev` unpacked with dpkg-deb, because the
 #     package itself drags in OpenSceneGraph and GDAL (~400 MB) that nothing here uses;
 #  4. MeshLab's plugin headers: `apt-get source --tar-only meshlab` (the .dsc is not always on
@@ -27,9 +29,14 @@ set -euo pipefail
 root=${1:-${MESHBRIDGE_SID_ROOT:-/var/cache/meshbridge/sid-root}}
 mirror=${MESHBRIDGE_SID_MIRROR:-http://deb.debian.org/debian}
 # Bump when the recipe below changes: a root made by another recipe is completed (steps 2-5).
-recipe=3
+recipe=4
 packages=(meshlab g++ cmake make qtbase5-dev libqt5opengl5-dev libeigen3-dev libglew-dev
-          libopenmesh11.0 xz-utils)
+          libopenmesh11.0 xz-utils
+          # MeshLab's own plugins that Debian's meshlab package does not pull in: without them
+          # the GUI opens an "Error while loading plugins" dialog over its main window.
+          libmuparser2v5 libqhull-r8.0 lib3ds-1-3 libopenctm1
+          # The real-GUI test (tests/meshlab2025/gui): X server, driver, screenshots, fonts.
+          xvfb xdotool x11-utils imagemagick libgl1-mesa-dri fonts-dejavu-core)
 
 log() { echo "setup_sid_root: $*" >&2; }
 die() { echo "setup_sid_root: ERROR: $*" >&2; exit 1; }

@@ -404,12 +404,15 @@ int report(const std::string& path) {
               << '\n';
   }
   if (!m.face_colour.empty()) {
-    std::size_t red = 0, orange = 0;
+    std::size_t red = 0, orange = 0, green = 0, magenta = 0;
     for (const auto& c : m.face_colour) {
       red += is_colour(c, 1, 0, 0) ? 1 : 0;
       orange += is_colour(c, 1, 128.0 / 255, 0) ? 1 : 0;
+      green += is_colour(c, 0, 1, 0) ? 1 : 0;
+      magenta += is_colour(c, 1, 0, 1) ? 1 : 0;
     }
-    std::cout << "red_faces=" << red << "\norange_faces=" << orange << '\n';
+    std::cout << "red_faces=" << red << "\norange_faces=" << orange << "\ngreen_faces=" << green
+              << "\nmagenta_faces=" << magenta << '\n';
   }
   if (!m.edges.empty() || m.faces.empty()) {
     std::size_t red = 0, green = 0, other = 0;

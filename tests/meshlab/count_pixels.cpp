@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Counts the red and green pixels of a screenshot (binary PPM, P6, maxval 255), for the real-GUI
+// tests: defect tubes are pure red / pure green, lit by MeshLab's lights, so a pixel counts as
+// red when R >= 120 and G, B <= 60 (green likewise). MeshLab's pink selection overlay, its
+// trackball lines and anti-aliased grey edges do not count.
+//
+// Usage: meshbridge_count_pixels IMAGE.ppm [X Y W H]    (the rectangle defaults to the image)
+// Prints: width=, height=, pixels= (in the rectangle), red=, green=.
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+long parse(const std::string& s, const char* what) {
+  std::size_t used = 0;
+  const long v = std::stol(s, &used);
+  if (used != s.size() || v < 0)
+    throw std::invalid_argument(std::string("bad ") + what + " '" + s + "'");
+  return v;
+}
+
+//! Next header token of a PPM, skipping whitespace and # comments.
+std::string token(std::istream& in) {
+  std::string t;
+  int c;
+  while ((c = in.get()) != EOF) {
+    if (c == '#') {
+      while ((c = in.get()) != EOF && c != '\n') {
+      }
+    } else if (std::isspace(c)) {
+      if (!t.empty())
+        return t;
+    } else {
+      t += char(c);
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    if (argc != 2 && argc != 6) {
+      std::cerr << "usage: meshbridge_count_pixels IMAGE.ppm [X Y W H]\n";
+      return 2;
+    }
+    std::ifstream in(argv[1], std::ios::binary);
+    if (!in)
+      throw std::runtime_error(std::string("cannot open ") + argv[1]);
+    if (token(in) != "P6")
+      throw std::runtime_error(std::string(argv[1]) + " is not a binary PPM (P6)");
+    const long width = parse(token(in), "width"), height = parse(token(in), "height");
+    if (parse(token(in), "maxval") != 255)
+      throw std::runtime_error("only maxval 255 is supported");
+    std::vector<unsigned char> rgb(std::size_t(width * height * 3));
+    if (!in.read(reinterpret_cast<char*>(rgb.data()), std::streamsize(rgb.size())))
+      throw std::runtime_error(std::string(argv[1]) + " is truncated");
+    long x0 = 0, y0 = 0, w = width, h = height;
+    if (argc == 6) {
+      x0 = parse(argv[2], "x");
+      y0 = parse(argv[3], "y");
+      w = parse(argv[4], "width");
+      h = parse(argv[5], "height");
+      if (x0 + w > width || y0 + h > height)
+        throw std::invalid_argument("rectangle lies outside the " + std::to_string(width) + "x" +
+                                    std::to_string(height) + " image");
+    }
+    long red = 0, green = 0;
+    for (long y = y0; y < y0 + h; ++y) {
+      for (long x = x0; x < x0 + w; ++x) {
+        const unsigned char* p = &rgb[std::size_t((y * width + x) * 3)];
+        red += (p[0] >= 120 && p[1] <= 60 && p[2] <= 60) ? 1 : 0;
+        green += (p[1] >= 120 && p[0] <= 60 && p[2] <= 60) ? 1 : 0;
+      }
+    }
+    std::cout << "width=" << width << "\nheight=" << height << "\npixels=" << w * h
+              << "\nred=" << red << "\ngreen=" << green << '\n';
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "meshbridge_count_pixels: " << e.what() << '\n';
+    return 1;
+  }
+}
