@@ -13,6 +13,9 @@
 #   scripts/meshlab_private_root.sh make ROOT PLUGIN.so...      make/refresh ROOT, print it
 #   scripts/meshlab_private_root.sh run ROOT [meshlabserver args...]
 #   scripts/meshlab_private_root.sh list ROOT                   print the filters it loads
+#   scripts/meshlab_private_root.sh make-gui ROOT PLUGIN.so...  the same for the GUI: a copy of
+#       MESHLAB_GUI_BIN (default /usr/bin/meshlab) and EVERY plugin of Debian's MeshLab, as a
+#       user has them, plus ours; prints ROOT/bin/meshlab
 #
 # Environment:
 #   MESHLAB_LIB_DIR       Debian's MeshLab library folder (default /usr/lib/<multiarch>/meshlab)
@@ -57,6 +60,28 @@ make_root() {
   echo "$root"
 }
 
+make_gui_root() {
+  local root=$1; shift
+  local gui=${MESHLAB_GUI_BIN:-/usr/bin/meshlab} p
+  [ -x "$gui" ] || die "no $gui: install Debian's meshlab"
+  [ $# -gt 0 ] || die "make-gui: no plugin given"
+  mkdir -p "$root/bin" "$root/$rel_lib/plugins"
+  root=$(cd "$root" && pwd)
+  cmp -s "$gui" "$root/bin/meshlab" || cp -f "$gui" "$root/bin/meshlab"
+  for p in "$lib_dir"/*.so*; do
+    [ -e "$p" ] && ln -sfn "$p" "$root/$rel_lib/$(basename "$p")"
+  done
+  find "$root/$rel_lib/plugins" -mindepth 1 -maxdepth 1 -name '*.so' -delete
+  for p in "$lib_dir"/plugins/*.so; do
+    ln -sfn "$p" "$root/$rel_lib/plugins/$(basename "$p")"
+  done
+  for p in "$@"; do
+    [ -f "$p" ] || die "no plugin $p"
+    ln -sfn "$(cd "$(dirname "$p")" && pwd)/$(basename "$p")" "$root/$rel_lib/plugins/$(basename "$p")"
+  done
+  echo "$root/bin/meshlab"
+}
+
 run_server() {
   local root=$1; shift
   [ -x "$root/bin/meshlabserver" ] || die "no $root/bin/meshlabserver: run '$0 make' first"
@@ -86,6 +111,7 @@ cmd=${1:-}
 shift
 case "$cmd" in
   make) make_root "$@" ;;
+  make-gui) make_gui_root "$@" ;;
   run) run_server "$@" ;;
   list)
     # `meshlabserver -d <file>` dumps every loaded filter as "\section f<i> <name> " (doxygen).

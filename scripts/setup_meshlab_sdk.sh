@@ -44,7 +44,8 @@ apt_update() {
 
 # --- 1. Debian packages ----------------------------------------------------------------------
 packages=(meshlab qtbase5-dev libqt5opengl5-dev libeigen3-dev libglew-dev libopenmesh-dev
-          xvfb xauth dpkg-dev xz-utils)
+          xvfb xauth dpkg-dev xz-utils
+          xdotool x11-utils imagemagick)  # the real-GUI tests (tests/meshlab/gui_detect.sh)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

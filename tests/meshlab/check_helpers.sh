@@ -30,6 +30,37 @@ expect_attributes_kept_and_manifold() {  # IN OUT: OUT has IN's attributes and n
   expect_eq "core: singular edges after" "$(value singular_edges output.txt)" 0
   expect_eq "core: singular vertices after" "$(value singular_vertices output.txt)" 0
 }
+expect_tube_layer() {  # LAYER_REPORT INPUT_REPORT: the tube layer shows exactly the core's defects
+  # 12 triangles per tube (hexagonal, open), 8 per marker (octahedron): defect_tubes.h
+  local layer=$1 input=$2
+  expect_eq "tube layer: red faces" "$(value red_faces "$layer")" \
+    "$(( 12 * $(value singular_edges "$input") + 8 * ($(value singular_vertices "$input") - $(value pinch_vertices "$input")) ))"
+  expect_eq "tube layer: green faces" "$(value green_faces "$layer")" "$(( 12 * $(value boundary_edges "$input") ))"
+  expect_eq "tube layer: magenta faces" "$(value magenta_faces "$layer")" "$(( 8 * $(value pinch_vertices "$input") ))"
+  expect_eq "tube layer: no other faces" "$(value faces "$layer")" \
+    "$(( $(value red_faces "$layer") + $(value green_faces "$layer") + $(value magenta_faces "$layer") ))"
+}
+expect_gui_shot() {  # SHOT_DIR INPUT_REPORT NAME: gui_detect.sh's screenshot and log
+  local shot=$1 input=$2 name=$3 red green
+  red=$(value red "$shot/view.txt")
+  green=$(value green "$shot/view.txt")
+  echo "3D view: red=$red green=$green pixels=$(value pixels "$shot/view.txt") ($shot/view.png)"
+  if [ "$(value singular_edges "$input")" -gt 0 ] || [ "$(value singular_vertices "$input")" -gt 0 ]; then
+    [ "${red:-0}" -gt 0 ] && pass "red pixels: $red" || fail "no red pixels in the 3D view"
+  else
+    expect_eq "red pixels" "$red" 0
+  fi
+  if [ "$(value boundary_edges "$input")" -gt 0 ]; then
+    [ "${green:-0}" -gt 0 ] && pass "green pixels: $green" || fail "no green pixels in the 3D view"
+  else
+    expect_eq "green pixels" "$green" 0
+  fi
+  # Every line of the report arrives as its own log entry, escaped, the summary last.
+  local summary="LOG: [0-9]* Defect layer '$name - defects': $(value singular_edges "$input") red (singular) edges, $(value boundary_edges "$input") green (boundary) edges, $(value singular_vertices "$input") singular vertex markers"
+  grep -q "$summary" "$shot/meshlab.log" && pass "GUI log: summary line" || fail "GUI log has no line '$summary'"
+  grep -q "LOG: [0-9]* .*faces set aside (&lt; 3 distinct vertices)" "$shot/meshlab.log" \
+    && pass "GUI log: '<' escaped, report lines arrive" || fail "GUI log: no escaped 'faces set aside' line"
+}
 finish_checks() {  # DIR: exit 1 naming DIR if any check failed
   if [ "$failures" -ne 0 ]; then
     echo "$failures check(s) failed; files in $1"

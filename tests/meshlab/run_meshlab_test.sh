@@ -10,6 +10,9 @@
 #   repair MODEL [k=v...]     repair.mlx + MeshLab's own manifold checks in the same script
 #   attributes MODEL          colours, qualities, wedge texcoords survive repair, face order kept
 #   no-faces                  a point cloud gets a clear error and is left unchanged
+#   gui MODEL                 the real MeshLab GUI under Xvfb (gui_detect.sh): opens MODEL, runs
+#                             Detect from Filters' search with default settings; red and green
+#                             pixels of the 3D view as the model's defects say, summary line logged
 #   compare-builtin MODEL     ours vs MeshLab's "Repair non Manifold Edges" (both methods):
 #                             faces kept and wall time (informative; asserts only that ours
 #                             keeps every face and MeshLab finds nothing non-manifold after it)
@@ -69,9 +72,10 @@ case "$mode" in
     input_off
     "$MLCHECK" report "$model" >input.txt
     status=0
-    # Layer x (last) is the defect layer; layer 0 the mesh itself, with its selection flags.
-    server log.txt -i in.off -o defects.obj -l x -m vc -o mesh.ply -l 0 -m vf ff sa \
-      -s "$scripts/detect.mlx" || status=$?
+    # Layer x (last) is the defect layer, as raw edges; layer 0 the mesh itself, with its
+    # selection flags (and face colours, if Detect had turned them on: it must not).
+    server log.txt -i in.off -o defects.obj -l x -m vc -o mesh.ply -l 0 -m vf ff sa fc \
+      -s "$SOURCE_DIR/tests/meshlab/detect_edges.mlx" || status=$?
     cat log.txt
     expect_eq "meshlabserver status" "$status" 0
     grep -q "MeshBridge defects of" log.txt && pass "report logged" || fail "no report in the log"
@@ -88,6 +92,10 @@ case "$mode" in
       defects=defects.txt
     fi
     "$MLCHECK" report mesh.ply >mesh.txt
+    expect_eq "mesh has no face colour after Detect (colour faces off)" "$(value red_faces mesh.txt)" ""
+    grep -q "Defect layer 'in - defects': " log.txt \
+      && pass "log names the layer 'in - defects'" || fail "no summary line naming 'in - defects'"
+    grep -q "(< 3 distinct" log.txt && fail "unescaped '<' in the log" || pass "log escaped for HTML"
     echo "--- core on the input:"; cat input.txt
     echo "--- defect layer:"; cat "$defects"
     expect_eq "red edges == core singular edges" "$(value red_edges "$defects")" "$(value singular_edges input.txt)"
@@ -118,6 +126,17 @@ case "$mode" in
     expect_eq "coloured faces == selected faces" \
       "$(( $(value red_faces coloured.txt) + $(value orange_faces coloured.txt) ))" "$(value selected_faces coloured.txt)"
     expect_eq "coloured mesh faces unchanged" "$(value faces coloured.txt)" "$(value triangles input.txt)"
+    # The default layer: tubes and markers, coloured per face (and per vertex).
+    status=0
+    server tubes.log -i in.off -o tubes.ply -l x -m vc fc sa -s "$scripts/detect.mlx" || status=$?
+    expect_eq "meshlabserver status (tubes)" "$status" 0
+    if [ -e tubes.ply ]; then
+      "$MLCHECK" report tubes.ply >tubes.txt
+      expect_tube_layer tubes.txt input.txt
+    else
+      expect_eq "no tube layer: nothing to show" \
+        "$(( $(value singular_edges input.txt) + $(value boundary_edges input.txt) + $(value singular_vertices input.txt) ))" 0
+    fi
     check_expectations input.txt "$@"
     ;;
 
@@ -175,6 +194,21 @@ case "$mode" in
         || fail "$filter: no error message"
       [ ! -e out.ply ] && pass "$filter: nothing saved" || fail "$filter: a mesh was saved"
     done
+    ;;
+
+  gui)
+    input_off
+    "$MLCHECK" report "$model" >input.txt
+    cp in.off "$name.off"  # MeshLab names the layer after the file
+    gui_bin=$("$root_script" make-gui "$ROOT/gui" "$PLUGIN")
+    status=0
+    t0=$(date +%s%N)
+    COUNT_PIXELS="$COUNT_PIXELS" bash "$SOURCE_DIR/tests/meshlab/gui_detect.sh" "$gui_bin" \
+      "$dir/$name.off" "$dir/shot" >gui.txt || status=$?
+    echo "GUI session: $(( ($(date +%s%N) - t0) / 1000000 )) ms"
+    cat shot/session.txt
+    expect_eq "GUI session status" "$status" 0
+    expect_gui_shot shot input.txt "$name"
     ;;
 
   compare-builtin)
