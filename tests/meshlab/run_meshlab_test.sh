@@ -171,6 +171,20 @@ case "$mode" in
     expect_eq "core: singular edges after" "$(value singular_edges output.txt)" 0
     expect_eq "core: singular vertices after" "$(value singular_vertices output.txt)" 0
     grep -q "after: singular edges 0, singular vertices 0" log.txt && pass "repair log" || fail "repair log line missing"
+    if [ "$(value vertices output.txt)" -gt "$(loaded_vn log.txt)" ]; then
+      grep -q "To keep the repair, save as PLY, OBJ or OFF.*STL stores no shared vertices" log.txt \
+        && pass "log: which formats keep the repair" || fail "log: no hint on formats that keep the repair"
+    fi
+    # Detect, then Repair: the defect layer is gone (the last layer is the mesh again) and so is
+    # the selection Detect made.
+    status=0
+    server clean.log -i in.off -o last.ply -l x -m vf ff sa -s "$scripts/detect.mlx" -s "$scripts/repair.mlx" \
+      || status=$?
+    expect_eq "meshlabserver status (Detect, Repair)" "$status" 0
+    "$MLCHECK" report last.ply >last.txt
+    expect_eq "last layer after Detect + Repair is the mesh (faces)" "$(value faces last.txt)" "$(value faces output.txt)"
+    expect_eq "selected faces after Detect + Repair" "$(value selected_faces last.txt)" 0
+    expect_eq "selected vertices after Detect + Repair" "$(value selected_vertices last.txt)" 0
     check_expectations output.txt "$@"
     ;;
 

@@ -23,6 +23,7 @@
 //!            [binary=true|false] save one layer; attributes as meshlabserver's -m (default: the
 //!                            format's defaults), binary as the PLY/STL "Binary" option; an
 //!                            empty layer is not saved (MeshLab's exporters refuse it)
+//!   layers                   "layers: N", then "layer <id> '<label>' <vn> <fn> <en>" per layer
 //!
 //! --no-precondition-check calls applyFilter even when FilterPlugin::isFilterApplicable() says
 //! no (pymeshlab refuses first), to test a filter's own errors.
@@ -58,7 +59,7 @@ struct Step {
 };
 
 const std::vector<std::string> kStepNames = {"plugin", "plugins", "version", "list",
-                                             "load",   "filter",  "save"};
+                                             "load",   "filter",  "save",    "layers"};
 
 [[noreturn]] void usage(const std::string& why) {
   std::cerr << "meshbridge-mlrun: " << why << "\n"
@@ -66,7 +67,7 @@ const std::vector<std::string> kStepNames = {"plugin", "plugins", "version", "li
                "  plugin FILE | plugins DIR | version | list | load FILE |\n"
                "  filter PYTHON_NAME [param=value...] |\n"
                "  save FILE [layer=current|last|ID] [attributes=vc,vq,vf,vn,vt,fc,fq,ff,fn,wt] "
-               "[binary=true|false]\n";
+               "[binary=true|false] | layers\n";
   std::exit(2);
 }
 
@@ -167,6 +168,12 @@ class Runner {
     } else if (step.name == "save") {
       need_args(step, 1);
       save(step.args[0], step.options);
+    } else if (step.name == "layers") {
+      std::cout << "layers: " << md_.meshNumber() << "\n";
+      for (MeshModel& m : md_.meshIterator()) {
+        std::cout << "layer " << m.id() << " '" << m.label().toStdString() << "' " << m.cm.vn
+                  << " " << m.cm.fn << " " << m.cm.en << "\n";
+      }
     }
   }
 

@@ -13,6 +13,9 @@
 #   repair MODEL [k=v...]     repair + MeshLab's own manifold checks in the same run
 #   attributes MODEL          colours, qualities, wedge texcoords survive repair, face order kept
 #   no-faces                  a point cloud: MeshLab's precondition error, and our MLException
+#   gui MODEL                 the real MeshLab 2025.07 GUI under Xvfb (tests/meshlab/gui_detect.sh):
+#                             Detect from Filters' search with default settings; red and green
+#                             pixels of the 3D view as the model's defects say, summary logged
 #   compare-builtin MODEL     ours vs MeshLab's "Repair non Manifold Edges" (both methods)
 # k=v: expected values of `mlcheck report` on the input (detect) or on the repaired output
 # (repair), as in tests/meshlab/expectations.cmake.
@@ -88,7 +91,7 @@ case "$mode" in
     # Our parameters, by python name, with type and default, in dialog order.
     params() { awk -v f="filter $1 " 'index($0, f) == 1 { on = 1; next } /^filter / { on = 0 } on' list.txt; }
     expect_eq "$detect_filter parameters" "$(params "$detect_filter" | tr '\n' '|')" \
-      "  select_faces : bool = True|  color_faces : bool = False|"
+      "  select_faces : bool = True|  color_faces : bool = False|  defect_layer : str = 'Tubes'|"
     expect_eq "$repair_filter parameters" "$(params "$repair_filter" | tr '\n' '|')" \
       "  pairing : str = 'Geometric'|  orient : bool = True|  stitch : bool = True|  cut_nonorientable : bool = False|  remove_duplicate_faces : bool = False|  remove_degenerate_faces : bool = False|  remove_isolated_vertices : bool = False|  recompute_normals : bool = True|"
     ;;
@@ -98,9 +101,10 @@ case "$mode" in
     input_off
     "$MLCHECK" report "$model" >input.txt
     status=0
-    # Layer "last" is the defect layer; layer 0 the mesh itself, with its selection flags.
-    run log.txt load in.off filter "$detect_filter" \
-      save defects.obj layer=last attributes=vc save mesh.ply layer=0 attributes=vf,ff binary=false \
+    # Layer "last" is the defect layer, as raw edges; layer 0 the mesh itself, with its selection
+    # flags (and face colours, if Detect had turned them on: it must not).
+    run log.txt load in.off filter "$detect_filter" defect_layer=Edges \
+      save defects.obj layer=last attributes=vc save mesh.ply layer=0 attributes=vf,ff,fc binary=false \
       || status=$?
     cat log.txt
     expect_eq "runner status" "$status" 0
@@ -115,6 +119,10 @@ case "$mode" in
       "$MLCHECK" report defects.obj >defects.txt
     fi
     "$MLCHECK" report mesh.ply >mesh.txt
+    expect_eq "mesh has no face colour after Detect (colour faces off)" "$(value red_faces mesh.txt)" ""
+    grep -q "^log: Defect layer 'in - defects': " log.txt \
+      && pass "log names the layer 'in - defects'" || fail "no summary line naming 'in - defects'"
+    grep -q "(< 3 distinct" log.txt && fail "unescaped '<' in the log" || pass "log escaped for HTML"
     echo "--- core on the input:"; cat input.txt
     echo "--- defect layer:"; cat defects.txt
     expect_eq "red edges == core singular edges" "$(value red_edges defects.txt)" "$(value singular_edges input.txt)"
@@ -157,6 +165,23 @@ case "$mode" in
       "$(( $(value red_faces coloured.txt) + $(value orange_faces coloured.txt) ))" "$(value selected_faces coloured.txt)"
     expect_eq "result coloured_faces" "$(result "$detect_filter" coloured_faces colour.log)" "$(value selected_faces coloured.txt)"
     expect_eq "coloured mesh faces unchanged" "$(value faces coloured.txt)" "$(value triangles input.txt)"
+    # The default layer: tubes and markers, coloured per face (and per vertex). A second Detect
+    # replaces it: still one defect layer (layer 1) and no third layer.
+    status=0
+    run tubes.log load in.off filter "$detect_filter" filter "$detect_filter" \
+      save tubes.ply layer=last attributes=vc,fc binary=false layers || status=$?
+    expect_eq "runner status (tubes, Detect twice)" "$status" 0
+    grep -q "^layer [0-9]* 'in - defects' " tubes.log && pass "defect layer named 'in - defects'" \
+      || fail "no layer 'in - defects'"
+    grep -q "^layers: 2$" tubes.log && pass "Detect twice: 2 layers (mesh, one defect layer)" \
+      || fail "Detect twice: not 2 layers ($(grep '^layers:' tubes.log))"
+    if [ -e tubes.ply ]; then
+      "$MLCHECK" report tubes.ply >tubes.txt
+      expect_tube_layer tubes.txt input.txt
+    else
+      expect_eq "no tube layer: nothing to show" \
+        "$(( $(value singular_edges input.txt) + $(value boundary_edges input.txt) + $(value singular_vertices input.txt) ))" 0
+    fi
     check_expectations input.txt "$@"
     ;;
 
@@ -198,6 +223,26 @@ case "$mode" in
     expect_eq "result faces_out == saved faces" "$(result "$repair_filter" faces_out log.txt)" "$(value faces output.txt)"
     expect_eq "result vertices_out == saved vertices" "$(result "$repair_filter" vertices_out log.txt)" "$(value vertices output.txt)"
     expect_eq "result singular_edges_before == core" "$(result "$repair_filter" singular_edges_before log.txt)" "$(value singular_edges input.txt)"
+    if [ "$(result "$repair_filter" vertices_split log.txt)" -gt 0 ]; then
+      grep -q "^log: To keep the repair, save as PLY, OBJ or OFF.*STL stores no shared vertices" log.txt \
+        && pass "log: which formats keep the repair" || fail "log: no hint on formats that keep the repair"
+    else
+      grep -q "^log: To keep the repair" log.txt && fail "log: save hint without split vertices" \
+        || pass "log: no save hint (no vertex split)"
+    fi
+    # Detect, then Repair: the defect layer is gone and so is the selection Detect made.
+    status=0
+    run clean.log load in.off filter "$detect_filter" filter "$repair_filter" layers \
+      save clean.ply layer=0 attributes=vf,ff binary=false || status=$?
+    expect_eq "runner status (Detect, Repair)" "$status" 0
+    expect_eq "layers after Detect + Repair" "$(sed -n 's/^layers: //p' clean.log)" 1
+    "$MLCHECK" report clean.ply >clean.txt
+    expect_eq "selected faces after Detect + Repair" "$(value selected_faces clean.txt)" 0
+    expect_eq "selected vertices after Detect + Repair" "$(value selected_vertices clean.txt)" 0
+    if [ "$(( $(value singular_edges input.txt) + $(value boundary_edges input.txt) + $(value singular_vertices input.txt) ))" -gt 0 ]; then
+      grep -q "^log: Removed the defect layer 'in - defects' and cleared the selection" clean.log \
+        && pass "log: defect layer removed" || fail "log: no 'Removed the defect layer'"
+    fi
     check_expectations output.txt "$@"
     ;;
 
@@ -233,6 +278,30 @@ case "$mode" in
         && pass "$filter (forced): clear error message" || fail "$filter (forced): no clear error message"
       [ ! -e out.ply ] && pass "$filter (forced): nothing saved" || fail "$filter (forced): a mesh was saved"
     done
+    ;;
+
+  gui)
+    input_off
+    "$MLCHECK" report "$model" >input.txt
+    cp in.off "$name.off"  # MeshLab names the layer after the file
+    # A private copy of the GUI that finds every plugin of Debian's MeshLab, and ours, beside
+    # itself (<root>/bin/plugins: MeshLab looks there first), as a user has them.
+    gui_root="$WORK/gui-root"
+    mkdir -p "$gui_root/bin/plugins"
+    cmp -s /usr/bin/meshlab "$gui_root/bin/meshlab" || cp -f /usr/bin/meshlab "$gui_root/bin/meshlab"
+    find "$gui_root/bin/plugins" -mindepth 1 -maxdepth 1 -name '*.so' -delete
+    for p in "$MESHLAB_PLUGIN_DIR"/*.so "$PLUGIN"; do ln -sfn "$p" "$gui_root/bin/plugins/$(basename "$p")"; done
+    status=0
+    t0=$(date +%s%N)
+    # Qt's xcb platform, not the offscreen one the headless runner uses.
+    env -u QT_QPA_PLATFORM COUNT_PIXELS="$COUNT_PIXELS" bash "$(dirname "${BASH_SOURCE[0]}")/../meshlab/gui_detect.sh" \
+      "$gui_root/bin/meshlab" "$dir/$name.off" "$dir/shot" >gui.txt || status=$?
+    echo "GUI session: $(( ($(date +%s%N) - t0) / 1000000 )) ms"
+    cat shot/session.txt
+    expect_eq "GUI session status" "$status" 0
+    grep -q "Error while loading plugins\|Unable to find the plugins" shot/meshlab.log \
+      && fail "MeshLab could not load all its plugins" || pass "MeshLab loaded its plugins"
+    expect_gui_shot shot input.txt "$name"
     ;;
 
   compare-builtin)
