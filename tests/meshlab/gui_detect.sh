@@ -89,9 +89,19 @@ session() {
   config=$(mktemp -d)
   XDG_CONFIG_HOME="$config" "$meshlab" "$model" >"$out/meshlab.stdout" 2>"$log" &
   meshlab_pid=$!
-  local wid
-  wid=$(timeout 60 xdotool search --sync --onlyvisible --name "^MeshLab [0-9]" | head -n1)
-  [ -n "$wid" ] || { say "no MeshLab main window"; return 1; }
+  local wid=
+  main_window() {
+    kill -0 "$meshlab_pid" 2>/dev/null || return 2
+    wid=$(xdotool search --onlyvisible --name "^MeshLab [0-9]" 2>/dev/null | head -n1)
+    [ -n "$wid" ]
+  }
+  local t=0
+  until main_window; do
+    kill -0 "$meshlab_pid" 2>/dev/null || { say "MeshLab exited"; return 1; }
+    t=$((t + 1))
+    [ "$t" -le 600 ] || { say "no MeshLab main window"; return 1; }
+    sleep 0.1
+  done
   xdotool windowmove "$wid" 0 0 windowsize --sync "$wid" "$width" "$height"
   wait_for 60 log_has "Opened mesh" || { say "MeshLab did not log 'Opened mesh'"; return 1; }
   say "MeshLab window $wid, $(basename "$model") opened"
@@ -113,7 +123,7 @@ session() {
   say "dialog $dialog at ${X},${Y} ${WIDTH}x${HEIGHT}: Apply"
   # Apply is the bottom-right button, Close the bottom-left one (both MeshLab versions).
   xdotool mousemove $((X + WIDTH * 3 / 4)) $((Y + HEIGHT - 14)) click 1
-  wait_for 60 log_has "LOG: [0-9]* Applied filter $filter" \
+  wait_for 60 log_has "LOG: [0-9]* Applied filter:\\? $filter" \
     || { say "no 'Applied filter' in MeshLab's log"; return 1; }
   xdotool mousemove $((X + WIDTH / 4)) $((Y + HEIGHT - 14)) click 1
   wait_for 15 window_gone "^${filter//[()]/.}\$" || { say "the dialog did not close"; return 1; }

@@ -286,11 +286,16 @@ case "$mode" in
     cp in.off "$name.off"  # MeshLab names the layer after the file
     # A private copy of the GUI that finds every plugin of Debian's MeshLab, and ours, beside
     # itself (<root>/bin/plugins: MeshLab looks there first), as a user has them.
+    # The binary's RUNPATH is $ORIGIN/../lib/<multiarch>/meshlab (libmeshlab-common*.so).
     gui_root="$WORK/gui-root"
-    mkdir -p "$gui_root/bin/plugins"
+    multiarch=$(basename "$(dirname "$MESHLAB_LIB_DIR")")
+    gui_lib="$gui_root/lib/$multiarch/meshlab"
+    mkdir -p "$gui_root/bin" "$gui_lib/plugins"
     cmp -s /usr/bin/meshlab "$gui_root/bin/meshlab" || cp -f /usr/bin/meshlab "$gui_root/bin/meshlab"
-    find "$gui_root/bin/plugins" -mindepth 1 -maxdepth 1 -name '*.so' -delete
-    for p in "$MESHLAB_PLUGIN_DIR"/*.so "$PLUGIN"; do ln -sfn "$p" "$gui_root/bin/plugins/$(basename "$p")"; done
+    for p in "$MESHLAB_LIB_DIR"/*.so*; do ln -sfn "$p" "$gui_lib/$(basename "$p")"; done
+    find "$gui_lib/plugins" -mindepth 1 -maxdepth 1 -name '*.so' -delete
+    for p in "$MESHLAB_PLUGIN_DIR"/*.so "$PLUGIN"; do ln -sfn "$p" "$gui_lib/plugins/$(basename "$p")"; done
+    ln -sfn "$gui_lib/plugins" "$gui_root/bin/plugins"
     status=0
     t0=$(date +%s%N)
     # Qt's xcb platform, not the offscreen one the headless runner uses.
