@@ -171,8 +171,8 @@ class Runner {
     } else if (step.name == "layers") {
       std::cout << "layers: " << md_.meshNumber() << "\n";
       for (MeshModel& m : md_.meshIterator()) {
-        std::cout << "layer " << m.id() << " '" << m.label().toStdString() << "' " << m.cm.vn
-                  << " " << m.cm.fn << " " << m.cm.en << "\n";
+        std::cout << "layer " << m.id() << " '" << m.label().toStdString() << "' " << m.cm.vn << " "
+                  << m.cm.fn << " " << m.cm.en << "\n";
       }
     }
   }
