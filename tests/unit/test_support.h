@@ -176,4 +176,55 @@ inline double volume_magnitude(const Soup& soup, const std::vector<Index>& label
   return magnitude / 6;
 }
 
+//! Generalized winding number of the faces labelled `component` at point p (solid angles of
+//! their fan triangles, Van Oosterom and Strackee, over 4 pi).
+inline double winding_number(const Soup& soup, const std::vector<Index>& label, Index component,
+                             const Point& p) {
+  double total = 0;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    if (label[f] != component)
+      continue;
+    const PolygonView poly = soup.polygon(f);
+    const Point a = soup.positions[poly[0]] - p;
+    for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
+      const Point b = soup.positions[poly[i]] - p, c = soup.positions[poly[i + 1]] - p;
+      const double la = a.norm(), lb = b.norm(), lc = c.norm();
+      const double numerator = OpenMesh::dot(a, OpenMesh::cross(b, c));
+      const double denominator = la * lb * lc + OpenMesh::dot(a, b) * lc +
+                                 OpenMesh::dot(a, c) * lb + OpenMesh::dot(b, c) * la;
+      if (std::abs(numerator) <= 1e-9 * la * lb * lc && denominator <= 0)
+        return std::nan("");  // p lies on the face
+      total += 2 * std::atan2(numerator, denominator);
+    }
+  }
+  return total / (4 * 3.14159265358979323846);
+}
+
+//! True if component `inner` lies inside component `outer`: |winding number| of `outer` is
+//! within 0.1 of 1 at the centroids of (up to) 8 faces spread over `inner`, except where the
+//! centroid lies on `outer`, and at one of them at least.
+inline bool lies_inside(const Soup& soup, const std::vector<Index>& label, Index inner,
+                        Index outer) {
+  std::vector<Index> faces;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f)
+    if (label[f] == inner)
+      faces.push_back(static_cast<Index>(f));
+  const std::size_t tries = std::min<std::size_t>(8, faces.size());
+  bool decided = false;
+  for (std::size_t k = 0; k < tries; ++k) {
+    const PolygonView poly = soup.polygon(faces[k * faces.size() / tries]);
+    Point centroid(0, 0, 0);
+    for (Index v : poly)
+      centroid += soup.positions[v];
+    centroid /= static_cast<double>(poly.size());
+    const double w = winding_number(soup, label, outer, centroid);
+    if (std::isnan(w))
+      continue;
+    if (std::abs(std::abs(w) - 1) > 0.1)
+      return false;
+    decided = true;
+  }
+  return decided;
+}
+
 }  // namespace meshbridge::test_support

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline/manifold_edges.h"
 
+#include "pipeline/angular_order.h"
 #include "pipeline/fans.h"
 
 #include <algorithm>
@@ -42,9 +43,8 @@ bool resolve_collisions(const Soup& soup, const GroupedSides& grouped,
   // Choices below are made by the faces' sorted vertex lists, which do not depend on the order
   // of faces or on where a polygon starts.
   const auto face_key = [&](Index side) {
-    const PolygonView p = soup.polygon(corner_face[side]);
-    std::vector<Index> key(p.begin(), p.end());
-    std::sort(key.begin(), key.end());
+    std::vector<Index> key;
+    detail::face_key(soup, corner_face[side], key);
     return key;
   };
   const auto pair_key = [&](Index side) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline/orientation.h"
 
+#include "pipeline/nesting.h"
+
 #include "union_find.h"
 
 #include <cmath>
@@ -12,6 +14,66 @@ namespace {
 // Two paired sides run the same way iff they start at the same vertex.
 bool same_way(const Soup& soup, Index c, Index m) {
   return soup.corner_vertices[c] == soup.corner_vertices[m];
+}
+
+// Whether to reverse each open (or volume-less) component, on the best evidence it has:
+// - its volume, taken about its corners' centroid c (an open surface's volume depends on that
+//   point), when |volume| exceeds what capping its holes could change: |N| * R, with N the sum
+//   of its faces' vector areas (the holes' vector area, both times 2) and R the farthest
+//   boundary vertex from c; a slit such as a T-junction crack has no area, so it never hides
+//   a volume;
+// - otherwise its faces' windings as given, weighted by area: reversed if more area would end
+//   up reversed than not; on a tie, if more faces would (then: kept).
+std::vector<char> open_component_reversal(const Soup& soup, const std::vector<Index>& corner_face,
+                                          const std::vector<Index>& mate,
+                                          const std::vector<char>& flipped,
+                                          const std::vector<Index>& root,
+                                          const std::vector<Index>& undecided, std::size_t count,
+                                          const std::vector<double>& volume,
+                                          const std::vector<double>& magnitude) {
+  std::vector<Point> area(count, Point(0, 0, 0)), centroid(count, Point(0, 0, 0));
+  std::vector<double> corners(count, 0.0), winding(count, 0.0), reach(count, 0.0);
+  std::vector<double> total_area(count, 0.0), reversed_faces(count, 0.0), faces(count, 0.0);
+  const std::size_t num_faces = soup.num_faces();
+  for (Index f = 0; f < num_faces; ++f) {
+    const Index u = undecided[root[f]];
+    if (u == kNoIndex)
+      continue;
+    const Point n = newell_normal(soup, f);
+    area[u] += flipped[f] ? -n : n;
+    winding[u] += flipped[f] ? -n.norm() : n.norm();
+    total_area[u] += n.norm();
+    reversed_faces[u] += flipped[f];
+    faces[u] += 1;
+    for (Index v : soup.polygon(f))
+      centroid[u] += soup.positions[v];
+    corners[u] += static_cast<double>(soup.polygon(f).size());
+  }
+  for (std::size_t u = 0; u < count; ++u)
+    centroid[u] /= corners[u];
+  for (Index c = 0; c < mate.size(); ++c) {
+    if (mate[c] != kNoIndex)
+      continue;
+    const Index u = undecided[root[corner_face[c]]];
+    reach[u] = std::max(reach[u], (soup.positions[soup.corner_vertices[c]] - centroid[u]).norm());
+  }
+  std::vector<char> reverse(count, 0);
+  for (Index r = 0; r < num_faces; ++r) {
+    const Index u = undecided[r];
+    if (u == kNoIndex)
+      continue;
+    const double about_centroid = volume[r] - OpenMesh::dot(centroid[u], area[u]);
+    const bool volume_decides = std::abs(about_centroid) > area[u].norm() * reach[u] &&
+                                std::abs(about_centroid) > 1e-9 * magnitude[r];
+    if (volume_decides) {
+      reverse[u] = about_centroid < 0;
+    } else if (std::abs(winding[u]) > 1e-9 * total_area[u]) {
+      reverse[u] = winding[u] < 0;
+    } else {  // areas tie (a face and its copy back to back): fewer faces reversed
+      reverse[u] = 2 * reversed_faces[u] > faces[u];
+    }
+  }
+  return reverse;
 }
 
 }  // namespace
@@ -109,13 +171,12 @@ void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairin
     if (mate[c] != kNoIndex)
       components.unite(corner_face[c], corner_face[mate[c]]);
   }
+  // Six times the signed volume about the origin, as the faces will run.
   std::vector<char> open(num_faces, 0);
   std::vector<double> volume(num_faces, 0.0), magnitude(num_faces, 0.0);
-  std::vector<Index> faces(num_faces, 0), reversed(num_faces, 0);
+  std::vector<Index> root(num_faces);
   for (Index f = 0; f < num_faces; ++f) {
-    const Index r = components.find(f);
-    ++faces[r];
-    reversed[r] += flipped[f];
+    const Index r = root[f] = components.find(f);
     const PolygonView polygon = soup.polygon(f);
     double v = 0;
     const Point& p0 = soup.positions[polygon[0]];
@@ -131,15 +192,40 @@ void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairin
         open[r] = 1;
     }
   }
-  std::vector<char> reverse(num_faces, 0);
+  // Closed shells with a volume, numbered; the others are judged on their evidence.
+  std::vector<Index> shell(num_faces, kNoIndex), undecided(num_faces, kNoIndex);
+  std::size_t num_shells = 0, num_undecided = 0;
   for (Index r = 0; r < num_faces; ++r) {
-    if (faces[r] == 0)
+    if (root[r] != r)
       continue;
     const bool flat = std::abs(volume[r]) <= 1e-9 * magnitude[r];
-    reverse[r] = (open[r] || flat) ? (2 * reversed[r] > faces[r]) : (volume[r] < 0);
+    if (open[r] || flat) {
+      undecided[r] = static_cast<Index>(num_undecided++);
+    } else {
+      shell[r] = static_cast<Index>(num_shells++);
+    }
+  }
+  std::vector<char> reverse(num_faces, 0);
+  if (num_shells > 0) {
+    std::vector<Index> face_shell(num_faces);
+    for (Index f = 0; f < num_faces; ++f)
+      face_shell[f] = shell[root[f]];
+    const std::vector<Index> depth = nesting_depths(soup, face_shell, num_shells);
+    for (Index r = 0; r < num_faces; ++r) {
+      if (shell[r] != kNoIndex)
+        reverse[r] = (volume[r] < 0) != (depth[shell[r]] % 2 == 1);
+    }
+  }
+  if (num_undecided > 0) {
+    const std::vector<char> decided = open_component_reversal(
+        soup, corner_face, mate, flipped, root, undecided, num_undecided, volume, magnitude);
+    for (Index r = 0; r < num_faces; ++r) {
+      if (undecided[r] != kNoIndex)
+        reverse[r] = decided[undecided[r]];
+    }
   }
   for (Index f = 0; f < num_faces; ++f)
-    flipped[f] ^= reverse[components.find(f)];
+    flipped[f] ^= reverse[root[f]];
 }
 
 }  // namespace meshbridge::detail

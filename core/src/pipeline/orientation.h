@@ -32,10 +32,14 @@ std::size_t cut_inconsistent_pairs(const Soup& soup, std::vector<Index>& mate);
 //! True if some pair's sides run the same way (start at the same vertex).
 bool has_inconsistent_pair(const Soup& soup, const std::vector<Index>& mate);
 
-//! Reverses whole components (faces joined through `pairing.mate`): closed ones so that their
-//! signed volume is positive, open ones (and closed ones of no volume, such as two faces glued
-//! back to back) so that fewer of their faces end up reversed. "No volume": |volume| <= 1e-9
-//! times the sum of its terms' magnitudes, below which the sign is rounding noise.
+//! Reverses whole components (faces joined through `pairing.mate`):
+//! - closed shells with a volume by their nesting depth (nesting_depths()): outer boundaries
+//!   outward (positive volume), cavities toward the void (negative), islands inside cavities
+//!   outward again;
+//! - open components, and closed ones of no volume (|volume| <= 1e-9 times the sum of its terms'
+//!   magnitudes, such as two faces glued back to back), on their best evidence: their volume
+//!   when capping their holes could not change its sign, otherwise the area-weighted majority of
+//!   their faces' windings as given (see orientation.cpp).
 void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing);
 
 }  // namespace meshbridge::detail

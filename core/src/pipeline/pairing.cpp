@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline/pairing.h"
 
+#include "pipeline/angular_order.h"
 #include "union_find.h"
 
 #include <algorithm>
@@ -9,18 +10,6 @@
 namespace meshbridge::detail {
 
 namespace {
-
-// Angles are "diamond" pseudo-angles: monotonic in the true angle, 4 per full turn, and
-// between 0.5 and 1 per radian, so a tie tolerance of 1e-7 is 1e-7 to 2e-7 rad.
-constexpr double kFullTurn = 4.0;
-constexpr double kTieAngle = 1e-7;
-
-// Pseudo-angle of (x, y) in [0, 4): no trigonometry.
-double pseudo_angle(double x, double y) {
-  if (y >= 0)
-    return x >= 0 ? y / (x + y) : 1 - x / (-x + y);
-  return x < 0 ? 2 - y / (-x - y) : 3 + x / (x - y);
-}
 
 void pair(std::vector<Index>& mate, Index a, Index b) {
   mate[a] = b;
@@ -48,18 +37,7 @@ void pair_opposite_in_order(const Soup& soup, const EdgeBridges& bridges,
   }
 }
 
-struct AngularContender {
-  double angle;
-  bool along;
-  Index side;
-};
-
-// A contender in its edge's angular order, the angle dropped once sorted (half the memory).
-struct OrderedSide {
-  Index side;
-  bool along;
-};
-
+// A singular edge's angular order, stored flat for all edges.
 struct ContenderRange {
   const OrderedSide* first;
   const OrderedSide* last;
@@ -68,73 +46,6 @@ struct ContenderRange {
   std::size_t size() const { return static_cast<std::size_t>(last - first); }
   const OrderedSide& operator[](std::size_t i) const { return first[i]; }
 };
-
-// Sorts the given sides of edge e by angle around its axis; false if the geometry is unusable.
-template <class NormalOf>
-bool angular_order(const Soup& soup, const EdgeBridges& bridges, std::size_t e,
-                   const Index* sides_begin, const Index* sides_end, NormalOf normal_of,
-                   std::vector<AngularContender>& order) {
-  order.clear();
-  Point axis = soup.positions[bridges.edge_v1[e]] - soup.positions[bridges.edge_v0[e]];
-  const double length = axis.norm();
-  if (!(length > 0))
-    return false;
-  axis /= length;
-  // A frame (e1, e2) perpendicular to the axis.
-  const int least = std::abs(axis[0]) <= std::abs(axis[1])
-                        ? (std::abs(axis[0]) <= std::abs(axis[2]) ? 0 : 2)
-                        : (std::abs(axis[1]) <= std::abs(axis[2]) ? 1 : 2);
-  Point helper(0, 0, 0);
-  helper[least] = 1;
-  Point e1 = OpenMesh::cross(axis, helper).normalized();
-  Point e2 = OpenMesh::cross(axis, e1);
-
-  for (const Index* it = sides_begin; it != sides_end; ++it) {
-    const Index side = *it;
-    const Point n = normal_of(side);
-    const bool along = runs_along(soup, bridges, side);
-    Point d = OpenMesh::cross(n, axis);
-    if (!along)
-      d = -d;
-    const double dn = d.norm();
-    if (!(dn > 1e-12 * n.norm()) || !(dn > 0))
-      return false;
-    order.push_back({pseudo_angle(OpenMesh::dot(d, e1), OpenMesh::dot(d, e2)), along, side});
-  }
-  std::sort(order.begin(), order.end(),
-            [](const AngularContender& a, const AngularContender& b) { return a.angle < b.angle; });
-  // Start the cycle after the widest gap, so no run of ties straddles the cut.
-  const std::size_t k = order.size();
-  std::size_t widest = k - 1;
-  double widest_gap = order.front().angle + kFullTurn - order.back().angle;
-  for (std::size_t i = 0; i + 1 < k; ++i) {
-    const double gap = order[i + 1].angle - order[i].angle;
-    if (gap > widest_gap) {
-      widest_gap = gap;
-      widest = i;
-    }
-  }
-  const std::size_t first = (widest + 1) % k;
-  for (std::size_t i = 0; i < first; ++i)
-    order[i].angle += kFullTurn;
-  std::rotate(order.begin(), order.begin() + first, order.end());
-  // Within a run of ties: along-running sides first by increasing corner, then against-running
-  // ones by decreasing corner, so coincident copies nest (the outermost pair of the cycle is
-  // made of the first copies) and never interleave.
-  for (std::size_t i = 0; i < k;) {
-    std::size_t j = i + 1;
-    while (j < k && order[j].angle - order[j - 1].angle <= kTieAngle)
-      ++j;
-    std::sort(order.begin() + i, order.begin() + j,
-              [](const AngularContender& a, const AngularContender& b) {
-                if (a.along != b.along)
-                  return a.along;
-                return a.along ? a.side < b.side : a.side > b.side;
-              });
-    i = j;
-  }
-  return true;
-}
 
 // The side of a contender face that looks into the wedge after it (counter-clockwise) and the
 // one that looks into the wedge before it. Face side ids: 2f front, 2f+1 back.
@@ -158,6 +69,32 @@ void pair_behind_neighbours(const std::vector<OrderedSide>& cycle, std::vector<I
       pair(mate, a.side, b.side);
     }
   }
+}
+
+// Per face: 1 if it separates no material from void (see pair_contenders).
+std::vector<char> sheets(const Soup& soup, UnionFind& regions) {
+  const std::size_t num_faces = soup.num_faces();
+  std::vector<double> vote(2 * num_faces, 0.0), weight(2 * num_faces, 0.0);
+  for (Index f = 0; f < num_faces; ++f) {
+    const double area = newell_normal(soup, f).norm();
+    const Index front = regions.find(2 * f), back = regions.find(2 * f + 1);
+    vote[front] -= area;
+    vote[back] += area;
+    weight[front] += area;
+    weight[back] += area;
+  }
+  // Votes that cancel to rounding (a face and its reversed copy) say nothing.
+  const auto kind = [&](Index r) {
+    if (std::abs(vote[r]) <= 1e-9 * weight[r])
+      return 0;
+    return vote[r] > 0 ? 1 : -1;
+  };
+  std::vector<char> sheet(num_faces, 0);
+  for (Index f = 0; f < num_faces; ++f) {
+    const Index front = regions.find(2 * f), back = regions.find(2 * f + 1);
+    sheet[f] = front == back || (kind(front) != 0 && kind(front) == kind(back));
+  }
+  return sheet;
 }
 
 }  // namespace
@@ -192,31 +129,37 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
     return mate;
   }
 
-  // Geometric: angular orders of all singular edges.
-  std::vector<Point> normals(soup.num_faces());
-  for (std::size_t f = 0; f < soup.num_faces(); ++f)
-    normals[f] = newell_normal(soup, f);
-  std::vector<AngularContender> scratch;
-  std::vector<OrderedSide> flat;
+  // Geometric: the angular order of every singular edge's contenders that have a direction
+  // there; those without one (flat against the edge) are kept aside per edge.
+  AngularSorter sorter;
+  std::vector<OrderedSide> order_scratch, flat;
+  std::vector<Index> undirected_scratch, undirected;
   std::vector<std::size_t> order_begin(singular.size() + 1, 0);
-  std::vector<char> usable(singular.size());
+  std::vector<std::size_t> undirected_begin(singular.size() + 1, 0);
   for (std::size_t s = 0; s < singular.size(); ++s) {
     const std::size_t e = singular[s];
-    usable[s] = angular_order(
-        soup, bridges, e, bridges.contenders.data() + bridges.begin[e],
-        bridges.contenders.data() + bridges.begin[e + 1],
-        [&](Index side) { return normals[corner_face[side]]; }, scratch);
-    if (usable[s])
-      for (const AngularContender& c : scratch)
-        flat.push_back({c.side, c.along});
+    sorter.sort(soup, grouped, e, bridges.contenders.data() + bridges.begin[e],
+                bridges.contenders.data() + bridges.begin[e + 1], order_scratch,
+                undirected_scratch);
+    if (order_scratch.size() >= 2) {
+      flat.insert(flat.end(), order_scratch.begin(), order_scratch.end());
+      undirected.insert(undirected.end(), undirected_scratch.begin(), undirected_scratch.end());
+    } else {  // nothing to order: every side waits for elimination, in face-key order
+      std::vector<Index> waiting(undirected_scratch);
+      for (const OrderedSide& o : order_scratch)
+        waiting.push_back(o.side);
+      sort_by_face_key(soup, corner_face, waiting);
+      undirected.insert(undirected.end(), waiting.begin(), waiting.end());
+    }
     order_begin[s + 1] = flat.size();
+    undirected_begin[s + 1] = undirected.size();
   }
-  normals = std::vector<Point>();  // only the angular orders needed them
   const auto order_of = [&](std::size_t s) {
     return ContenderRange{flat.data() + order_begin[s], flat.data() + order_begin[s + 1]};
   };
 
-  // Regions of space: face sides joined across every wedge.
+  // Regions of space: face sides joined across every wedge. Face side 2f looks the way the
+  // face's normal points (its front), 2f+1 behind it.
   UnionFind regions(2 * soup.num_faces());
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
     const Index first = bridges.begin[e];
@@ -233,8 +176,6 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
     }
   }
   for (std::size_t s = 0; s < singular.size(); ++s) {
-    if (!usable[s])
-      continue;
     const ContenderRange order = order_of(s);
     for (std::size_t t = 0; t < order.size(); ++t) {
       const OrderedSide& a = order[t];
@@ -242,22 +183,19 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
       regions.unite(ccw_face_side(a, corner_face[a.side]), cw_face_side(b, corner_face[b.side]));
     }
   }
+  // Material or void: every face votes, with its area, that the region behind it is material
+  // and the one in front of it void. A face whose two sides lie in one region, or in two regions
+  // of the same kind (a membrane between two solids, a sheet in the open), separates nothing:
+  // it is a sheet.
+  const std::vector<char> sheet = sheets(soup, regions);
 
   std::vector<OrderedSide> cycle;
   for (std::size_t s = 0; s < singular.size(); ++s) {
-    if (!usable[s]) {
-      combinatorial(singular[s]);
-      continue;
-    }
     const ContenderRange order = order_of(s);
-    const auto is_sheet = [&](const OrderedSide& c) {
-      const Index f = corner_face[c.side];
-      return regions.find(2 * f) == regions.find(2 * f + 1);
-    };
     // (a) solids first: the sheets are taken out of the cycle.
     cycle.clear();
     for (const auto& c : order)
-      if (!is_sheet(c))
+      if (!sheet[corner_face[c.side]])
         cycle.push_back(c);
     pair_behind_neighbours(cycle, mate);
     // (b) everything still unpaired.
@@ -266,30 +204,17 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
       if (mate[c.side] == kNoIndex)
         cycle.push_back(c);
     pair_behind_neighbours(cycle, mate);
-    // (c) elimination, opposite-running only, in cyclic order.
+    // (c) elimination, opposite-running only: what is left in cyclic order, then the sides
+    //     without a direction, in face-key order.
     sides.clear();
     for (const auto& c : cycle)
       if (mate[c.side] == kNoIndex)
         sides.push_back(c.side);
+    sides.insert(sides.end(), undirected.begin() + undirected_begin[s],
+                 undirected.begin() + undirected_begin[s + 1]);
     pair_opposite_in_order(soup, bridges, sides, mate);
   }
   return mate;
-}
-
-void sort_by_angle(const Soup& soup, const GroupedSides& grouped, std::size_t e,
-                   std::vector<Index>& sides) {
-  const std::vector<Index>& corner_face = grouped.corner_face;
-  const EdgeBridges& bridges = grouped.bridges;
-  std::vector<AngularContender> order;
-  const bool usable = angular_order(
-      soup, bridges, e, sides.data(), sides.data() + sides.size(),
-      [&](Index side) { return newell_normal(soup, corner_face[side]); }, order);
-  if (!usable) {
-    std::sort(sides.begin(), sides.end());
-    return;
-  }
-  for (std::size_t i = 0; i < order.size(); ++i)
-    sides[i] = order[i].side;
 }
 
 }  // namespace meshbridge::detail

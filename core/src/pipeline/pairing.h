@@ -35,9 +35,4 @@ namespace meshbridge::detail {
 std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped,
                                    PairingPolicy policy);
 
-//! Puts `sides` (sides of edge e) in the angular order of the geometric policy, starting after
-//! the widest gap; in corner order where the geometry is unusable.
-void sort_by_angle(const Soup& soup, const GroupedSides& grouped, std::size_t e,
-                   std::vector<Index>& sides);
-
 }  // namespace meshbridge::detail

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline/stitching.h"
 
-#include "pipeline/pairing.h"
+#include "pipeline/angular_order.h"
 #include "pipeline/parity_union_find.h"
 
 #include <algorithm>
@@ -41,7 +41,7 @@ std::size_t stitch(const Soup& soup, const GroupedSides& grouped, SidePairing& p
       components.unite_roots(std::min(a, b), std::max(a, b), false);
   }
   std::size_t stitched = 0;
-  std::vector<Index> open;
+  std::vector<Index> open, key_s, key_t;
   for (std::size_t e : candidates) {
     open.clear();
     for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
@@ -67,10 +67,14 @@ std::size_t stitch(const Soup& soup, const GroupedSides& grouped, SidePairing& p
           if (along_s == along_t)
             continue;
         } else {
-          // Keep the larger component as it is (ties: the one with the smaller root).
-          const bool keep_s =
-              components.size(root_s) > components.size(root_t) ||
-              (components.size(root_s) == components.size(root_t) && root_s < root_t);
+          // Keep the larger component as it is; on a tie the one whose face at this edge has the
+          // smaller face key (not the smaller root, which depends on face order).
+          bool keep_s = components.size(root_s) > components.size(root_t);
+          if (components.size(root_s) == components.size(root_t)) {
+            face_key(soup, corner_face[s], key_s);
+            face_key(soup, corner_face[t], key_t);
+            keep_s = key_s != key_t ? key_s < key_t : root_s < root_t;
+          }
           const Index keep = keep_s ? root_s : root_t;
           const Index other = keep_s ? root_t : root_s;
           components.unite_roots(keep, other, along_s == along_t);

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Nesting of closed shells: which shells lie inside which (used by orientation).
+
+#include "meshbridge/soup.h"
+
+#include <vector>
+
+namespace meshbridge::detail {
+
+//! The nesting depth of every closed shell: the number of other shells that contain it (0 for
+//! an outer boundary, 1 for a cavity, 2 for an island inside a cavity, ...).
+//!
+//! \param face_shell #F: shell of each face in 0..num_shells-1, or kNoIndex for faces of no
+//!        closed shell (they neither contain nor are contained).
+//! Shell T contains shell S if S's bounding box lies within T's and points of S are inside T:
+//! at the centroids of up to 8 faces spread over S, the generalized winding number of T's faces
+//! (sum of signed solid angles / 4 pi, either orientation of T) is within 0.1 of a nonzero
+//! integer at every point where it is decided, and decided at one at least. A point on T
+//! (shells that touch or coincide) is undecided; any other value (outside, or S crossing T)
+//! means S is not inside T.
+//! Candidates come from a uniform grid over the shells' boxes (about one cell per shell), so
+//! shells that do not nest cost O(#F + #shells); each candidate pair costs O(faces of T).
+std::vector<Index> nesting_depths(const Soup& soup, const std::vector<Index>& face_shell,
+                                  std::size_t num_shells);
+
+//! Generalized winding number of the given faces of `soup` at `p`; NaN if `p` lies on one of
+//! them (within rounding).
+double winding_number(const Soup& soup, const Index* faces_begin, const Index* faces_end,
+                      const Point& p);
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Rule: closed shells are oriented by their nesting depth (outer boundaries outward, cavities
+// toward the void, islands inside cavities outward again), in every face order.
+
+#include "rule_support.h"
+
+#include <gtest/gtest.h>
+
+using namespace meshbridge;
+using namespace meshbridge::rule_test;
+
+namespace {
+
+// Outer tetrahedron (faces 0-3) with a smaller one inside (faces 4-7), wound as a cavity.
+const char* const kTetrahedronWithCavity = R"(OFF
+8 8 0
+0 0 0  4 0 0  0 4 0  0 0 4  0.5 0.5 0.5  1.5 0.5 0.5  0.5 1.5 0.5  0.5 0.5 1.5
+3 0 2 1  3 0 1 3  3 0 3 2  3 1 2 3  3 4 5 6  3 4 7 5  3 4 6 7  3 5 7 6)";
+
+// The six quads of an axis-aligned cube [lo, lo + size]^3, outward or inward.
+void add_cube(Soup& soup, double lo, double size, bool outward) {
+  const Index base = static_cast<Index>(soup.num_vertices());
+  for (int i = 0; i < 8; ++i)
+    soup.add_vertex({lo + size * (i & 1), lo + size * ((i >> 1) & 1), lo + size * ((i >> 2) & 1)});
+  const Index quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    std::vector<Index> polygon{base + q[0], base + q[1], base + q[2], base + q[3]};
+    if (!outward)
+      std::reverse(polygon.begin(), polygon.end());
+    soup.add_polygon(polygon);
+  }
+}
+
+void expect_volumes(const Soup& soup, const std::vector<Index>& to_original,
+                    const std::vector<double>& volume_of_original_face) {
+  const Outcome o = repair_and_label(soup);
+  test_support::expect_repair_invariants(soup, o.result);
+  EXPECT_EQ(o.result.report.vertices_split, 0u);
+  for (std::size_t f = 0; f < soup.num_faces(); ++f)
+    EXPECT_NEAR(o.volume[f], volume_of_original_face[to_original[f]], 1e-9) << "face " << f;
+}
+
+}  // namespace
+
+TEST(Orientation, cavity_stays_toward_void) {
+  const Soup soup = from_off(kTetrahedronWithCavity);
+  std::vector<double> expected(8, 64.0 / 6);
+  for (int f = 4; f < 8; ++f)
+    expected[f] = -1.0 / 6;
+  for_face_orders(soup, 200, [&](const Soup& s, const std::vector<Index>& to_original) {
+    expect_volumes(s, to_original, expected);
+    EXPECT_EQ(repair(s).report.faces_flipped, 0u);
+  });
+}
+
+TEST(Orientation, cavity_wound_outward_is_turned_toward_void) {
+  Soup soup = from_off(kTetrahedronWithCavity);
+  for (std::size_t f = 4; f < 8; ++f)
+    soup = with_face_reversed(soup, f);
+  std::vector<double> expected(8, 64.0 / 6);
+  for (int f = 4; f < 8; ++f)
+    expected[f] = -1.0 / 6;
+  for_face_orders(soup, 200, [&](const Soup& s, const std::vector<Index>& to_original) {
+    expect_volumes(s, to_original, expected);
+    EXPECT_EQ(repair(s).report.faces_flipped, 4u);
+  });
+}
+
+TEST(Orientation, cube_with_cubic_cavity_in_either_winding) {
+  for (bool cavity_outward : {false, true}) {
+    SCOPED_TRACE(cavity_outward ? "cavity given outward" : "cavity given inward");
+    Soup soup;
+    add_cube(soup, 0, 3, true);
+    add_cube(soup, 1, 1, cavity_outward);
+    std::vector<double> expected(12, 27.0);
+    for (int f = 6; f < 12; ++f)
+      expected[f] = -1.0;
+    for_face_orders(soup, 200, [&](const Soup& s, const std::vector<Index>& to_original) {
+      expect_volumes(s, to_original, expected);
+    });
+  }
+}
+
+TEST(Orientation, island_inside_cavity_is_outward_again) {
+  // Two levels of nesting, every shell given the wrong way round.
+  Soup soup;
+  add_cube(soup, 0, 6, false);  // outer boundary, inward
+  add_cube(soup, 1, 4, true);   // cavity, outward
+  add_cube(soup, 2, 2, false);  // island in the cavity, inward
+  std::vector<double> expected(18, 216.0);
+  for (int f = 6; f < 12; ++f)
+    expected[f] = -64.0;
+  for (int f = 12; f < 18; ++f)
+    expected[f] = 8.0;
+  for_face_orders(soup, 200, [&](const Soup& s, const std::vector<Index>& to_original) {
+    expect_volumes(s, to_original, expected);
+    EXPECT_EQ(repair(s).report.faces_flipped, 18u);
+  });
+}
+
+TEST(Orientation, side_by_side_shells_are_not_nested) {
+  // Two cubes next to each other and a third touching the first along a face: no nesting.
+  Soup soup;
+  add_cube(soup, 0, 1, false);
+  add_cube(soup, 2, 1, true);
+  add_cube(soup, 1, 1, false);  // touches the first cube at one corner point (1,1,1)
+  std::vector<double> expected(18, 1.0);
+  for_face_orders(soup, 50, [&](const Soup& s, const std::vector<Index>& to_original) {
+    const Outcome o = repair_and_label(s);
+    test_support::expect_repair_invariants(s, o.result);
+    for (std::size_t f = 0; f < s.num_faces(); ++f)
+      EXPECT_NEAR(o.volume[f], expected[to_original[f]], 1e-9) << "face " << f;
+  });
+}
