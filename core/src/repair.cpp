@@ -146,7 +146,6 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   report.sides_stitched = pipeline.counts.sides_stitched;
   report.faces_flipped = pipeline.counts.faces_flipped;
   report.sides_cut_to_stay_manifold = pipeline.counts.sides_cut_to_stay_manifold;
-  report.faces_detached = pipeline.counts.faces_detached;
   report.nonorientable_components = pipeline.counts.nonorientable_components;
   // The pipeline's grouping and pairing (about 20 bytes per side) are not needed any more: free
   // them before the second detection allocates its own.

@@ -2,6 +2,20 @@
 #pragma once
 //! \file edge_bridges.h
 //! Edge bridges: every polygon side grouped with the others on the same vertex pair.
+//!
+//! Glossary (our word -> the field's):
+//! - *side* (of a polygon, identified by its corner) ~ half-edge;
+//! - *contender* ~ one of the half-edges on a vertex pair (geometry-central: a *sibling*);
+//! - *edge bridge* ~ all half-edges of an edge, manifold or not (the sibling list);
+//! - *mate* (the side a side is paired with) ~ opposite / twin half-edge;
+//! - *unpaired* side ~ boundary half-edge; *cut* = unpaired on purpose;
+//! - *singular edge* ~ non-manifold (complex) edge: more than two sides;
+//! - *fan* ~ umbrella (one connected ring or wedge of faces around a vertex); a vertex with
+//!   several fans is a non-manifold (complex) vertex, *pinch* if its edges are all manifold;
+//! - *stitched* ~ glued / zipped: unpaired sides paired again after orientation;
+//! - *set aside* (a polygon with fewer than 3 distinct corners; listed as `excluded_faces`
+//!   in reports) ~ a degenerate face dropped by other readers;
+//! - *sheet* ~ a face with the same side of space (material or void) on both sides.
 
 #include "meshbridge/soup.h"
 

@@ -51,7 +51,9 @@ struct RepairReport {
   //! Sides unpaired because their fan wound twice around a vertex, putting two pairs on one
   //! output edge (self-intersecting input); stitches undone for that are not counted here.
   std::size_t sides_cut_to_stay_manifold = 0;
-  std::size_t faces_detached = 0;     //!< last resort: faces cut loose to stay representable
+  //! Always 0: no face is ever cut loose (the pipeline proves every output edge manifold
+  //! without it); kept so reports keep their fields.
+  std::size_t faces_detached = 0;
   std::size_t components_before = 0;  //!< as the user sees the input (through all contenders)
   std::size_t components_after = 0;
   std::size_t boundary_edges_before = 0;

@@ -5,59 +5,28 @@
 #include "pipeline/fans.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <tuple>
 
 namespace meshbridge::detail {
 
 namespace {
 
-// One round of making every output edge manifold. Only sides on singular edges or unpaired
-// sides of 2-sided edges can land on one output edge with others (a fan winding twice around a
-// vertex). Per such output edge: two opposite unpaired sides are paired (the output glues them
-// anyway); extra pairs are cut, stitched ones first, keeping one pair; a pair sharing its edge
-// with unpaired sides is cut; unpaired sides that still share one are separated by detaching
-// their faces (the last resort). Returns true if anything changed (fans must be recomputed).
-bool resolve_collisions(const Soup& soup, const GroupedSides& grouped,
-                        const std::vector<Index>& corner_vertex, SidePairing& pairing,
-                        ManifoldEdgeCounts& counts, std::vector<Index>& detach) {
+// Output edges shared by more than one side, other than by one pair: calls visit(pairs, open)
+// per such crowded output edge
+// with its paired sides (the smaller side of each pair) and its unpaired sides. Only sides on
+// singular edges or unpaired sides of 2-sided edges can land on one output edge with others.
+template <class Visit>
+void for_each_crowded_output_edge(const Soup& soup, const GroupedSides& grouped,
+                                  const std::vector<Index>& corner_vertex,
+                                  const std::vector<Index>& mate, Visit visit) {
   const std::vector<Index>& corner_face = grouped.corner_face;
   const EdgeBridges& bridges = grouped.bridges;
-  const std::vector<char>& flipped = pairing.flipped;
-  const std::vector<char>& glued = pairing.stitched;
-  std::vector<Index>& mate = pairing.mate;
-  // Output vertex a side starts at, after its face is reversed or not.
-  const auto start = [&](Index c) {
-    const Index f = corner_face[c];
-    return corner_vertex[flipped[f] ? soup.next_corner(c, f) : c];
-  };
-  const auto unpair = [&](Index a) {
-    const Index b = mate[a];
-    mate[a] = kNoIndex;
-    mate[b] = kNoIndex;
-    if (glued[a]) {
-      counts.unstitched += 2;
-    } else {
-      counts.pairs_cut += 2;
-    }
-  };
-  // Choices below are made by the faces' sorted vertex lists, which do not depend on the order
-  // of faces or on where a polygon starts.
-  const auto face_key = [&](Index side) {
-    std::vector<Index> key;
-    detail::face_key(soup, corner_face[side], key);
-    return key;
-  };
-  const auto pair_key = [&](Index side) {
-    auto a = face_key(side), b = face_key(mate[side]);
-    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
-  };
-  bool changed = false;
   std::vector<std::tuple<Index, Index, Index>> keyed;  // (out low, out high, side)
+  std::vector<Index> pairs, open;
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
     const Index k = bridges.num_contenders(e);
-    if (k < 2)
-      continue;
-    if (k == 2 && mate[bridges.contenders[bridges.begin[e]]] != kNoIndex)
+    if (k < 2 || (k == 2 && mate[bridges.contenders[bridges.begin[e]]] != kNoIndex))
       continue;
     keyed.clear();
     for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
@@ -72,8 +41,8 @@ bool resolve_collisions(const Soup& soup, const GroupedSides& grouped,
       while (j < keyed.size() && std::get<0>(keyed[j]) == std::get<0>(keyed[i]) &&
              std::get<1>(keyed[j]) == std::get<1>(keyed[i]))
         ++j;
-      const std::size_t size = j - i;
-      std::vector<Index> pairs, open;  // pairs: the smaller side of each
+      pairs.clear();
+      open.clear();
       for (std::size_t t = i; t < j; ++t) {
         const Index c = std::get<2>(keyed[t]);
         if (mate[c] == kNoIndex) {
@@ -82,38 +51,56 @@ bool resolve_collisions(const Soup& soup, const GroupedSides& grouped,
           pairs.push_back(c);
         }
       }
+      if (j - i >= 2 && !(pairs.size() == 1 && open.empty()))
+        visit(pairs, open);
       i = j;
-      if (size < 2 || (size == 2 && pairs.size() == 1))
-        continue;
-      changed = true;
-      if (size == 2 && start(open[0]) != start(open[1])) {
-        mate[open[0]] = open[1];
-        mate[open[1]] = open[0];
-        counts.implicitly_stitched += 2;
-      } else if (!pairs.empty() && (pairs.size() >= 2 || !open.empty())) {
-        // Keep one pair that pairing made (not stitching) if there is more than one pair.
-        Index keep = kNoIndex;
-        if (pairs.size() >= 2) {
+    }
+  }
+}
+
+// One round of cuts: per output edge holding two or more pairs, all but one are cut (stitched
+// ones first; among equals the one whose faces' keys are smallest is kept); a pair sharing its
+// output edge with unpaired sides is cut. Returns the number of pairs cut.
+std::size_t cut_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
+                               const std::vector<Index>& corner_vertex, SidePairing& pairing,
+                               ManifoldEdgeCounts& counts) {
+  std::vector<Index>& mate = pairing.mate;
+  const std::vector<char>& stitched = pairing.stitched;
+  // Choices are made by face keys, which do not depend on face order or polygon start.
+  const auto key_of = [&](Index side) {
+    std::vector<Index> key;
+    face_key(soup, grouped.corner_face[side], key);
+    return key;
+  };
+  const auto pair_key = [&](Index side) {
+    auto a = key_of(side), b = key_of(mate[side]);
+    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+  };
+  std::size_t cut = 0;
+  for_each_crowded_output_edge(
+      soup, grouped, corner_vertex, mate,
+      [&](const std::vector<Index>& pairs, const std::vector<Index>& open) {
+        if (pairs.empty() || (pairs.size() == 1 && open.empty()))
+          return;
+        Index keep = kNoIndex;  // kept only if no unpaired side shares the edge
+        if (open.empty()) {
           for (Index p : pairs) {
-            const bool better = keep == kNoIndex || (glued[keep] && !glued[p]) ||
-                                (glued[keep] == glued[p] && pair_key(p) < pair_key(keep));
+            const bool better = keep == kNoIndex || (stitched[keep] && !stitched[p]) ||
+                                (stitched[keep] == stitched[p] && pair_key(p) < pair_key(keep));
             if (better)
               keep = p;
           }
         }
         for (Index p : pairs) {
-          if (p != keep)
-            unpair(p);
+          if (p == keep)
+            continue;
+          (stitched[p] ? counts.unstitched : counts.pairs_cut) += 2;
+          mate[mate[p]] = kNoIndex;
+          mate[p] = kNoIndex;
+          ++cut;
         }
-      } else {
-        std::sort(open.begin(), open.end(),
-                  [&](Index a, Index b) { return face_key(a) < face_key(b); });
-        for (std::size_t t = 1; t < open.size(); ++t)
-          detach.push_back(corner_face[open[t]]);
-      }
-    }
-  }
-  return changed;
+      });
+  return cut;
 }
 
 }  // namespace
@@ -121,24 +108,37 @@ bool resolve_collisions(const Soup& soup, const GroupedSides& grouped,
 ManifoldEdgeCounts make_output_edges_manifold(const Soup& soup, const GroupedSides& grouped,
                                               SidePairing& pairing, VertexSplit& split) {
   ManifoldEdgeCounts counts;
-  std::vector<Index> detach;
-  // Each round pairs, cuts or detaches something, and nothing is undone: this ends.
-  while (resolve_collisions(soup, grouped, split.corner_vertex, pairing, counts, detach)) {
-    counts.rounds += 1;
-    std::sort(detach.begin(), detach.end());
-    detach.erase(std::unique(detach.begin(), detach.end()), detach.end());
-    for (Index f : detach) {
-      for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
-        if (pairing.mate[c] != kNoIndex) {
-          pairing.mate[pairing.mate[c]] = kNoIndex;
-          pairing.mate[c] = kNoIndex;
-        }
-      }
-    }
-    counts.faces_detached += detach.size();
-    detach.clear();
+  // 1. Cuts. Each round cuts at least one pair and none is made, so there are at most as many
+  //    rounds as pairs (one or two in practice); cutting only ever splits fans.
+  const std::size_t most_rounds = pairing.mate.size() / 2 + 1;
+  while (cut_crowding_pairs(soup, grouped, split.corner_vertex, pairing, counts) > 0) {
+    if (++counts.rounds > most_rounds)
+      throw std::logic_error("make_output_edges_manifold: cutting did not end");
     split = split_fans(soup, grouped.corner_face, pairing.mate);
   }
+  // 2. What is left on a crowded output edge is unpaired sides only. Two of them running
+  //    opposite ways are glued, as the output would glue them anyway: they already start and
+  //    end at the same output vertices, so their corners are in the same fans and gluing them
+  //    changes no fan (no new crowding). Two running the same way, or three or more, cannot
+  //    share an output edge: every pair runs opposite ways, so every fan is consistently
+  //    oriented and its two open ends are one side out of the vertex and one side into it.
+  std::vector<Index>& mate = pairing.mate;
+  const auto start = [&](Index c) {
+    const Index f = grouped.corner_face[c];
+    return split.corner_vertex[pairing.flipped[f] ? soup.next_corner(c, f) : c];
+  };
+  for_each_crowded_output_edge(
+      soup, grouped, split.corner_vertex, mate,
+      [&](const std::vector<Index>& pairs, const std::vector<Index>& open) {
+        if (!pairs.empty() || open.size() != 2 || start(open[0]) == start(open[1])) {
+          throw std::logic_error(
+              "make_output_edges_manifold: unpaired sides running the same way share an output "
+              "edge");
+        }
+        mate[open[0]] = open[1];
+        mate[open[1]] = open[0];
+        counts.implicitly_stitched += 2;
+      });
   return counts;
 }
 

@@ -15,23 +15,16 @@ namespace meshbridge::detail {
 //! - 1 contender: unpaired (boundary side).
 //! - 2 contenders: paired with each other, whichever way they run (orientation decides later
 //!   whether the pair is kept).
-//! - more: by `policy`. Pairs made here always run in opposite directions; what cannot be paired
-//!   that way stays unpaired ("cut"), for stitching to glue back after orientation.
+//! - more: by `policy` (the rules are stated in meshbridge/pairing.h, PairingPolicy). Pairs made
+//!   here always run in opposite directions; what cannot be paired that way stays unpaired
+//!   ("cut"), for stitching to glue back after orientation.
 //!
-//! Geometric policy, per singular edge with axis from its smaller to its larger vertex:
-//! contender faces are sorted by the angle of their in-face direction around the axis (Newell
-//! normals); faces at the same angle (coincident, within about 1e-7 rad) are ordered
-//! along-running first by increasing corner, then against-running by decreasing corner, so two
-//! solids touching face to face are never paired across the empty zero-width gap and coincident
-//! copies nest (see PairingPolicy::geometric). Regions of space are labelled by joining the face
-//! sides that see each other across every wedge of every edge; a face whose two sides lie in one
-//! region is a sheet. Then: (a) among non-sheet faces, cyclic neighbours whose wedge lies behind
-//! both are paired; (b) the same among everything still unpaired; (c) elimination pairs what is
-//! left, opposite-running sides only, in cyclic order. An edge with a contender face of zero area,
-//! or with coincident end points, falls back to the combinatorial rule.
-//!
-//! Combinatorial policy: in corner order, each unpaired side takes the first later unpaired side
-//! that runs the other way.
+//! Geometric policy, in the order the code runs: the angular order of every singular edge
+//! (angular_order.h: local directions, flat faces set apart, ties by face key); regions of space
+//! joined across every wedge, each voted material or void by the area of the faces around it;
+//! sheets (same region, or same kind, on both sides: ribs, fins, membranes); then per edge
+//! (a) non-sheet cyclic neighbours with the wedge behind both, (b) the same among the rest,
+//! (c) elimination of what is left, opposite-running only, the flat faces last.
 std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped,
                                    PairingPolicy policy);
 

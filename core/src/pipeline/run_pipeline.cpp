@@ -69,7 +69,6 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
   counts.sides_stitched += crowded.implicitly_stitched;
   counts.sides_stitched -= crowded.unstitched;
   counts.sides_cut_to_stay_manifold = crowded.pairs_cut;
-  counts.faces_detached = crowded.faces_detached;
   // Cuts can leave a closed part of a component that was open: orient again (fans do not
   // depend on orientation).
   if (crowded.rounds > 0 && options.orient)

@@ -29,7 +29,6 @@ struct PipelineCounts {
   std::size_t sides_stitched = 0;              //!< net: stitched, implicitly stitched, unstitched
   std::size_t faces_flipped = 0;               //!< faces reversed
   std::size_t sides_cut_to_stay_manifold = 0;  //!< pairs cut so output edges stay manifold
-  std::size_t faces_detached = 0;              //!< faces cut loose (last resort)
   std::size_t vertices_split = 0;              //!< vertex copies added
   std::size_t nonorientable_components = 0;
 };
