@@ -17,13 +17,14 @@ namespace {
 // with its paired sides (the smaller side of each pair) and its unpaired sides. Only sides on
 // singular edges or unpaired sides of 2-sided edges can land on one output edge with others.
 template <class Visit>
-void for_each_crowded_output_edge(const Soup& soup, const GroupedSides& grouped,
-                                  const std::vector<Index>& corner_vertex,
-                                  const std::vector<Index>& mate, Visit visit) {
+std::size_t for_each_crowded_output_edge(const Soup& soup, const GroupedSides& grouped,
+                                         const std::vector<Index>& corner_vertex,
+                                         const std::vector<Index>& mate, Visit visit) {
   const std::vector<Index>& corner_face = grouped.corner_face;
   const EdgeBridges& bridges = grouped.bridges;
   std::vector<std::tuple<Index, Index, Index>> keyed;  // (out low, out high, side)
   std::vector<Index> pairs, open;
+  std::size_t crowded = 0;
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
     const Index k = bridges.num_contenders(e);
     if (k < 2 || (k == 2 && mate[bridges.contenders[bridges.begin[e]]] != kNoIndex))
@@ -51,11 +52,14 @@ void for_each_crowded_output_edge(const Soup& soup, const GroupedSides& grouped,
           pairs.push_back(c);
         }
       }
-      if (j - i >= 2 && !(pairs.size() == 1 && open.empty()))
+      if (j - i >= 2 && !(pairs.size() == 1 && open.empty())) {
+        ++crowded;
         visit(pairs, open);
+      }
       i = j;
     }
   }
+  return crowded;
 }
 
 // One round of cuts: per output edge holding two or more pairs, all but one are cut (stitched
@@ -63,7 +67,7 @@ void for_each_crowded_output_edge(const Soup& soup, const GroupedSides& grouped,
 // output edge with unpaired sides is cut. Returns the number of pairs cut.
 std::size_t cut_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
                                const std::vector<Index>& corner_vertex, SidePairing& pairing,
-                               ManifoldEdgeCounts& counts) {
+                               ManifoldEdgeCounts& counts, std::size_t& crowded) {
   std::vector<Index>& mate = pairing.mate;
   const std::vector<char>& stitched = pairing.stitched;
   // Choices are made by face keys, which do not depend on face order or polygon start.
@@ -77,7 +81,7 @@ std::size_t cut_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
     return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
   };
   std::size_t cut = 0;
-  for_each_crowded_output_edge(
+  crowded = for_each_crowded_output_edge(
       soup, grouped, corner_vertex, mate,
       [&](const std::vector<Index>& pairs, const std::vector<Index>& open) {
         if (pairs.empty() || (pairs.size() == 1 && open.empty()))
@@ -111,7 +115,8 @@ ManifoldEdgeCounts make_output_edges_manifold(const Soup& soup, const GroupedSid
   // 1. Cuts. Each round cuts at least one pair and none is made, so there are at most as many
   //    rounds as pairs (one or two in practice); cutting only ever splits fans.
   const std::size_t most_rounds = pairing.mate.size() / 2 + 1;
-  while (cut_crowding_pairs(soup, grouped, split.corner_vertex, pairing, counts) > 0) {
+  std::size_t crowded = 0;
+  while (cut_crowding_pairs(soup, grouped, split.corner_vertex, pairing, counts, crowded) > 0) {
     if (++counts.rounds > most_rounds)
       throw std::logic_error("make_output_edges_manifold: cutting did not end");
     split = split_fans(soup, grouped.corner_face, pairing.mate);
@@ -122,6 +127,8 @@ ManifoldEdgeCounts make_output_edges_manifold(const Soup& soup, const GroupedSid
   //    changes no fan (no new crowding). Two running the same way, or three or more, cannot
   //    share an output edge: every pair runs opposite ways, so every fan is consistently
   //    oriented and its two open ends are one side out of the vertex and one side into it.
+  if (crowded == 0)
+    return counts;  // the last round saw no crowded output edge
   std::vector<Index>& mate = pairing.mate;
   const auto start = [&](Index c) {
     const Index f = grouped.corner_face[c];

@@ -74,14 +74,15 @@ void pair_behind_neighbours(const std::vector<OrderedSide>& cycle, std::vector<I
 // Per face: 1 if it separates no material from void (see pair_contenders).
 std::vector<char> sheets(const Soup& soup, UnionFind& regions) {
   const std::size_t num_faces = soup.num_faces();
-  std::vector<double> vote(2 * num_faces, 0.0), weight(2 * num_faces, 0.0);
+  std::vector<double> vote(2 * num_faces, 0.0);
+  std::vector<float> weight(2 * num_faces, 0.0f);  // only scales the rounding tolerance
   for (Index f = 0; f < num_faces; ++f) {
     const double area = newell_normal(soup, f).norm();
     const Index front = regions.find(2 * f), back = regions.find(2 * f + 1);
     vote[front] -= area;
     vote[back] += area;
-    weight[front] += area;
-    weight[back] += area;
+    weight[front] += static_cast<float>(area);
+    weight[back] += static_cast<float>(area);
   }
   // Votes that cancel to rounding (a face and its reversed copy) say nothing.
   const auto kind = [&](Index r) {
