@@ -69,6 +69,8 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   validate_soup(soup);
   RepairResult result;
   RepairReport& report = result.report;
+  // Pre-passes on the soup (closing gaps: welding, T-junction cracks) go here, before the
+  // polygons are made simple: everything below, the pipeline included, works on their result.
   // The simple polygons actually built; their grouping is reused below when nothing is removed.
   const detail::WorkingSoup simple(soup);
   detail::GroupedSides grouped = detail::group_sides(simple.soup());
