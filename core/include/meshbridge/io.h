@@ -16,6 +16,11 @@ struct ReadInfo {
   std::size_t declared_vertices = 0;  //!< 'v' records (OBJ) or header count (OFF, PLY); 0: unknown
   std::size_t declared_faces = 0;     //!< 'f' records (OBJ) or header count (OFF, PLY); 0: unknown
   std::size_t faces_dropped_by_reader = 0;  //!< declared faces the reader never passed on
+  std::size_t faces_kept = 0;       //!< polygons in the soup as the file had them
+  std::size_t faces_split = 0;      //!< pinched polygons split into simple ones
+  std::size_t faces_set_aside = 0;  //!< face records with < 3 distinct corners, not in the soup
+  std::size_t dangling_edges = 0;   //!< edge records (OBJ `l`, PLY `edge`), not in the soup
+  std::size_t lone_points = 0;      //!< point records (OBJ `p`), not in the soup
 };
 
 //! Reads the raw soup of a mesh file: every vertex and polygon as the file has them, captured by

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+//! \file file_job.h
+//! Batch repair, one file at a time: plan the jobs of a folder, then read -> repair -> write
+//! each one. `meshbridge batch` and the Python batch both run these, in any order and in
+//! parallel, and sort the records by `name`; so their output is byte-identical.
+
+#include "meshbridge/repair.h"
+#include "meshbridge/report_json.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace meshbridge {
+
+//! What became of one file.
+enum class FileStatus {
+  clean,     //!< read, had no defect, written unchanged
+  repaired,  //!< read, had defects, repaired and written
+  failed,    //!< could not be read, repaired or written (see FileJobResult::reason)
+  skipped    //!< not attempted: output up to date (--resume) or input unreadable
+};
+
+//! "clean", "repaired", "failed" or "skipped".
+const char* to_string(FileStatus status);
+
+//! One file of a batch.
+struct FileJob {
+  std::string input;   //!< path of the mesh to read
+  std::string output;  //!< path to write (its folder is created when missing)
+  std::string name;    //!< the record's `file`: input relative to the batch's INDIR, '/'-separated
+};
+
+//! Options of plan_batch and run_file_job, every default documented.
+struct FileJobOptions {
+  RepairOptions repair;  //!< default: the full repair (see RepairOptions)
+  //! Output format ("obj", "off", "ply" or "stl", any case); empty (default): as the input.
+  std::string format;
+  //! Skip a file whose output exists and is newer than the input (default false).
+  bool resume = false;
+  //! Element lists in the record (default false: counts only), see ReportJsonOptions.
+  bool elements = false;
+};
+
+//! What plan_batch found below a folder.
+struct BatchPlan {
+  std::vector<FileJob> jobs;  //!< sorted by name (byte order)
+  //! Folders and files below INDIR that could not be listed or opened: path relative to INDIR
+  //! ('/'-separated) and the OS reason. Their records are `skipped` (see skipped_record).
+  struct Unreadable {
+    std::string name;
+    std::string reason;
+  };
+  std::vector<Unreadable> unreadable;
+};
+
+//! Lists every mesh file (is_supported_mesh_file) below `in_dir`, recursively, and maps each to
+//! its output below `out_dir` at the same relative path; with `options.format` the extension is
+//! replaced, and when two inputs would meet in one output (a.obj and a.off to a.ply) the later
+//! one in name order becomes a-off.ply. An unreadable folder is noted and skipped, never fatal.
+//! \pre `out_dir` is neither `in_dir` nor inside it, unless `in_place` (then outputs replace
+//! the inputs, and `options.format` must be empty)
+//! \throw std::invalid_argument naming the path: `in_dir` missing or not a folder, `out_dir`
+//! equal to or inside `in_dir` without `in_place`, a bad `options.format`
+BatchPlan plan_batch(const std::string& in_dir, const std::string& out_dir,
+                     const FileJobOptions& options, bool in_place = false);
+
+//! The outcome of run_file_job.
+struct FileJobResult {
+  FileStatus status = FileStatus::failed;
+  std::string reason;  //!< failed or skipped: why, naming the path; empty otherwise
+  std::string record;  //!< the JSON Lines record (batch_record_json), no trailing newline
+  RepairReport report;  //!< clean or repaired: what repair did; empty otherwise
+};
+
+//! Reads `job.input`, repairs it with `options.repair`, writes `job.output` atomically (creating
+//! its folder). Never throws for a bad file: every error becomes a `failed` result whose reason
+//! names the path and the cause (OS reason included). With `options.resume` an output newer
+//! than the input is `skipped`. An input that cannot be opened (permission) is `skipped`.
+//! Thread-safe: jobs with distinct outputs may run concurrently.
+FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options = {});
+
+//! The `skipped` record of an unreadable entry from BatchPlan::unreadable.
+std::string skipped_record(const BatchPlan::Unreadable& entry);
+
+}  // namespace meshbridge
