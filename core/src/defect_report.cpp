@@ -1,51 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/defect_report.h"
 
-#include "json_writer.h"
-
 #include <sstream>
 
 namespace meshbridge {
-
-namespace detail {
-
-JsonObject& JsonObject::string(const char* key, const std::string& value) {
-  next(key);
-  out_ << '"';
-  for (char ch : value) {
-    if (ch == '"' || ch == '\\') {
-      out_ << '\\' << ch;
-    } else if (static_cast<unsigned char>(ch) < 0x20) {
-      static const char* hex = "0123456789abcdef";
-      out_ << "\\u00" << hex[(ch >> 4) & 0xf] << hex[ch & 0xf];
-    } else {
-      out_ << ch;
-    }
-  }
-  out_ << '"';
-  return *this;
-}
-
-JsonObject& JsonObject::indices(const char* key, const std::vector<Index>& values) {
-  next(key);
-  out_ << '[';
-  for (std::size_t i = 0; i < values.size(); ++i)
-    out_ << (i ? "," : "") << values[i];
-  out_ << ']';
-  return *this;
-}
-
-JsonObject& JsonObject::pairs(const char* key, const std::vector<VertexPair>& values) {
-  next(key);
-  out_ << '[';
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    out_ << (i ? "," : "") << '[' << values[i].v0 << ',' << values[i].v1 << ']';
-  }
-  out_ << ']';
-  return *this;
-}
-
-}  // namespace detail
 
 bool DefectReport::has_defects() const {
   return !singular_edges.empty() || num_singular_vertices() > 0 || !boundary_edges.empty() ||
@@ -97,41 +55,6 @@ std::string to_text(const DefectReport& r, std::size_t max_listed) {
   list(out, "zero-area faces", r.zero_area_faces, max_listed, index);
   list(out, "duplicate faces", r.duplicate_faces, max_listed, index);
   return out.str();
-}
-
-std::string to_json(const DefectReport& r) {
-  std::ostringstream singular;
-  singular << '[';
-  for (std::size_t i = 0; i < r.singular_edges.size(); ++i) {
-    const SingularEdge& e = r.singular_edges[i];
-    singular << (i ? "," : "") << "{\"vertices\":[" << e.vertices.v0 << ',' << e.vertices.v1
-             << "],\"contenders\":" << e.contenders << '}';
-  }
-  singular << ']';
-  return detail::JsonObject()
-      .number("vertices", r.num_vertices)
-      .number("faces", r.num_faces)
-      .number("edges", r.num_edges)
-      .number("components", r.num_components)
-      .number("euler_characteristic", r.euler_characteristic)
-      .boolean("watertight", r.watertight)
-      .boolean("has_defects", r.has_defects())
-      .number("singular_edge_count", r.singular_edges.size())
-      .number("singular_vertex_count", r.num_singular_vertices())
-      .number("boundary_edge_count", r.boundary_edges.size())
-      .number("boundary_loops", r.num_boundary_loops)
-      .number("nonorientable_components", r.num_nonorientable_components)
-      .raw("singular_edges", singular.str())
-      .indices("singular_edge_vertices", r.singular_edge_vertices)
-      .indices("pinch_vertices", r.pinch_vertices)
-      .pairs("boundary_edges", r.boundary_edges)
-      .pairs("inconsistent_edges", r.inconsistent_edges)
-      .indices("isolated_vertices", r.isolated_vertices)
-      .indices("degenerate_faces", r.degenerate_faces)
-      .indices("excluded_faces", r.excluded_faces)
-      .indices("zero_area_faces", r.zero_area_faces)
-      .indices("duplicate_faces", r.duplicate_faces)
-      .str();
 }
 
 }  // namespace meshbridge

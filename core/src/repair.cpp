@@ -5,7 +5,6 @@
 #include "meshbridge/validate.h"
 
 #include "detection.h"
-#include "json_writer.h"
 #include "pipeline/run_pipeline.h"
 #include "release_memory.h"
 #include "working_soup.h"
@@ -182,38 +181,9 @@ std::string to_text(const RepairReport& r) {
       << "; boundary edges: " << r.boundary_edges_before << " -> " << r.boundary_edges_after
       << "; non-orientable components: " << r.nonorientable_components << "\n";
   out << "after: singular edges " << r.after.singular_edges.size() << ", singular vertices "
-      << r.after.num_singular_vertices() << ", closed " << (r.after.watertight ? "yes" : "no")
+      << r.after.num_singular_vertices() << ", watertight " << (r.after.watertight ? "yes" : "no")
       << "\n";
   return out.str();
-}
-
-std::string to_json(const RepairReport& r) {
-  return detail::JsonObject()
-      .number("faces_in", r.faces_in)
-      .number("faces_out", r.faces_out)
-      .number("faces_set_aside", r.faces_set_aside)
-      .number("faces_split", r.faces_split)
-      .number("faces_added_by_split", r.faces_added_by_split)
-      .number("duplicate_faces_removed", r.duplicate_faces_removed)
-      .number("degenerate_faces_removed", r.degenerate_faces_removed)
-      .number("isolated_vertices_removed", r.isolated_vertices_removed)
-      .number("vertices_in", r.vertices_in)
-      .number("vertices_out", r.vertices_out)
-      .number("vertices_split", r.vertices_split)
-      .number("sides_cut", r.sides_cut)
-      .number("sides_cut_for_orientation", r.sides_cut_for_orientation)
-      .number("sides_stitched", r.sides_stitched)
-      .number("faces_flipped", r.faces_flipped)
-      .number("sides_cut_to_stay_manifold", r.sides_cut_to_stay_manifold)
-      .number("faces_detached", r.faces_detached)
-      .number("components_before", r.components_before)
-      .number("components_after", r.components_after)
-      .number("boundary_edges_before", r.boundary_edges_before)
-      .number("boundary_edges_after", r.boundary_edges_after)
-      .number("nonorientable_components", r.nonorientable_components)
-      .raw("before", to_json(r.before))
-      .raw("after", to_json(r.after))
-      .str();
 }
 
 }  // namespace meshbridge

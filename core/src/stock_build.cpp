@@ -3,7 +3,6 @@
 
 #include "meshbridge/validate.h"
 
-#include "json_writer.h"
 #include "openmesh_streams.h"
 #include "union_find.h"
 
@@ -70,19 +69,6 @@ std::string to_text(const StockBuildReport& r) {
       << " detached on copied vertices, " << r.faces_lost << " lost), boundary edges "
       << r.boundary_edges << ", components " << r.components << "\n";
   return out.str();
-}
-
-std::string to_json(const StockBuildReport& r) {
-  return detail::JsonObject()
-      .number("faces_in", r.faces_in)
-      .number("vertices_in", r.vertices_in)
-      .number("vertices_created", r.vertices_created)
-      .number("faces_kept", r.faces_kept)
-      .number("faces_detached", r.faces_detached)
-      .number("faces_lost", r.faces_lost)
-      .number("boundary_edges", r.boundary_edges)
-      .number("components", r.components)
-      .str();
 }
 
 }  // namespace meshbridge

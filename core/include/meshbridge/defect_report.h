@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 //! \file defect_report.h
-//! What detection finds: counts and element lists, printable as text and JSON.
+//! What detection finds: counts and element lists, printable as text (JSON: report_json.h).
 
 #include "meshbridge/soup.h"
 
@@ -57,7 +57,5 @@ struct DefectReport {
 
 //! Human-readable block of counts, followed by the first `max_listed` elements of each list.
 std::string to_text(const DefectReport& report, std::size_t max_listed = 10);
-//! Complete JSON object with counts and full element lists.
-std::string to_json(const DefectReport& report);
 
 }  // namespace meshbridge

@@ -30,6 +30,7 @@ struct FileJob {
   std::string input;   //!< path of the mesh to read
   std::string output;  //!< path to write (its folder is created when missing)
   std::string name;    //!< the record's `file`: input relative to the batch's INDIR, '/'-separated
+  std::string output_name;  //!< the record's `output`: relative to OUTDIR, '/'-separated
 };
 
 //! Options of plan_batch and run_file_job, every default documented.
@@ -78,7 +79,9 @@ struct FileJobResult {
 //! its folder). Never throws for a bad file: every error becomes a `failed` result whose reason
 //! names the path and the cause (OS reason included). With `options.resume` an output newer
 //! than the input is `skipped`. An input that cannot be opened (permission) is `skipped`.
-//! Thread-safe: jobs with distinct outputs may run concurrently.
+//! Thread-safe: jobs with distinct outputs may run concurrently (OpenMesh's reader and writer
+//! objects are process-wide singletons, so reading and writing take turns under one lock;
+//! repair, most of the time, runs in parallel).
 FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options = {});
 
 //! The `skipped` record of an unreadable entry from BatchPlan::unreadable.

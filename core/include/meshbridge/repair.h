@@ -72,8 +72,7 @@ struct RepairResult {
 //! \pre `soup` passes validate_soup() \throw InvalidSoupError naming the offending element
 RepairResult repair(const Soup& soup, const RepairOptions& options = {});
 
-//! Text and JSON forms of the counts (the embedded detection reports included in JSON).
+//! Text form of the counts (JSON: repair_report_json() in report_json.h).
 std::string to_text(const RepairReport& report);
-std::string to_json(const RepairReport& report);
 
 }  // namespace meshbridge

@@ -41,6 +41,5 @@ struct StockBuildOptions {
 StockBuild build_stock(const Soup& soup, const StockBuildOptions& options = {});
 
 std::string to_text(const StockBuildReport& report);
-std::string to_json(const StockBuildReport& report);
 
 }  // namespace meshbridge

@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "meshbridge/file_job.h"
+
+#include "meshbridge/io.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <new>
+#include <set>
+#include <stdexcept>
+#include <system_error>
+
+namespace meshbridge {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+//! OpenMesh's readers and writers keep per-call state in process-wide singletons (and mute its
+//! global error stream): one file at a time goes through them.
+std::mutex& openmesh_io_lock() {
+  static std::mutex lock;
+  return lock;
+}
+
+std::string lower(std::string text) {
+  for (auto& ch : text)
+    ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return text;
+}
+
+//! True if `inner` is `outer` or lies below it (both absolute and normalised).
+bool is_within(const fs::path& inner, const fs::path& outer) {
+  auto i = inner.begin();
+  for (auto o = outer.begin(); o != outer.end(); ++o, ++i) {
+    if (o->empty())  // trailing separator
+      continue;
+    if (i == inner.end() || *i != *o)
+      return false;
+  }
+  return true;
+}
+
+fs::path normalised(const fs::path& path) {
+  std::error_code error;
+  fs::path result = fs::weakly_canonical(fs::absolute(path, error), error);
+  return error ? fs::absolute(path).lexically_normal() : result;
+}
+
+//! Depth-first walk that notes every folder it cannot list instead of stopping there. Folder
+//! symlinks are not followed (no cycles); file symlinks are.
+void walk(const fs::path& root, const fs::path& dir, std::vector<fs::path>& files,
+          std::vector<BatchPlan::Unreadable>& unreadable) {
+  std::error_code error;
+  fs::directory_iterator it(dir, error);
+  if (error) {
+    unreadable.push_back({fs::relative(dir, root).generic_string(),
+                          "cannot list the folder (" + error.message() + ")"});
+    return;
+  }
+  for (; it != fs::directory_iterator(); it.increment(error)) {
+    if (error)
+      break;
+    const fs::directory_entry& entry = *it;
+    std::error_code status_error;
+    if (entry.is_symlink(status_error) == false && entry.is_directory(status_error)) {
+      walk(root, entry.path(), files, unreadable);
+    } else if (entry.is_regular_file(status_error) &&
+               is_supported_mesh_file(entry.path().string())) {
+      files.push_back(entry.path());
+    }
+  }
+  if (error) {
+    unreadable.push_back({fs::relative(dir, root).generic_string(),
+                          "cannot list the whole folder (" + error.message() + ")"});
+  }
+}
+
+}  // namespace
+
+const char* to_string(FileStatus status) {
+  switch (status) {
+    case FileStatus::clean:
+      return "clean";
+    case FileStatus::repaired:
+      return "repaired";
+    case FileStatus::failed:
+      return "failed";
+    case FileStatus::skipped:
+      return "skipped";
+  }
+  return "failed";
+}
+
+BatchPlan plan_batch(const std::string& in_dir, const std::string& out_dir,
+                     const FileJobOptions& options, bool in_place) {
+  std::error_code error;
+  if (!fs::exists(in_dir, error))
+    throw std::invalid_argument(in_dir + ": no such folder");
+  if (!fs::is_directory(in_dir, error))
+    throw std::invalid_argument(in_dir + ": not a folder");
+  const std::string format = lower(options.format);
+  if (!format.empty() && !is_supported_mesh_file("x." + format))
+    throw std::invalid_argument("format must be obj, off, ply or stl, got '" + options.format +
+                                "'");
+  if (in_place && !format.empty())
+    throw std::invalid_argument("in place, the format cannot change (outputs replace inputs)");
+  const fs::path in_abs = normalised(in_dir), out_abs = normalised(out_dir);
+  if (!in_place && is_within(out_abs, in_abs)) {
+    throw std::invalid_argument(
+        out_dir + (out_abs == in_abs ? ": is the input folder" : ": is inside the input folder ") +
+        (out_abs == in_abs ? "" : in_dir) +
+        "; the repaired files would replace or mix with the originals (use --in-place to "
+        "overwrite the originals on purpose)");
+  }
+
+  BatchPlan plan;
+  std::vector<fs::path> files;
+  walk(in_dir, in_dir, files, plan.unreadable);
+  std::vector<std::pair<std::string, fs::path>> named;
+  for (const fs::path& file : files) {
+    const std::string name = fs::relative(file, in_dir).generic_string();
+    if (::access(file.c_str(), R_OK) != 0) {
+      plan.unreadable.push_back({name, "cannot open the file (" + std::string(std::strerror(errno)) + ")"});
+      continue;
+    }
+    named.emplace_back(name, file);
+  }
+  std::sort(named.begin(), named.end());
+  std::sort(plan.unreadable.begin(), plan.unreadable.end(),
+            [](const auto& a, const auto& b) { return a.name < b.name; });
+
+  std::set<std::string> taken;
+  for (const auto& [name, file] : named) {
+    FileJob job;
+    job.input = file.string();
+    job.name = name;
+    fs::path relative = name;
+    if (in_place) {
+      job.output = job.input;
+      job.output_name = name;
+      plan.jobs.push_back(job);
+      continue;
+    }
+    if (!format.empty()) {
+      // a.obj and a.off both going to a.ply: the later one becomes a-off.ply.
+      const std::string original = relative.extension().string();
+      relative.replace_extension("." + format);
+      if (taken.count(relative.generic_string()) > 0) {
+        relative.replace_filename(relative.stem().string() + "-" + original.substr(1) + "." +
+                                  format);
+      }
+    }
+    taken.insert(relative.generic_string());
+    job.output_name = relative.generic_string();
+    job.output = (fs::path(out_dir) / relative).string();
+    plan.jobs.push_back(job);
+  }
+  return plan;
+}
+
+FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
+  FileJobResult result;
+  const ReportJsonOptions json{options.elements, -1};
+  const auto finish = [&](FileStatus status, const std::string& reason, const RepairReport* report,
+                          const ReadInfo* read) {
+    result.status = status;
+    result.reason = reason;
+    result.record =
+        batch_record_json(job.name, job.output_name, to_string(status), reason, report, read, json);
+    return result;
+  };
+
+  std::error_code error;
+  if (options.resume && fs::exists(job.output, error) && job.output != job.input) {
+    const auto out_time = fs::last_write_time(job.output, error);
+    const auto in_time = fs::last_write_time(job.input, error);
+    if (!error && out_time > in_time)
+      return finish(FileStatus::skipped, job.output + " is newer than the input", nullptr, nullptr);
+  }
+  if (::access(job.input.c_str(), R_OK) != 0) {
+    return finish(FileStatus::skipped,
+                  job.input + ": cannot open the file (" + std::strerror(errno) + ")", nullptr,
+                  nullptr);
+  }
+  ReadInfo info;
+  bool read = false;
+  try {
+    Soup soup;
+    {
+      const std::lock_guard<std::mutex> guard(openmesh_io_lock());
+      soup = read_soup(job.input, &info);
+    }
+    read = true;
+    RepairResult repaired = repair(soup, options.repair);
+    soup = Soup();
+    const fs::path folder = fs::path(job.output).parent_path();
+    if (!folder.empty()) {
+      fs::create_directories(folder, error);
+      if (error) {
+        return finish(FileStatus::failed,
+                      folder.string() + ": cannot create the folder (" + error.message() + ")",
+                      nullptr, &info);
+      }
+      if (::access(folder.c_str(), W_OK) != 0) {
+        return finish(FileStatus::failed,
+                      folder.string() + ": cannot write here (" + std::strerror(errno) + ")",
+                      nullptr, &info);
+      }
+    }
+    {
+      const std::lock_guard<std::mutex> guard(openmesh_io_lock());
+      write_mesh(job.output, repaired.mesh);
+    }
+    result.report = std::move(repaired.report);
+    const RepairReport& r = result.report;
+    const bool clean = !r.before.has_defects() && r.faces_flipped == 0 &&
+                       info.faces_dropped_by_reader == 0;
+    return finish(clean ? FileStatus::clean : FileStatus::repaired, "", &r, &info);
+  } catch (const std::bad_alloc&) {
+    return finish(FileStatus::failed, job.input + ": out of memory", nullptr, read ? &info : nullptr);
+  } catch (const std::exception& failure) {
+    return finish(FileStatus::failed, failure.what(), nullptr, read ? &info : nullptr);
+  }
+}
+
+std::string skipped_record(const BatchPlan::Unreadable& entry) {
+  return batch_record_json(entry.name, "", to_string(FileStatus::skipped), entry.reason, nullptr);
+}
+
+}  // namespace meshbridge

@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The report schema (docs/report-schema.md), written with nlohmann-json. Key order is fixed by
+// nlohmann::ordered_json, so equal reports give equal bytes.
+#include "meshbridge/report_json.h"
+
+#include <nlohmann/json.hpp>
+
+namespace meshbridge {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json pair_list(const std::vector<VertexPair>& pairs) {
+  Json list = Json::array();
+  for (const VertexPair& p : pairs)
+    list.push_back({p.v0, p.v1});
+  return list;
+}
+
+Json read_json(const ReadInfo& info) {
+  return Json{{"declared_vertices", info.declared_vertices},
+              {"declared_faces", info.declared_faces},
+              {"faces_kept", info.faces_kept},
+              {"faces_split", info.faces_split},
+              {"faces_set_aside", info.faces_set_aside},
+              {"dangling_edges", info.dangling_edges},
+              {"lone_points", info.lone_points}};
+}
+
+//! The counts of a detection report, then its element lists on request.
+void add_defects(Json& out, const DefectReport& r, bool elements) {
+  out["vertices"] = r.num_vertices;
+  out["faces"] = r.num_faces;
+  out["edges"] = r.num_edges;
+  out["components"] = r.num_components;
+  out["euler_characteristic"] = r.euler_characteristic;
+  out["watertight"] = r.watertight;
+  out["has_defects"] = r.has_defects();
+  out["singular_edges"] = r.singular_edges.size();
+  out["singular_vertices"] = r.num_singular_vertices();
+  out["singular_edge_vertices"] = r.singular_edge_vertices.size();
+  out["pinch_vertices"] = r.pinch_vertices.size();
+  out["boundary_edges"] = r.boundary_edges.size();
+  out["boundary_loops"] = r.num_boundary_loops;
+  out["inconsistent_edges"] = r.inconsistent_edges.size();
+  out["nonorientable_components"] = r.num_nonorientable_components;
+  out["isolated_vertices"] = r.isolated_vertices.size();
+  out["degenerate_faces"] = r.degenerate_faces.size();
+  out["faces_set_aside"] = r.excluded_faces.size();
+  out["zero_area_faces"] = r.zero_area_faces.size();
+  out["duplicate_faces"] = r.duplicate_faces.size();
+  if (!elements)
+    return;
+  Json singular = Json::array();
+  for (const SingularEdge& e : r.singular_edges)
+    singular.push_back({{"vertices", {e.vertices.v0, e.vertices.v1}}, {"contenders", e.contenders}});
+  out["elements"] = Json{{"singular_edges", std::move(singular)},
+                         {"singular_edge_vertices", r.singular_edge_vertices},
+                         {"pinch_vertices", r.pinch_vertices},
+                         {"boundary_edges", pair_list(r.boundary_edges)},
+                         {"inconsistent_edges", pair_list(r.inconsistent_edges)},
+                         {"isolated_vertices", r.isolated_vertices},
+                         {"degenerate_faces", r.degenerate_faces},
+                         {"faces_set_aside", r.excluded_faces},
+                         {"zero_area_faces", r.zero_area_faces},
+                         {"duplicate_faces", r.duplicate_faces}};
+}
+
+void add_repair(Json& out, const RepairReport& r, bool elements) {
+  out["faces_in"] = r.faces_in;
+  out["faces_out"] = r.faces_out;
+  out["faces_set_aside"] = r.faces_set_aside;
+  out["faces_split"] = r.faces_split;
+  out["faces_added_by_split"] = r.faces_added_by_split;
+  out["faces_flipped"] = r.faces_flipped;
+  out["faces_detached"] = r.faces_detached;
+  out["duplicate_faces_removed"] = r.duplicate_faces_removed;
+  out["degenerate_faces_removed"] = r.degenerate_faces_removed;
+  out["vertices_in"] = r.vertices_in;
+  out["vertices_out"] = r.vertices_out;
+  out["vertices_split"] = r.vertices_split;
+  out["isolated_vertices_removed"] = r.isolated_vertices_removed;
+  out["sides_cut"] = r.sides_cut;
+  out["sides_cut_for_orientation"] = r.sides_cut_for_orientation;
+  out["sides_cut_to_stay_manifold"] = r.sides_cut_to_stay_manifold;
+  out["sides_stitched"] = r.sides_stitched;
+  Json before = Json::object(), after = Json::object();
+  add_defects(before, r.before, elements);
+  add_defects(after, r.after, elements);
+  out["before"] = std::move(before);
+  out["after"] = std::move(after);
+}
+
+Json header(const char* kind, const std::string& file) {
+  return Json{{"schema_version", kReportSchemaVersion}, {"kind", kind}, {"file", file}};
+}
+
+std::string dump(const Json& json, int indent) {
+  return json.dump(indent < 0 ? -1 : indent, ' ', false, Json::error_handler_t::replace);
+}
+
+Json figures(const BuildFigures& f) {
+  return Json{{"vertices", f.vertices},       {"faces_kept", f.faces_kept},
+              {"faces_detached", f.faces_detached}, {"faces_lost", f.faces_lost},
+              {"boundary_edges", f.boundary_edges}, {"components", f.components}};
+}
+
+}  // namespace
+
+std::string check_report_json(const std::string& file, const DefectReport& report,
+                              const ReadInfo* read, const ReportJsonOptions& options) {
+  Json out = header("check", file);
+  if (read)
+    out["read"] = read_json(*read);
+  add_defects(out, report, options.elements);
+  return dump(out, options.indent);
+}
+
+std::string repair_report_json(const std::string& file, const std::string& output,
+                               const RepairReport& report, const ReadInfo* read,
+                               const ReportJsonOptions& options) {
+  Json out = header("repair", file);
+  if (!output.empty())
+    out["output"] = output;
+  if (read)
+    out["read"] = read_json(*read);
+  add_repair(out, report, options.elements);
+  return dump(out, options.indent);
+}
+
+std::string compare_report_json(const std::string& file, std::size_t soup_vertices,
+                                std::size_t soup_faces, const BuildFigures& stock,
+                                const BuildFigures& bridged, const ReportJsonOptions& options) {
+  Json out = header("compare", file);
+  out["vertices"] = soup_vertices;
+  out["faces"] = soup_faces;
+  out["stock"] = figures(stock);
+  out["bridged"] = figures(bridged);
+  return dump(out, options.indent);
+}
+
+std::string batch_record_json(const std::string& file, const std::string& output,
+                              const char* status, const std::string& reason,
+                              const RepairReport* report, const ReadInfo* read,
+                              const ReportJsonOptions& options) {
+  Json out = header("batch", file);
+  if (!output.empty())
+    out["output"] = output;
+  out["status"] = status;
+  if (!reason.empty())
+    out["reason"] = reason;
+  if (read)
+    out["read"] = read_json(*read);
+  if (report)
+    add_repair(out, *report, options.elements);
+  return dump(out, options.indent);
+}
+
+std::string to_valid_utf8(const std::string& bytes) {
+  // A JSON string dumped with replacement is quoted and escaped; parse it back to get the bytes.
+  return Json::parse(Json(bytes).dump(-1, ' ', false, Json::error_handler_t::replace))
+      .get<std::string>();
+}
+
+}  // namespace meshbridge
