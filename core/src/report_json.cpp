@@ -38,6 +38,10 @@ void add_defects(Json& out, const DefectReport& r, bool elements) {
   out["watertight"] = r.watertight;
   out["has_defects"] = r.has_defects();
   out["singular_edges"] = r.singular_edges.size();
+  std::size_t contenders = 0;
+  for (const SingularEdge& e : r.singular_edges)
+    contenders += e.contenders;
+  out["singular_edge_contenders"] = contenders;
   out["singular_vertices"] = r.num_singular_vertices();
   out["singular_edge_vertices"] = r.singular_edge_vertices.size();
   out["pinch_vertices"] = r.pinch_vertices.size();
