@@ -1,28 +1,57 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "arguments.h"
 #include "commands.h"
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
+#include "meshbridge/report_json.h"
+
+#include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <memory>
 
 namespace meshbridge::cli {
 
-int check_command(const std::vector<std::string>& args) {
-  const Arguments arguments(args, {"json"}, {});
-  arguments.expect_positionals(1, "meshbridge check FILE [--json]");
-  const std::string& path = arguments.positionals()[0];
+namespace {
+
+struct CheckArguments {
+  std::string file;
+  bool json = false;
+  bool elements = false;
+};
+
+int run_check(const CheckArguments& arguments) {
+  const std::string& path = arguments.file;
   ReadInfo info;
   const Soup soup = read_soup(path, &info);
   warn_about_reader(path, info);
   const DefectReport report = detect_defects(soup);
-  if (arguments.flag("json")) {
-    std::cout << to_json(report) << "\n";
+  if (arguments.json) {
+    ReportJsonOptions json;
+    json.elements = arguments.elements;
+    std::cout << check_report_json(path, report, &info, json) << "\n";
   } else {
     std::cout << path << "\n" << to_text(report);
   }
   return report.has_defects() || info.faces_dropped_by_reader > 0 ? kDefectsFound : kOk;
+}
+
+}  // namespace
+
+void add_check_command(CLI::App& app, int& exit_code) {
+  auto arguments = std::make_shared<CheckArguments>();
+  CLI::App* command = app.add_subcommand(
+      "check",
+      "Report singular edges and vertices, boundaries and other defects of FILE.\n"
+      "Exit 0 = no defect, 1 = defects found, 2 = error.");
+  command->add_option("FILE", arguments->file, "mesh to check (.obj, .off, .ply, .stl)")
+      ->required();
+  command->add_flag("--json", arguments->json,
+                    "print the report as JSON instead of text (docs/report-schema.md)");
+  command->add_flag("--elements", arguments->elements,
+                    "with --json: also list the defective elements (vertex indices, edges); "
+                    "default counts only");
+  command->callback([arguments, &exit_code] { exit_code = run_check(*arguments); });
 }
 
 }  // namespace meshbridge::cli

@@ -1,24 +1,42 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The subcommands of `meshbridge`. Each returns an exit code (see ExitCode) and throws
-// UsageError or a meshbridge error for main() to print.
+// The subcommands of `meshbridge`. Each add_*_command() declares its subcommand's arguments on
+// the CLI11 app (every option with its default, shown by `meshbridge COMMAND --help`) and a
+// callback that runs it and stores the exit code (see ExitCode) in `exit_code`. A callback
+// throws UsageError or a meshbridge error for main() to print as one line.
 
 #include "meshbridge/io.h"
 
+#include <stdexcept>
 #include <string>
-#include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace meshbridge::cli {
+
+//! Exit codes every command uses.
+enum ExitCode { kOk = 0, kDefectsFound = 1, kError = 2 };
+
+//! A usage mistake found after parsing (e.g. an output name with an unknown extension): printed
+//! as one line, exit code 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 //! Tells on stderr about face records the file reader dropped (OpenMesh's OBJ reader skips
 //! faces with fewer than 3 distinct vertices without a word).
 void warn_about_reader(const std::string& path, const ReadInfo& info);
 
-int check_command(const std::vector<std::string>& args);
-int compare_command(const std::vector<std::string>& args);
-int repair_command(const std::vector<std::string>& args);
-int batch_command(const std::vector<std::string>& args);
+void add_check_command(CLI::App& app, int& exit_code);
+void add_compare_command(CLI::App& app, int& exit_code);
+void add_repair_command(CLI::App& app, int& exit_code);
+void add_batch_command(CLI::App& app, int& exit_code);
 //! Draws the defects with Qt on the "offscreen" platform and writes a PNG (cli/defect_snapshot.h).
-int snapshot_command(const std::vector<std::string>& args);
+void add_snapshot_command(CLI::App& app, int& exit_code);
+//! Prints what each line and word of the reports means (cli/explain_command.cpp).
+void add_explain_command(CLI::App& app, int& exit_code);
 
 }  // namespace meshbridge::cli

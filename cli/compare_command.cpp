@@ -1,52 +1,60 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "arguments.h"
 #include "commands.h"
 
 #include "meshbridge/bridged_mesh.h"
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
+#include "meshbridge/report_json.h"
 #include "meshbridge/stock_build.h"
+
+#include <CLI/CLI.hpp>
 
 #include <iomanip>
 #include <iostream>
+#include <memory>
 
 namespace meshbridge::cli {
 
 namespace {
 
-struct Figures {
-  std::size_t vertices, faces, detached, lost, boundary_edges, components;
+struct CompareArguments {
+  std::string file;
+  bool json = false;
 };
 
-Figures bridged_figures(const BridgedMesh& bridged, const Soup& soup) {
+BuildFigures bridged_figures(const BridgedMesh& bridged, const Soup& soup) {
   const DefectReport report = detect_defects(bridged.indexed.soup);
-  return {bridged.mesh.n_vertices(),
-          bridged.mesh.n_faces(),
-          0,
-          soup.num_faces() - bridged.mesh.n_faces(),
-          report.boundary_edges.size(),
-          report.num_components};
+  BuildFigures figures;
+  figures.vertices = bridged.mesh.n_vertices();
+  figures.faces_kept = bridged.mesh.n_faces();
+  figures.faces_lost = soup.num_faces() - bridged.mesh.n_faces();
+  figures.boundary_edges = report.boundary_edges.size();
+  figures.components = report.num_components;
+  return figures;
 }
 
-}  // namespace
+BuildFigures stock_figures(const StockBuildReport& s) {
+  BuildFigures figures;
+  figures.vertices = s.vertices_created;
+  figures.faces_kept = s.faces_kept;
+  figures.faces_detached = s.faces_detached;
+  figures.faces_lost = s.faces_lost;
+  figures.boundary_edges = s.boundary_edges;
+  figures.components = s.components;
+  return figures;
+}
 
-int compare_command(const std::vector<std::string>& args) {
-  const Arguments arguments(args, {"json"}, {});
-  arguments.expect_positionals(1, "meshbridge compare FILE [--json]");
-  const std::string& path = arguments.positionals()[0];
+int run_compare(const CompareArguments& arguments) {
+  const std::string& path = arguments.file;
   ReadInfo info;
   const Soup soup = read_soup(path, &info);
   warn_about_reader(path, info);
   const StockBuild stock = build_stock(soup);
   const BridgedMesh bridged = build_bridged_mesh(soup);
-  const Figures b = bridged_figures(bridged, soup);
-  const StockBuildReport& s = stock.report;
-  if (arguments.flag("json")) {
-    std::cout << "{\"file\":\"" << path << "\",\"stock\":" << to_json(s)
-              << ",\"bridged\":{\"vertices\":" << b.vertices << ",\"faces_kept\":" << b.faces
-              << ",\"faces_detached\":0,\"faces_lost\":" << b.lost
-              << ",\"boundary_edges\":" << b.boundary_edges << ",\"components\":" << b.components
-              << ",\"add_face_failures\":" << bridged.add_face_failures << "}}\n";
+  const BuildFigures b = bridged_figures(bridged, soup);
+  const BuildFigures s = stock_figures(stock.report);
+  if (arguments.json) {
+    std::cout << compare_report_json(path, soup.num_vertices(), soup.num_faces(), s, b) << "\n";
     return kOk;
   }
   std::cout << path << ": " << soup.num_vertices() << " vertices, " << soup.num_faces()
@@ -58,13 +66,24 @@ int compare_command(const std::vector<std::string>& args) {
     std::cout << std::left << std::setw(18) << label << std::right << std::setw(16) << stock_value
               << std::setw(16) << bridged_value << "\n";
   };
-  row("vertices", s.vertices_created, b.vertices);
-  row("faces kept", s.faces_kept, b.faces);
-  row("faces detached", s.faces_detached, b.detached);
-  row("faces lost", s.faces_lost, b.lost);
+  row("vertices", s.vertices, b.vertices);
+  row("faces kept", s.faces_kept, b.faces_kept);
+  row("faces detached", s.faces_detached, b.faces_detached);
+  row("faces lost", s.faces_lost, b.faces_lost);
   row("boundary edges", s.boundary_edges, b.boundary_edges);
   row("components", s.components, b.components);
   return kOk;
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app, int& exit_code) {
+  auto arguments = std::make_shared<CompareArguments>();
+  CLI::App* command = app.add_subcommand(
+      "compare", "Show OpenMesh's stock loader next to MeshBridge's bridged build of FILE.");
+  command->add_option("FILE", arguments->file, "mesh to load (.obj, .off, .ply, .stl)")->required();
+  command->add_flag("--json", arguments->json, "print the figures as JSON instead of a table");
+  command->callback([arguments, &exit_code] { exit_code = run_compare(*arguments); });
 }
 
 }  // namespace meshbridge::cli

@@ -1,67 +1,82 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // meshbridge: check, compare, repair and picture non-manifold polygon meshes.
 
-#include "arguments.h"
 #include "commands.h"
 
-#include <cstring>
+#include <CLI/CLI.hpp>
+
 #include <exception>
 #include <iostream>
+#include <new>
 #include <string>
-#include <vector>
+
+#ifndef MESHBRIDGE_VERSION
+#define MESHBRIDGE_VERSION "unknown"
+#endif
 
 namespace {
 
-const char* kUsage =
-    "usage: meshbridge <command> [options]\n"
-    "\n"
-    "commands:\n"
-    "  check FILE [--json]             report singular edges/vertices, boundaries and other\n"
-    "                                  defects; exit 0 = none, 1 = defects found, 2 = error\n"
-    "  compare FILE [--json]           OpenMesh's stock loader next to the bridged build\n"
-    "  repair IN OUT [options]         lossless manifold repair; OUT is .obj/.off/.ply/.stl\n"
-    "      --report FILE.json          write the repair report as JSON\n"
-    "      --pairing geometric|combinatorial   (default geometric)\n"
-    "      --no-orient --no-stitch --cut-nonorientable\n"
-    "      --remove-duplicates --remove-degenerate --remove-isolated\n"
-    "      --separate EPS              move split vertex copies EPS into their own fan so the\n"
-    "                                  repair survives STL's welding by position\n"
-    "  batch INDIR OUTDIR [--format obj|off|ply|stl] [--json] [--quiet]\n"
-    "                                  repair every mesh below INDIR into OUTDIR (same relative\n"
-    "                                  paths), progress on stderr, a summary table on stdout;\n"
-    "                                  exit 0 = all repaired, 2 = some failed\n"
-    "  snapshot FILE OUT.png [--size N] [--view iso|x|y|z]\n"
-    "                                  PNG picture of the defects (drawn with Qt, no display\n"
-    "                                  needed): edges grey, boundary green, singular edges and\n"
-    "                                  vertices red; N pixels square (default 800), view\n"
-    "                                  iso (default) or along an axis; exit codes as check\n"
-    "\n"
-    "formats: OBJ, OFF, PLY, STL (read and written through OpenMesh)\n";
+//! "meshbridge" or "meshbridge repair": the command a parse error belongs to.
+std::string command_name(const CLI::App& app) {
+  const auto chosen = app.get_subcommands();
+  return chosen.empty() ? app.get_name() : app.get_name() + " " + chosen.front()->get_name();
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace meshbridge::cli;
-  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
-      !std::strcmp(argv[1], "help")) {
-    std::cout << kUsage;
-    return argc < 2 ? kError : kOk;
-  }
-  const std::string command = argv[1];
-  const std::vector<std::string> args(argv + 2, argv + argc);
-  try {
-    if (command == "check")
-      return check_command(args);
-    if (command == "compare")
-      return compare_command(args);
-    if (command == "repair")
-      return repair_command(args);
-    if (command == "batch")
-      return batch_command(args);
-    if (command == "snapshot")
-      return snapshot_command(args);
-    std::cerr << "meshbridge: unknown command '" << command << "' (try meshbridge --help)\n";
+  CLI::App app(
+      "Check, repair and picture non-manifold polygon meshes (OBJ, OFF, PLY, STL).\n"
+      "Exit codes: 0 = done and no defect, 1 = defects found (check, snapshot), 2 = error.\n"
+      "`meshbridge COMMAND --help` lists a command's options; `meshbridge explain` tells what\n"
+      "the words in the reports mean.",
+      "meshbridge");
+  app.set_version_flag("--version", std::string("meshbridge ") + MESHBRIDGE_VERSION);
+  app.require_subcommand(1);
+  app.option_defaults()->always_capture_default();
+  app.get_formatter()->column_width(34);
+
+  int exit_code = kOk;
+  add_check_command(app, exit_code);
+  add_repair_command(app, exit_code);
+  add_batch_command(app, exit_code);
+  add_snapshot_command(app, exit_code);
+  add_compare_command(app, exit_code);
+  add_explain_command(app, exit_code);
+
+  if (argc < 2) {
+    std::cerr << app.help();
     return kError;
+  }
+  if (argv[1][0] != '-') {
+    try {
+      app.get_subcommand(argv[1]);
+    } catch (const CLI::OptionNotFound&) {
+      std::string names;
+      for (const CLI::App* command : app.get_subcommands({}))
+        names += (names.empty() ? "" : ", ") + command->get_name();
+      std::cerr << "meshbridge: error: unknown command '" << argv[1] << "' (commands: " << names
+                << "; see `meshbridge --help`)\n";
+      return kError;
+    }
+  }
+  try {
+    app.parse(argc, argv);
+    return exit_code;
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForVersion& version) {
+    return app.exit(version);
+  } catch (const CLI::ParseError& error) {
+    const std::string command = command_name(app);
+    std::cerr << command << ": error: " << error.what() << "\n"
+              << "(see `" << command << " --help`)\n";
+    return kError;
+  } catch (const UsageError& error) {
+    std::cerr << command_name(app) << ": error: " << error.what() << "\n";
   } catch (const std::bad_alloc&) {
     std::cerr << "meshbridge: error: out of memory\n";
   } catch (const std::exception& error) {

@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "arguments.h"
 #include "commands.h"
+#include "validators.h"
 
 #include "meshbridge/errors.h"
 #include "meshbridge/io.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/report_json.h"
 #include "meshbridge/separate_copies.h"
+
+#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <memory>
 
 namespace meshbridge::cli {
 
@@ -37,35 +41,24 @@ void write_text_atomically(const std::string& path, const std::string& text) {
   }
 }
 
-}  // namespace
-
-int repair_command(const std::vector<std::string>& args) {
-  const Arguments arguments(args,
-                            {"no-orient", "no-stitch", "cut-nonorientable", "remove-duplicates",
-                             "remove-degenerate", "remove-isolated", "json"},
-                            {"report", "pairing", "separate"});
-  arguments.expect_positionals(2, "meshbridge repair IN OUT [options]");
-  const std::string& in = arguments.positionals()[0];
-  const std::string& out = arguments.positionals()[1];
-
+struct RepairArguments {
+  std::string in, out, report;
+  std::string pairing = "geometric";
+  bool no_orient = false, no_stitch = false;
+  bool elements = false;
   RepairOptions options;
-  const std::string pairing = arguments.value("pairing", "geometric");
-  if (pairing == "geometric") {
-    options.pairing = PairingPolicy::geometric;
-  } else if (pairing == "combinatorial") {
-    options.pairing = PairingPolicy::combinatorial;
-  } else {
-    throw UsageError("--pairing must be geometric or combinatorial, got '" + pairing + "'");
-  }
-  options.orient = !arguments.flag("no-orient");
-  options.stitch = !arguments.flag("no-stitch");
-  options.cut_nonorientable = arguments.flag("cut-nonorientable");
-  options.remove_duplicate_faces = arguments.flag("remove-duplicates");
-  options.remove_degenerate_faces = arguments.flag("remove-degenerate");
-  options.remove_isolated_vertices = arguments.flag("remove-isolated");
-  const double separate = arguments.number("separate", 0.0);
-  if (separate < 0)
-    throw UsageError("--separate expects a distance >= 0");
+  double separate = 0.0;
+};
+
+int run_repair(RepairArguments& arguments) {
+  const std::string& in = arguments.in;
+  const std::string& out = arguments.out;
+  RepairOptions options = arguments.options;
+  options.pairing = arguments.pairing == "combinatorial" ? PairingPolicy::combinatorial
+                                                         : PairingPolicy::geometric;
+  options.orient = !arguments.no_orient;
+  options.stitch = !arguments.no_stitch;
+  const double separate = arguments.separate;
   if (!is_supported_mesh_file(out)) {
     throw UsageError(out + ": unknown output format (expected .obj, .off, .ply or .stl)");
   }
@@ -78,8 +71,12 @@ int repair_command(const std::vector<std::string>& args) {
   if (separate > 0)
     moved = separate_split_vertices(result.mesh, separate);
   write_mesh(out, result.mesh);
-  if (arguments.has("report"))
-    write_text_atomically(arguments.value("report"), to_json(result.report) + "\n");
+  if (!arguments.report.empty()) {
+    ReportJsonOptions json;
+    json.elements = arguments.elements;
+    write_text_atomically(arguments.report,
+                          repair_report_json(in, out, result.report, &info, json) + "\n");
+  }
 
   std::cout << in << " -> " << out << "\n" << to_text(result.report);
   if (separate > 0)
@@ -92,6 +89,54 @@ int repair_command(const std::vector<std::string>& args) {
                  "--separate EPS or another format (OBJ, OFF, PLY).\n";
   }
   return kOk;
+}
+
+}  // namespace
+
+void add_repair_command(CLI::App& app, int& exit_code) {
+  auto arguments = std::make_shared<RepairArguments>();
+  RepairOptions& options = arguments->options;
+  CLI::App* command = app.add_subcommand(
+      "repair",
+      "Lossless manifold repair of IN into OUT: every face is kept, every edge of the result is\n"
+      "manifold. Exit 0 = written, 2 = error.");
+  command->add_option("IN", arguments->in, "mesh to repair (.obj, .off, .ply, .stl)")->required();
+  command
+      ->add_option("OUT", arguments->out,
+                   "where to write the result; the extension picks the format (.obj, .off, .ply, "
+                   ".stl); replaced atomically")
+      ->required();
+  command->add_option("--report", arguments->report,
+                      "also write the repair report as JSON to this file "
+                      "(docs/report-schema.md)");
+  command->add_flag("--elements", arguments->elements,
+                    "with --report: also list the defective elements before and after; default "
+                    "counts only");
+  command
+      ->add_option("--pairing", arguments->pairing,
+                   "how the sides (contenders) at a singular edge pair up: geometric = by angle "
+                   "around the edge, combinatorial = by face order")
+      ->transform(CLI::IsMember({"geometric", "combinatorial"}, CLI::ignore_case));
+  command->add_flag("--no-orient", arguments->no_orient,
+                    "keep every face's corner order (default: orient each component "
+                    "consistently, closed ones outward)");
+  command->add_flag("--no-stitch", arguments->no_stitch,
+                    "do not glue cut sides back together where that stays manifold");
+  command->add_flag("--cut-nonorientable", options.cut_nonorientable,
+                    "also orient non-orientable components (Moebius strips) by cutting the fewest "
+                    "edges");
+  command->add_flag("--remove-duplicates", options.remove_duplicate_faces,
+                    "drop faces whose vertex set an earlier face has");
+  command->add_flag("--remove-degenerate", options.remove_degenerate_faces,
+                    "drop faces that repeat a vertex");
+  command->add_flag("--remove-isolated", options.remove_isolated_vertices,
+                    "drop vertices that no kept face uses");
+  command
+      ->add_option("--separate", arguments->separate,
+                   "move each split vertex copy this distance (model units) into its own fan, "
+                   "so the repair survives STL readers that weld by position; 0 = off")
+      ->check(finite_at_least(0.0));
+  command->callback([arguments, &exit_code] { exit_code = run_repair(*arguments); });
 }
 
 }  // namespace meshbridge::cli

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "arguments.h"
 #include "commands.h"
 #include "defect_snapshot.h"
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/errors.h"
 #include "meshbridge/io.h"
+
+#include <CLI/CLI.hpp>
 
 #include <QByteArray>
 #include <QFile>
@@ -22,6 +23,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <memory>
 
 namespace meshbridge::cli {
 
@@ -72,29 +74,17 @@ class QtMessageFilter {
   QtMessageHandler previous_;
 };
 
-}  // namespace
-
-int snapshot_command(const std::vector<std::string>& args) {
-  const Arguments arguments(args, {}, {"size", "view"});
-  arguments.expect_positionals(2, "meshbridge snapshot FILE OUT.png [--size N] [--view iso|x|y|z]");
-  const std::string& path = arguments.positionals()[0];
-  const std::string& out = arguments.positionals()[1];
-
+struct SnapshotArguments {
+  std::string file, out;
+  std::string view = "iso";
   SnapshotOptions options;
-  const double size = arguments.number("size", options.size);
-  if (size != std::floor(size) || size < SnapshotOptions::kMinSize ||
-      size > SnapshotOptions::kMaxSize) {
-    throw UsageError("--size expects a whole number of pixels from " +
-                     std::to_string(SnapshotOptions::kMinSize) + " to " +
-                     std::to_string(SnapshotOptions::kMaxSize) + ", got '" +
-                     arguments.value("size") + "'");
-  }
-  options.size = static_cast<int>(size);
-  try {
-    options.view = parse_snapshot_view(arguments.value("view", "iso"));
-  } catch (const std::invalid_argument& error) {
-    throw UsageError(std::string("--") + error.what());
-  }
+};
+
+int run_snapshot(const SnapshotArguments& arguments) {
+  const std::string& path = arguments.file;
+  const std::string& out = arguments.out;
+  SnapshotOptions options = arguments.options;
+  options.view = parse_snapshot_view(arguments.view);
   if (!ends_with_png(out))
     throw UsageError(out + ": the snapshot is written as PNG; name it .png");
 
@@ -125,6 +115,25 @@ int snapshot_command(const std::vector<std::string>& args) {
             << report.boundary_edges.size() << " boundary edges; red pixels " << snapshot.red_pixels
             << ", green pixels " << snapshot.green_pixels << "\n";
   return report.has_defects() || info.faces_dropped_by_reader > 0 ? kDefectsFound : kOk;
+}
+
+}  // namespace
+
+void add_snapshot_command(CLI::App& app, int& exit_code) {
+  auto arguments = std::make_shared<SnapshotArguments>();
+  CLI::App* command = app.add_subcommand(
+      "snapshot",
+      "Draw FILE with its defects into a PNG (no display needed): the surface shaded grey,\n"
+      "boundary edges green, singular edges and vertices red. Exit codes as check.");
+  command->add_option("FILE", arguments->file, "mesh to draw (.obj, .off, .ply, .stl)")->required();
+  command->add_option("OUT.png", arguments->out, "PNG to write; replaced atomically")->required();
+  command->add_option("--size", arguments->options.size, "width and height in pixels")
+      ->check(CLI::Range(SnapshotOptions::kMinSize, SnapshotOptions::kMaxSize));
+  command
+      ->add_option("--view", arguments->view,
+                   "look from: iso (above a corner), x, y or z (along that axis)")
+      ->transform(CLI::IsMember({"iso", "x", "y", "z"}, CLI::ignore_case));
+  command->callback([arguments, &exit_code] { exit_code = run_snapshot(*arguments); });
 }
 
 }  // namespace meshbridge::cli

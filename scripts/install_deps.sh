@@ -3,7 +3,7 @@
 # Usage: scripts/install_deps.sh [extra-package ...]
 set -euo pipefail
 
-packages=(build-essential cmake pkg-config libopenmesh-dev libgtest-dev googletest qtbase5-dev "$@")
+packages=(build-essential cmake pkg-config libopenmesh-dev libgtest-dev googletest qtbase5-dev libcli11-dev nlohmann-json3-dev "$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -51,7 +51,7 @@ check_exit_codes)
   expect_exit 2 "$mb" check "$work/missing.obj"
   expect_in "$work/err" "cannot open"
   expect_exit 2 "$mb" check
-  expect_in "$work/err" "usage: meshbridge check FILE"
+  expect_in "$work/err" "meshbridge check: error: FILE is required"
   expect_exit 2 "$mb" frobnicate
   expect_exit 0 "$mb" --help
   ;;
@@ -98,7 +98,7 @@ TABLE
   [ "$(json_field "$work/m.json" nonorientable_components)" = 1 ] || fail "moebius non-orientable"
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/c.obj" --pairing combinatorial --no-stitch --no-orient
   expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/c.obj" --pairing sideways
-  expect_in "$work/err" "--pairing must be geometric or combinatorial"
+  expect_in "$work/err" "--pairing: sideways not in {geometric,combinatorial}"
   ;;
 repair_formats)
   for ext in obj off ply; do
@@ -197,8 +197,8 @@ snapshot)
     [ "$(pixels "$work/out" red)" -gt 0 ] 2>/dev/null || fail "no red pixels in prisms24, $view"
   done
   ls -a "$work" | grep -q tmp && fail "temporary file left behind"
-  expect_exit 0 "$mb" --help
-  expect_in "$work/out" "snapshot FILE OUT.png"
+  expect_exit 0 "$mb" snapshot --help
+  expect_in "$work/out" "Usage: meshbridge snapshot [OPTIONS] FILE OUT.png"
   ;;
 snapshot_errors)
   expect_exit 2 "$mb" snapshot "$work/missing.obj" "$work/a.png"
@@ -225,14 +225,75 @@ snapshot_errors)
   expect_in "$work/err" "cannot move the written file into place"
   ls -a "$work" | grep -q tmp && fail "temporary file left behind: $(ls -a "$work")"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --size 8
-  expect_in "$work/err" "--size expects a whole number of pixels from 16 to 8192"
+  expect_in "$work/err" "--size: Value 8 not in range 16 to 8192"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --view top
-  expect_in "$work/err" "--view must be iso, x, y or z"
+  expect_in "$work/err" "--view: top not in {iso,x,y,z}"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.jpg"
   expect_in "$work/err" "name it .png"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj"
-  expect_in "$work/err" "usage: meshbridge snapshot FILE OUT.png"
+  expect_in "$work/err" "meshbridge snapshot: error: OUT.png is required"
   [ ! -e "$work/a.png" ] && [ ! -e "$work/a.jpg" ] || fail "an output was written on a usage error"
+  ;;
+arguments)
+  expect_exit 0 "$mb" --version
+  grep -Eq '^meshbridge [0-9]+\.[0-9]+\.[0-9]+$' "$work/out" || fail "--version: $(cat "$work/out")"
+  expect_exit 2 "$mb"  # no command: the overview on stderr, exit 2
+  expect_in "$work/err" "Subcommands:"
+  expect_exit 0 "$mb" --help
+  for command in check repair batch snapshot compare explain; do
+    expect_in "$work/out" "  $command "
+  done
+  # Every command answers --help and -h with its own options (defaults shown); -h is no file name.
+  for command in check repair batch snapshot compare explain; do
+    for flag in --help -h; do
+      expect_exit 0 "$mb" "$command" "$flag"
+      expect_in "$work/out" "Usage: meshbridge $command"
+    done
+  done
+  expect_exit 0 "$mb" repair --help
+  for option in --report --elements "--pairing TEXT:{geometric,combinatorial}=geometric" --no-orient \
+    --no-stitch --cut-nonorientable --remove-duplicates --remove-degenerate --remove-isolated \
+    "--separate FLOAT:NUMBER>=0=0"; do
+    expect_in "$work/out" "$option"
+  done
+  expect_exit 0 "$mb" snapshot --help
+  expect_in "$work/out" "--size INT:INT in [16 - 8192]=800"
+  expect_in "$work/out" "--view TEXT:{iso,x,y,z}=iso"
+  expect_exit 0 "$mb" batch --help
+  for option in --format --json --quiet --progress --in-place --resume "--jobs"; do
+    expect_in "$work/out" "$option"
+  done
+  # Errors name the command and the bad argument.
+  expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/a.obj" --frobnicate
+  expect_in "$work/err" "meshbridge repair: error: The following argument was not expected: --frobnicate"
+  expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/a.obj" --separate -1
+  expect_in "$work/err" "--separate: expects a finite number >= 0, got '-1'"
+  expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/a.obj" --separate inf
+  expect_in "$work/err" "got 'inf'"
+  expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --size 12.5
+  expect_in "$work/err" "--size"
+  expect_exit 2 "$mb" batch "$work" "$work/out" --jobs 0
+  expect_in "$work/err" "--jobs: expects a whole number from 1 to 1024, got '0'"
+  expect_exit 2 "$mb" frobnicate
+  expect_in "$work/err" "frobnicate"
+  [ ! -e "$work/a.obj" ] && [ ! -e "$work/a.png" ] || fail "an output was written on a usage error"
+  # Choice names are case-insensitive.
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/g.obj" --pairing Geometric
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/c.obj" --pairing=COMBINATORIAL
+  ;;
+explain)
+  expect_exit 0 "$mb" explain
+  for term in "singular edge" contender "sides cut" fan "pinch vertex" "set aside" watertight; do
+    grep -q "^$term\$" "$work/out" || fail "explain lacks '$term'"
+  done
+  expect_in "$work/out" "3-7(4)"
+  expect_exit 0 "$mb" explain Fan
+  expect_in "$work/out" "umbrella"
+  [ "$(grep -c '^[a-zA-Z]' "$work/out")" = 1 ] || fail "explain fan printed more: $(cat "$work/out")"
+  expect_exit 0 "$mb" explain sides cut
+  expect_in "$work/out" "cut for orientation"
+  expect_exit 2 "$mb" explain frobnicate
+  expect_in "$work/err" "no entry for 'frobnicate'; known terms: manifold, singular edge"
   ;;
 *)
   echo "unknown case $case_name" >&2
