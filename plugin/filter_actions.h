@@ -99,7 +99,7 @@ struct DetectOutcome {
   //! The numbers, in this order: vertices, faces (triangles), edges, singular_edges,
   //! singular_edge_contenders (sides on singular edges, summed), singular_vertices,
   //! singular_edge_vertices, pinch_vertices, boundary_edges, boundary_loops, isolated_vertices,
-  //! degenerate_faces, zero_area_faces, duplicate_faces, inconsistent_edges,
+  //! degenerate_faces, faces_set_aside, zero_area_faces, duplicate_faces, inconsistent_edges,
   //! nonorientable_components, components, euler_characteristic, watertight (flag); the defect
   //! layer's red_edges, green_edges, singular_vertex_markers; selected_faces and
   //! selected_vertices (0 unless `select_faces`), coloured_faces (0 unless `colour_faces`).
@@ -139,10 +139,11 @@ struct RepairOutcome {
   //! faces in triangles); the core's vertices_split, faces_flipped, sides_cut,
   //! sides_cut_for_orientation, sides_stitched, faces_detached, faces_split,
   //! faces_added_by_split, faces_set_aside, duplicate_faces_removed, degenerate_faces_removed,
-  //! isolated_vertices_removed, components_before, components_after, boundary_edges_before,
-  //! boundary_edges_after, nonorientable_components, singular_edges_before,
-  //! singular_vertices_before, singular_edges_after, singular_vertices_after; the write-back's
-  //! degenerate_faces_kept and polygons_triangulated.
+  //! isolated_vertices_removed, before.components, after.components, before.boundary_edges,
+  //! after.boundary_edges, before.nonorientable_components, before.singular_edges,
+  //! before.singular_vertices, after.singular_edges, after.singular_vertices, after.watertight
+  //! (flag); the write-back's degenerate_faces_kept and polygons_triangulated. Keys as in
+  //! docs/report-schema.md, nested ones flattened with dots.
   std::vector<FilterCount> counts;
 };
 

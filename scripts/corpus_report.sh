@@ -37,9 +37,14 @@ if [ -z "${MESHBRIDGE:-}" ]; then
 fi
 [ -x "$tool" ] || { echo "corpus_report: no meshbridge binary at $tool (set MESHBRIDGE)" >&2; exit 2; }
 
-# json_number FILE KEY: the first number after "KEY": (top-level counts come first).
+# json_number FILE KEY.PATH: the value at KEY.PATH of the JSON report in FILE
+# (docs/report-schema.md), parsed by Debian's python3.
 json_number() {
-  grep -o "\"$2\":-\?[0-9]*" "$1" | head -n 1 | cut -d: -f2
+  /usr/bin/python3 -c 'import json, sys
+value = json.load(open(sys.argv[1]))
+for key in sys.argv[2].split("."):
+    value = value[key]
+print(value)' "$1" "$2"
 }
 now() { date +%s.%N; }
 seconds() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", b - a }'; }
@@ -78,9 +83,9 @@ for f in "${files[@]}"; do
     continue
   fi
   faces="$(json_number "$before" faces)"
-  singular_edges="$(json_number "$before" singular_edge_count)"
-  singular_vertices="$(json_number "$before" singular_vertex_count)"
-  boundary_edges="$(json_number "$before" boundary_edge_count)"
+  singular_edges="$(json_number "$before" singular_edges)"
+  singular_vertices="$(json_number "$before" singular_vertices)"
+  boundary_edges="$(json_number "$before" boundary_edges)"
 
   start="$(now)"
   status=0
@@ -107,14 +112,14 @@ for f in "${files[@]}"; do
       problems+=("faces out $faces_out + set aside $set_aside != in $faces_in + split $added")
     [ "$(json_number "$after" faces)" = "$faces_out" ] ||
       problems+=("repaired file has $(json_number "$after" faces) faces, not $faces_out")
-    [ "$(json_number "$after" singular_edge_count)" = 0 ] ||
-      problems+=("$(json_number "$after" singular_edge_count) singular edges left")
-    [ "$(json_number "$after" singular_vertex_count)" = 0 ] ||
-      problems+=("$(json_number "$after" singular_vertex_count) singular vertices left")
+    [ "$(json_number "$after" singular_edges)" = 0 ] ||
+      problems+=("$(json_number "$after" singular_edges) singular edges left")
+    [ "$(json_number "$after" singular_vertices)" = 0 ] ||
+      problems+=("$(json_number "$after" singular_vertices) singular vertices left")
   fi
   if [ ${#problems[@]} -eq 0 ]; then
     split="$(json_number "$report" vertices_split)"
-    components="$(json_number "$report" components_after)"
+    components="$(json_number "$report" after.components)"
     echo "$row | yes ($faces_out faces, $split vertices split, $components components) | $check_time | $repair_time |"
   else
     echo "$row | FAIL: $(IFS=';'; echo "${problems[*]}" | sed 's/|/\\|/g') | $check_time | $repair_time |"

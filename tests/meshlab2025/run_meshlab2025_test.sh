@@ -218,11 +218,11 @@ case "$mode" in
     expect_eq "core: singular edges after" "$(value singular_edges output.txt)" 0
     expect_eq "core: singular vertices after" "$(value singular_vertices output.txt)" 0
     grep -q "^log: after: singular edges 0, singular vertices 0" log.txt && pass "repair log" || fail "repair log line missing"
-    expect_eq "result singular_edges_after" "$(result "$repair_filter" singular_edges_after log.txt)" 0
-    expect_eq "result singular_vertices_after" "$(result "$repair_filter" singular_vertices_after log.txt)" 0
+    expect_eq "result after.singular_edges" "$(result "$repair_filter" after.singular_edges log.txt)" 0
+    expect_eq "result after.singular_vertices" "$(result "$repair_filter" after.singular_vertices log.txt)" 0
     expect_eq "result faces_out == saved faces" "$(result "$repair_filter" faces_out log.txt)" "$(value faces output.txt)"
     expect_eq "result vertices_out == saved vertices" "$(result "$repair_filter" vertices_out log.txt)" "$(value vertices output.txt)"
-    expect_eq "result singular_edges_before == core" "$(result "$repair_filter" singular_edges_before log.txt)" "$(value singular_edges input.txt)"
+    expect_eq "result before.singular_edges == core" "$(result "$repair_filter" before.singular_edges log.txt)" "$(value singular_edges input.txt)"
     if [ "$(result "$repair_filter" vertices_split log.txt)" -gt 0 ]; then
       grep -q "^log: To keep the repair, save as PLY, OBJ or OFF.*STL stores no shared vertices" log.txt \
         && pass "log: which formats keep the repair" || fail "log: no hint on formats that keep the repair"
