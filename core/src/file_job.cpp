@@ -55,8 +55,8 @@ fs::path normalised(const fs::path& path) {
 
 //! Depth-first walk that notes every folder it cannot list instead of stopping there. Folder
 //! symlinks are not followed (no cycles); file symlinks are.
-void walk(const fs::path& root, const fs::path& dir, std::vector<fs::path>& files,
-          std::vector<BatchPlan::Unreadable>& unreadable) {
+void walk(const fs::path& root, const fs::path& dir, const fs::path& leave_out,
+          std::vector<fs::path>& files, std::vector<BatchPlan::Unreadable>& unreadable) {
   std::error_code error;
   fs::directory_iterator it(dir, error);
   if (error) {
@@ -70,7 +70,8 @@ void walk(const fs::path& root, const fs::path& dir, std::vector<fs::path>& file
     const fs::directory_entry& entry = *it;
     std::error_code status_error;
     if (entry.is_symlink(status_error) == false && entry.is_directory(status_error)) {
-      walk(root, entry.path(), files, unreadable);
+      if (leave_out.empty() || normalised(entry.path()) != leave_out)
+        walk(root, entry.path(), leave_out, files, unreadable);
     } else if (entry.is_regular_file(status_error) &&
                is_supported_mesh_file(entry.path().string())) {
       files.push_back(entry.path());
@@ -109,8 +110,6 @@ BatchPlan plan_batch(const std::string& in_dir, const std::string& out_dir,
   if (!format.empty() && !is_supported_mesh_file("x." + format))
     throw std::invalid_argument("format must be obj, off, ply or stl, got '" + options.format +
                                 "'");
-  if (in_place && !format.empty())
-    throw std::invalid_argument("in place, the format cannot change (outputs replace inputs)");
   const fs::path in_abs = normalised(in_dir), out_abs = normalised(out_dir);
   if (!in_place && is_within(out_abs, in_abs)) {
     throw std::invalid_argument(
@@ -122,12 +121,14 @@ BatchPlan plan_batch(const std::string& in_dir, const std::string& out_dir,
 
   BatchPlan plan;
   std::vector<fs::path> files;
-  walk(in_dir, in_dir, files, plan.unreadable);
+  const bool out_inside = is_within(out_abs, in_abs) && out_abs != in_abs;
+  walk(in_dir, in_dir, out_inside ? out_abs : fs::path(), files, plan.unreadable);
   std::vector<std::pair<std::string, fs::path>> named;
   for (const fs::path& file : files) {
     const std::string name = fs::relative(file, in_dir).generic_string();
     if (::access(file.c_str(), R_OK) != 0) {
-      plan.unreadable.push_back({name, "cannot open the file (" + std::string(std::strerror(errno)) + ")"});
+      plan.unreadable.push_back(
+          {name, "cannot open the file (" + std::string(std::strerror(errno)) + ")"});
       continue;
     }
     named.emplace_back(name, file);
@@ -142,12 +143,6 @@ BatchPlan plan_batch(const std::string& in_dir, const std::string& out_dir,
     job.input = file.string();
     job.name = name;
     fs::path relative = name;
-    if (in_place) {
-      job.output = job.input;
-      job.output_name = name;
-      plan.jobs.push_back(job);
-      continue;
-    }
     if (!format.empty()) {
       // a.obj and a.off both going to a.ply: the later one becomes a-off.ply.
       const std::string original = relative.extension().string();
@@ -220,11 +215,12 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     }
     result.report = std::move(repaired.report);
     const RepairReport& r = result.report;
-    const bool clean = !r.before.has_defects() && r.faces_flipped == 0 &&
-                       info.faces_dropped_by_reader == 0;
+    const bool clean =
+        !r.before.has_defects() && r.faces_flipped == 0 && info.faces_dropped_by_reader == 0;
     return finish(clean ? FileStatus::clean : FileStatus::repaired, "", &r, &info);
   } catch (const std::bad_alloc&) {
-    return finish(FileStatus::failed, job.input + ": out of memory", nullptr, read ? &info : nullptr);
+    return finish(FileStatus::failed, job.input + ": out of memory", nullptr,
+                  read ? &info : nullptr);
   } catch (const std::exception& failure) {
     return finish(FileStatus::failed, failure.what(), nullptr, read ? &info : nullptr);
   }

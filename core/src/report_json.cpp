@@ -58,7 +58,8 @@ void add_defects(Json& out, const DefectReport& r, bool elements) {
     return;
   Json singular = Json::array();
   for (const SingularEdge& e : r.singular_edges)
-    singular.push_back({{"vertices", {e.vertices.v0, e.vertices.v1}}, {"contenders", e.contenders}});
+    singular.push_back(
+        {{"vertices", {e.vertices.v0, e.vertices.v1}}, {"contenders", e.contenders}});
   out["elements"] = Json{{"singular_edges", std::move(singular)},
                          {"singular_edge_vertices", r.singular_edge_vertices},
                          {"pinch_vertices", r.pinch_vertices},
@@ -105,9 +106,12 @@ std::string dump(const Json& json, int indent) {
 }
 
 Json figures(const BuildFigures& f) {
-  return Json{{"vertices", f.vertices},       {"faces_kept", f.faces_kept},
-              {"faces_detached", f.faces_detached}, {"faces_lost", f.faces_lost},
-              {"boundary_edges", f.boundary_edges}, {"components", f.components}};
+  return Json{{"vertices", f.vertices},
+              {"faces_kept", f.faces_kept},
+              {"faces_detached", f.faces_detached},
+              {"faces_lost", f.faces_lost},
+              {"boundary_edges", f.boundary_edges},
+              {"components", f.components}};
 }
 
 }  // namespace

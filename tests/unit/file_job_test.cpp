@@ -57,8 +57,7 @@ TEST_F(FileJobTest, plan_renames_outputs_that_would_meet_in_one_format) {
 
 TEST_F(FileJobTest, plan_refuses_outdir_equal_to_or_inside_indir) {
   EXPECT_THROW(plan_batch(in_.string(), in_.string(), {}), std::invalid_argument);
-  EXPECT_THROW(plan_batch(in_.string(), (in_ / "sub" / "out").string(), {}),
-               std::invalid_argument);
+  EXPECT_THROW(plan_batch(in_.string(), (in_ / "sub" / "out").string(), {}), std::invalid_argument);
   EXPECT_THROW(plan_batch(in_.string(), (in_ / "." / "x" / "..").string(), {}),
                std::invalid_argument);
   try {

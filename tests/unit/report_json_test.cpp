@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The report schema (docs/report-schema.md): keys, counts by default, element lists on request,
 // and valid JSON for any path bytes.
+#include "meshbridge/report_json.h"
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/models/canonical_models.h"
 #include "meshbridge/repair.h"
-#include "meshbridge/report_json.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -64,8 +64,7 @@ struct BuildFigures {
 //! "stock":{<BuildFigures>},"bridged":{<BuildFigures>}}` where vertices and faces are the soup's.
 std::string compare_report_json(const std::string& file, std::size_t soup_vertices,
                                 std::size_t soup_faces, const BuildFigures& stock,
-                                const BuildFigures& bridged,
-                                const ReportJsonOptions& options = {});
+                                const BuildFigures& bridged, const ReportJsonOptions& options = {});
 
 //! One line of `batch --json`: `{"schema_version":1,"kind":"batch","file":...,"output":...,
 //! "status":"clean"|"repaired"|"failed"|"skipped"[,"reason":...][,"read":{...}]
