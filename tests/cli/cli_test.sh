@@ -23,8 +23,19 @@ expect_exit() {
 expect_in() {  # expect_in FILE TEXT
   grep -qF -- "$2" "$1" || fail "'$2' not in $(basename "$1"): $(head -c 600 "$1")"
 }
-json_field() {  # json_field FILE KEY -> first number after "KEY":
-  grep -o "\"$2\":[0-9-]*" "$1" | head -1 | cut -d: -f2
+json_tool="$(dirname "$0")/report_json.py"
+# json_field FILE KEY.PATH -> the value at KEY.PATH (e.g. after.components); the whole output is
+# parsed and validated against docs/report-schema.json first, so invalid JSON fails the test.
+json_field() {
+  /usr/bin/python3 "$json_tool" get "$1" "$2" || fail "JSON in $(basename "$1") rejected (above)"
+}
+# json_line_field FILE N KEY.PATH -> the same on line N (0-based) of JSON Lines output.
+json_line_field() {
+  /usr/bin/python3 "$json_tool" get-line "$1" "$2" "$3" || fail "JSON line $2 of $(basename "$1") rejected"
+}
+# json_lines FILE -> number of lines, every one parsed and validated.
+json_lines() {
+  /usr/bin/python3 "$json_tool" validate-lines "$1" || fail "JSON Lines in $(basename "$1") rejected"
 }
 is_png() {  # is_png FILE: starts with the 8-byte PNG signature
   [ "$(od -An -tx1 -N8 "$1" 2>/dev/null | tr -d ' \n')" = 89504e470d0a1a0a ]
@@ -57,11 +68,24 @@ check_exit_codes)
   ;;
 check_json)
   expect_exit 1 "$mb" check "$models/prisms24.obj" --json
-  [ "$(json_field "$work/out" singular_edge_count)" = 79 ] || fail "prisms24 singular edges"
+  [ "$(json_field "$work/out" singular_edges)" = 79 ] || fail "prisms24 singular edges"
+  [ "$(json_field "$work/out" singular_vertices)" = 38 ] || fail "prisms24 singular vertices"
   [ "$(json_field "$work/out" faces)" = 120 ] || fail "prisms24 faces"
-  [ "$(json_field "$work/out" duplicate_faces)" = "" ] || true
-  expect_exit 1 "$mb" check "$models/hourglass.obj" --json
-  expect_in "$work/out" '"pinch_vertices":[0]'
+  [ "$(json_field "$work/out" duplicate_faces)" = 30 ] || fail "prisms24 duplicate faces"
+  [ "$(json_field "$work/out" file)" = "$models/prisms24.obj" ] || fail "prisms24 file"
+  [ "$(json_field "$work/out" schema_version)" = 1 ] || fail "schema_version"
+  [ "$(json_field "$work/out" kind)" = check ] || fail "kind"
+  grep -q '"elements"' "$work/out" && fail "element lists without --elements"
+  [ "$(wc -l <"$work/out")" = 1 ] || fail "check --json is not one line"
+  expect_exit 1 "$mb" check "$models/prisms24.obj" --json --elements
+  [ "$(json_field "$work/out" 'elements.singular_edges#')" = 79 ] || fail "79 listed singular edges"
+  [ "$(json_field "$work/out" singular_edges)" = 79 ] || fail "count with --elements"
+  expect_exit 1 "$mb" check "$models/hourglass.obj" --json --elements
+  [ "$(json_field "$work/out" elements.pinch_vertices)" = "[0]" ] || fail "hourglass pinch vertex"
+  [ "$(json_field "$work/out" pinch_vertices)" = 1 ] || fail "hourglass pinch count"
+  expect_exit 0 "$mb" check "$models/icosphere.obj" --json
+  [ "$(json_field "$work/out" watertight)" = true ] || fail "icosphere watertight"
+  [ "$(json_field "$work/out" has_defects)" = false ] || fail "icosphere has_defects"
   ;;
 compare_twocubes)
   expect_exit 0 "$mb" compare "$models/twocubes.obj"
@@ -70,7 +94,10 @@ compare_twocubes)
   grep -E '^components +10 +2$' "$work/out" >/dev/null || fail "components row"
   grep -E '^faces kept +24 +24$' "$work/out" >/dev/null || fail "faces row"
   expect_exit 0 "$mb" compare "$models/twocubes.obj" --json
-  expect_in "$work/out" '"vertices_created":38'
+  [ "$(json_field "$work/out" stock.vertices)" = 38 ] || fail "compare stock vertices"
+  [ "$(json_field "$work/out" bridged.vertices)" = 16 ] || fail "compare bridged vertices"
+  [ "$(json_field "$work/out" stock.components)" = 10 ] || fail "compare stock components"
+  [ "$(json_field "$work/out" faces)" = 24 ] || fail "compare faces"
   ;;
 repair_canonical)
   # model faces vertices-after components-after
@@ -78,10 +105,12 @@ repair_canonical)
     expect_exit 0 "$mb" repair "$models/$m.obj" "$work/$m.obj" --report "$work/$m.json"
     [ "$(json_field "$work/$m.json" faces_out)" = "$faces" ] || fail "$m faces_out"
     [ "$(json_field "$work/$m.json" vertices_out)" = "$vertices" ] || fail "$m vertices_out"
-    [ "$(json_field "$work/$m.json" components_after)" = "$components" ] || fail "$m components"
+    [ "$(json_field "$work/$m.json" after.components)" = "$components" ] || fail "$m components"
+    [ "$(json_field "$work/$m.json" file)" = "$models/$m.obj" ] || fail "$m report file"
+    [ "$(json_field "$work/$m.json" output)" = "$work/$m.obj" ] || fail "$m report output"
     "$mb" check "$work/$m.obj" --json >"$work/after.json"
-    [ "$(json_field "$work/after.json" singular_edge_count)" = 0 ] || fail "$m singular edges left"
-    [ "$(json_field "$work/after.json" singular_vertex_count)" = 0 ] || fail "$m singular vertices left"
+    [ "$(json_field "$work/after.json" singular_edges)" = 0 ] || fail "$m singular edges left"
+    [ "$(json_field "$work/after.json" singular_vertices)" = 0 ] || fail "$m singular vertices left"
     [ "$(json_field "$work/after.json" faces)" = "$faces" ] || fail "$m faces on reload"
   done <<'TABLE'
 twocubes 24 16 2
@@ -95,7 +124,7 @@ icosphere 80 42 1
 TABLE
   expect_exit 0 "$mb" check "$work/twocubes.obj"  # two closed cubes: no defect left
   expect_exit 0 "$mb" repair "$models/moebius.obj" "$work/m.obj" --cut-nonorientable --report "$work/m.json"
-  [ "$(json_field "$work/m.json" nonorientable_components)" = 1 ] || fail "moebius non-orientable"
+  [ "$(json_field "$work/m.json" before.nonorientable_components)" = 1 ] || fail "moebius non-orientable"
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/c.obj" --pairing combinatorial --no-stitch --no-orient
   expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/c.obj" --pairing sideways
   expect_in "$work/err" "--pairing: sideways not in {geometric,combinatorial}"
@@ -160,19 +189,127 @@ atomic_output)
   ;;
 batch)
   mkdir -p "$work/in/sub"
-  cp "$models/twocubes.obj" "$models/twocubes.off" "$work/in/"
+  cp "$models/twocubes.obj" "$models/twocubes.off" "$models/icosphere.obj" "$work/in/"
   cp "$models/prisms24.obj" "$work/in/sub/"
   expect_exit 0 "$mb" batch "$work/in" "$work/res" --format ply
-  expect_in "$work/out" "3 file(s), 3 repaired, 0 failed"
-  expect_in "$work/out" "| sub/prisms24.obj | 120 | 79 | 38 | 120 | 24 | yes |"
-  expect_in "$work/err" "[3/3]"
+  expect_in "$work/out" "4 file(s): 1 clean, 3 repaired, 0 failed, 0 skipped"
+  expect_in "$work/out" "| sub/prisms24.obj | repaired | 120 | 79 | 38 | 120 | 24 | yes |"
+  expect_in "$work/out" "| icosphere.obj | clean | 80 | 0 | 0 | 80 | 1 | yes |"
+  [ ! -s "$work/err" ] || fail "progress on a pipe without --progress: $(cat "$work/err")"
   [ -f "$work/res/twocubes.ply" ] && [ -f "$work/res/twocubes-off.ply" ] && [ -f "$work/res/sub/prisms24.ply" ] \
     || fail "batch outputs missing: $(ls -R "$work/res")"
+  expect_exit 0 "$mb" batch "$work/in" "$work/res1" --progress --jobs 1
+  expect_in "$work/err" "[4/4]"
+  expect_in "$work/err" "ETA"
   printf 'v 0 0 0\nf 1 2 3\n' >"$work/in/broken.obj"
   expect_exit 2 "$mb" batch "$work/in" "$work/res2" --json --quiet
-  expect_in "$work/out" '"file":"broken.obj"'
-  expect_in "$work/out" 'out of range'
-  [ ! -s "$work/err" ] || fail "--quiet printed progress"
+  [ ! -s "$work/err" ] || fail "--quiet printed progress: $(cat "$work/err")"
+  [ "$(json_lines "$work/out")" = 5 ] || fail "5 JSON lines: $(cat "$work/out")"
+  [ "$(json_line_field "$work/out" 0 file)" = broken.obj ] || fail "sorted by file: broken.obj first"
+  [ "$(json_line_field "$work/out" 0 status)" = failed ] || fail "broken.obj failed"
+  json_line_field "$work/out" 0 reason | grep -q "out of range" || fail "broken.obj reason"
+  [ "$(json_line_field "$work/out" 1 status)" = clean ] || fail "icosphere clean"
+  [ "$(json_line_field "$work/out" 2 file)" = sub/prisms24.obj ] || fail "line 2 is sub/prisms24.obj"
+  [ "$(json_line_field "$work/out" 2 before.singular_edges)" = 79 ] || fail "prisms24 singular edges"
+  [ "$(json_line_field "$work/out" 2 after.watertight)" = true ] || fail "prisms24 watertight after"
+  [ "$(json_line_field "$work/out" 3 status)" = repaired ] || fail "twocubes repaired"
+  [ "$(json_line_field "$work/out" 3 output)" = twocubes.obj ] || fail "twocubes output"
+  [ ! -e "$work/res2/broken.obj" ] || fail "a failed file left an output"
+  # Same records, same order, for any --jobs.
+  expect_exit 2 "$mb" batch "$work/in" "$work/res3" --json --jobs 1
+  cp "$work/out" "$work/jobs1.jsonl"
+  expect_in "$work/err" "5 file(s): 1 clean, 3 repaired, 1 failed, 0 skipped"
+  expect_exit 2 "$mb" batch "$work/in" "$work/res4" --json --jobs 3
+  cmp -s "$work/out" "$work/jobs1.jsonl" || fail "--jobs 3 differs from --jobs 1: $(diff "$work/out" "$work/jobs1.jsonl")"
+  cmp -s "$work/res3/sub/prisms24.obj" "$work/res4/sub/prisms24.obj" || fail "outputs differ by --jobs"
+  ;;
+batch_safety)
+  mkdir -p "$work/in/sub"
+  cp "$models/twocubes.obj" "$models/icosphere.obj" "$work/in/"
+  cp "$models/prisms24.obj" "$work/in/sub/"
+  cp "$work/in/twocubes.obj" "$work/original.obj"
+  expect_exit 2 "$mb" batch "$work/in" "$work/in"
+  expect_in "$work/err" "is the input folder"
+  expect_exit 2 "$mb" batch "$work/in" "$work/in/sub/out"
+  expect_in "$work/err" "is inside the input folder"
+  expect_exit 2 "$mb" batch "$work/in" "$work/in/./sub/.."
+  expect_in "$work/err" "is the input folder"
+  cmp -s "$work/in/twocubes.obj" "$work/original.obj" || fail "a refused batch touched the input"
+  [ ! -e "$work/in/sub/out" ] || fail "a refused batch made OUTDIR"
+  expect_exit 2 "$mb" batch "$work/missing" "$work/res"
+  expect_in "$work/err" "missing: no such folder"
+  # --resume: the second run skips everything, and that is success.
+  expect_exit 0 "$mb" batch "$work/in" "$work/res" --json
+  expect_exit 0 "$mb" batch "$work/in" "$work/res" --json --resume
+  [ "$(json_line_field "$work/out" 0 status)" = skipped ] || fail "resume did not skip"
+  json_line_field "$work/out" 0 reason | grep -q "newer than the input" || fail "resume reason"
+  expect_in "$work/err" "3 file(s): 0 clean, 0 repaired, 0 failed, 3 skipped"
+  touch -d '+10 seconds' "$work/in/icosphere.obj"
+  expect_exit 0 "$mb" batch "$work/in" "$work/res" --json --resume
+  [ "$(json_line_field "$work/out" 0 status)" = clean ] || fail "resume skipped a changed input"
+  [ "$(json_line_field "$work/out" 1 status)" = skipped ] || fail "resume redid sub/prisms24.obj"
+  # --in-place into INDIR itself replaces the originals.
+  cp -r "$work/in" "$work/inplace"
+  expect_exit 0 "$mb" batch "$work/inplace" "$work/inplace" --in-place --json
+  [ "$(json_lines "$work/out")" = 3 ] || fail "in place: 3 records"
+  "$mb" check "$work/inplace/twocubes.obj" >/dev/null || fail "in place: twocubes.obj not repaired"
+  # --in-place into a folder inside INDIR: earlier results are not taken as inputs.
+  expect_exit 0 "$mb" batch "$work/in" "$work/in/fixed" --in-place --json
+  expect_exit 0 "$mb" batch "$work/in" "$work/in/fixed" --in-place --json
+  [ "$(json_lines "$work/out")" = 3 ] || fail "OUTDIR inside INDIR was read back: $(cat "$work/out")"
+  rm -rf "$work/in/fixed"
+  # An OUTDIR that cannot be made: every file fails naming the folder and the reason.
+  : >"$work/blocker"
+  expect_exit 2 "$mb" batch "$work/in" "$work/blocker/res" --json
+  json_line_field "$work/out" 0 reason | grep -q "blocker.*cannot create the folder" \
+    || fail "unmakeable OUTDIR reason: $(cat "$work/out")"
+  # Unreadable folders and files are skipped with a warning naming them; the rest goes on.
+  # Root reads everything, so as root the run drops to user nobody (setpriv, util-linux).
+  mkdir -p "$work/in/locked"
+  cp "$models/bowtie.obj" "$work/in/locked/"
+  cp "$models/bowtie.obj" "$work/in/secret.obj"
+  chmod 000 "$work/in/locked" "$work/in/secret.obj"
+  chmod 755 "$work"
+  run_as=()
+  if [ "$(id -u)" = 0 ]; then
+    run_as=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+    mkdir -p "$work/res5" && chmod 777 "$work/res5"
+  fi
+  if "${run_as[@]}" test -x "$mb"; then
+    expect_exit 2 "${run_as[@]}" "$mb" batch "$work/in" "$work/res5" --json
+    expect_in "$work/err" "skipped locked in $work/in: cannot list the folder (Permission denied)"
+    expect_in "$work/err" "skipped secret.obj in $work/in: cannot open the file (Permission denied)"
+    expect_in "$work/err" "5 file(s): 1 clean, 2 repaired, 0 failed, 2 skipped"
+    [ "$(json_lines "$work/out")" = 5 ] || fail "5 records with the unreadable ones"
+    [ "$(json_line_field "$work/out" 1 file)" = locked ] || fail "record of the locked folder"
+    [ "$(json_line_field "$work/out" 1 status)" = skipped ] || fail "locked folder skipped"
+  else
+    echo "note: $mb is not executable by user nobody; unreadable-folder check left out" >&2
+  fi
+  chmod 755 "$work/in/locked" && chmod 644 "$work/in/secret.obj"
+  ;;
+json_paths)
+  # Quotes, backslashes, a tab and Latin-1 (non-UTF-8) bytes in file and folder names.
+  dir="$work/in \"q\" \\back"$'\t'"tab"
+  mkdir -p "$dir/caf"$'\xe9'
+  weird="$dir/caf"$'\xe9'"/two \"cubes\"\\"$'\xff'".obj"
+  cp "$models/twocubes.obj" "$weird"
+  expect_exit 1 "$mb" check "$weird" --json
+  /usr/bin/python3 -c 'import json,sys; f=json.load(open(sys.argv[1],encoding="utf-8"))["file"]
+want=sys.argv[2].encode("utf-8","surrogateescape").decode("utf-8","replace")
+sys.exit(0 if f==want else "check file %r != %r" % (f, want))' "$work/out" "$weird" || fail "check file"
+  [ "$(json_field "$work/out" singular_edges)" = 1 ] || fail "check through a weird path"
+  expect_exit 0 "$mb" repair "$weird" "$dir/out \"x\".obj" --report "$dir/r\"\\.json"
+  [ "$(json_field "$dir/r\"\\.json" after.singular_edges)" = 0 ] || fail "repair report"
+  json_field "$dir/r\"\\.json" file | grep -qF 'two "cubes"\'$'\xef\xbf\xbd''.obj' || fail "U+FFFD in repair file"
+  expect_exit 0 "$mb" compare "$weird" --json
+  [ "$(json_field "$work/out" bridged.vertices)" = 16 ] || fail "compare"
+  expect_exit 0 "$mb" batch "$dir" "$work/res" --json
+  # Two meshes: the weird one and the repair output; the report is not a mesh.
+  [ "$(json_lines "$work/out")" = 2 ] || fail "batch: two records: $(cat "$work/out")"
+  [ "$(json_line_field "$work/out" 0 file)" = "caf"$'\xef\xbf\xbd'"/two \"cubes\"\\"$'\xef\xbf\xbd'".obj" ] \
+    || fail "batch file: $(cat "$work/out")"
+  [ -f "$work/res/caf"$'\xe9'"/two \"cubes\"\\"$'\xff'".obj" ] || fail "batch output under the real name"
   ;;
 snapshot)
   expect_exit 1 "$mb" snapshot "$models/twocubes.obj" "$work/twocubes.png"
