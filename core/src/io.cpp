@@ -955,6 +955,9 @@ Soup read_soup(const std::string& path, ReadInfo* info) {
     if (declared.declared_faces > soup.num_faces()) {
       info->faces_dropped_by_reader = declared.declared_faces - soup.num_faces();
     }
+    // The read accounting of the report schema (issue 13 refines it per format).
+    info->faces_kept = soup.num_faces();
+    info->faces_set_aside = info->faces_dropped_by_reader;
   }
   if (!importer.bad_index().empty())
     throw ReadError(path + ": " + importer.bad_index());
