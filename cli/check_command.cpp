@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
+#include "progress.h"
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
@@ -18,14 +19,22 @@ struct CheckArguments {
   std::string file;
   bool json = false;
   bool elements = false;
+  bool progress = false;
 };
 
 int run_check(const CheckArguments& arguments) {
   const std::string& path = arguments.file;
   ReadInfo info;
-  const Soup soup = read_soup(path, &info);
+  DefectReport report;
+  {
+    ProgressDisplay progress(path, progress_wanted(arguments.progress), progress_wanted(false),
+                             check_plan());
+    progress.stage(Stage::read, 0);
+    const Soup soup = read_soup(path, &info);
+    progress.stage(Stage::detect, 0);
+    report = detect_defects(soup);
+  }
   warn_about_reader(path, info);
-  const DefectReport report = detect_defects(soup);
   if (arguments.json) {
     ReportJsonOptions json;
     json.elements = arguments.elements;
@@ -51,6 +60,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
   command->add_flag("--elements", arguments->elements,
                     "with --json: also list the defective elements (vertex indices, edges); "
                     "default counts only");
+  command->add_flag("--progress", arguments->progress,
+                    "show the stage and a progress bar on stderr even when it is not a terminal "
+                    "(on a terminal it shows anyway once the work takes over a second)");
   command->callback([arguments, &exit_code] { exit_code = run_check(*arguments); });
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
+#include "progress.h"
 #include "validators.h"
 
 #include "meshbridge/errors.h"
@@ -46,6 +47,7 @@ struct RepairArguments {
   std::string pairing = "geometric";
   bool no_orient = false, no_stitch = false;
   bool elements = false;
+  bool progress = false;
   RepairOptions options;
   double separate = 0.0;
 };
@@ -64,19 +66,27 @@ int run_repair(RepairArguments& arguments) {
   }
 
   ReadInfo info;
-  const Soup soup = read_soup(in, &info);
-  warn_about_reader(in, info);
-  RepairResult result = repair(soup, options);
+  RepairResult result;
   std::size_t moved = 0;
-  if (separate > 0)
-    moved = separate_split_vertices(result.mesh, separate);
-  write_mesh(out, result.mesh);
-  if (!arguments.report.empty()) {
-    ReportJsonOptions json;
-    json.elements = arguments.elements;
-    write_text_atomically(arguments.report,
-                          repair_report_json(in, out, result.report, &info, json) + "\n");
+  {
+    ProgressDisplay progress(in, progress_wanted(arguments.progress), progress_wanted(false),
+                             repair_plan());
+    progress.stage(Stage::read, 0);
+    const Soup soup = read_soup(in, &info);
+    options.progress = progress.callback();
+    result = repair(soup, options);
+    progress.stage(Stage::write, 0);
+    if (separate > 0)
+      moved = separate_split_vertices(result.mesh, separate);
+    write_mesh(out, result.mesh);
+    if (!arguments.report.empty()) {
+      ReportJsonOptions json;
+      json.elements = arguments.elements;
+      write_text_atomically(arguments.report,
+                            repair_report_json(in, out, result.report, &info, json) + "\n");
+    }
   }
+  warn_about_reader(in, info);
 
   std::cout << in << " -> " << out << "\n" << to_text(result.report);
   if (separate > 0)
@@ -136,6 +146,9 @@ void add_repair_command(CLI::App& app, int& exit_code) {
                    "move each split vertex copy this distance (model units) into its own fan, "
                    "so the repair survives STL readers that weld by position; 0 = off")
       ->check(finite_at_least(0.0));
+  command->add_flag("--progress", arguments->progress,
+                    "show the stage and a progress bar on stderr even when it is not a terminal "
+                    "(on a terminal it shows anyway once the work takes over a second)");
   command->callback([arguments, &exit_code] { exit_code = run_repair(*arguments); });
 }
 

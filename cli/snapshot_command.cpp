@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
 #include "defect_snapshot.h"
+#include "progress.h"
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/errors.h"
@@ -78,6 +79,7 @@ struct SnapshotArguments {
   std::string file, out;
   std::string view = "iso";
   SnapshotOptions options;
+  bool progress = false;
 };
 
 int run_snapshot(const SnapshotArguments& arguments) {
@@ -88,9 +90,12 @@ int run_snapshot(const SnapshotArguments& arguments) {
   if (!ends_with_png(out))
     throw UsageError(out + ": the snapshot is written as PNG; name it .png");
 
+  ProgressDisplay progress(path, progress_wanted(arguments.progress), progress_wanted(false),
+                           snapshot_plan());
+  progress.stage(Stage::read, 0);
   ReadInfo info;
   const Soup soup = read_soup(path, &info);
-  warn_about_reader(path, info);
+  progress.stage(Stage::detect, 0);
   const DefectReport report = detect_defects(soup);
 
   // Fonts need a QGuiApplication; the "offscreen" platform needs no display. A platform the
@@ -103,8 +108,11 @@ int run_snapshot(const SnapshotArguments& arguments) {
   static char* app_argv[] = {app_name, nullptr};
   const QGuiApplication application(app_argc, app_argv);
 
+  progress.stage(Stage::write, 0);
   const DefectSnapshot snapshot = draw_defect_snapshot(soup, report, options);
   write_png_atomically(out, snapshot.image);
+  progress.finish();
+  warn_about_reader(path, info);
   if (options.legend && !snapshot.legend_drawn) {
     std::cerr << "meshbridge: warning: text does not render here (no font found); " << out
               << " has no legend\n";
@@ -133,6 +141,9 @@ void add_snapshot_command(CLI::App& app, int& exit_code) {
       ->add_option("--view", arguments->view,
                    "look from: iso (above a corner), x, y or z (along that axis)")
       ->transform(CLI::IsMember({"iso", "x", "y", "z"}, CLI::ignore_case));
+  command->add_flag("--progress", arguments->progress,
+                    "show the stage and a progress bar on stderr even when it is not a terminal "
+                    "(on a terminal it shows anyway once the work takes over a second)");
   command->callback([arguments, &exit_code] { exit_code = run_snapshot(*arguments); });
 }
 

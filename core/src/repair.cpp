@@ -62,10 +62,17 @@ std::size_t remove_unused_vertices(IndexedMesh& mesh) {
   return removed;
 }
 
+// Calls `options.progress`, when set, for the stage boundaries of repair().
+void tell(const RepairOptions& options, Stage stage, double fraction) {
+  if (options.progress)
+    options.progress(stage, fraction);
+}
+
 }  // namespace
 
 RepairResult repair(const Soup& soup, const RepairOptions& options) {
   validate_soup(soup);
+  tell(options, Stage::group, 0);
   RepairResult result;
   RepairReport& report = result.report;
   // Pre-passes on the soup (closing gaps: welding, T-junction cracks) go here, before the
@@ -113,6 +120,8 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
     grouped = detail::group_sides(filtered_working->soup());
   }
   const detail::WorkingSoup& working = filtering ? *filtered_working : simple;
+  tell(options, Stage::group, 1);
+  tell(options, Stage::pair, 0);
   detail::PipelineOptions pipeline_options;
   pipeline_options.pairing = options.pairing;
   pipeline_options.orient = options.orient;
@@ -151,12 +160,15 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   // The pipeline's grouping and pairing (about 20 bytes per side) are not needed any more: free
   // them before the second detection allocates its own.
   pipeline = detail::PipelineResult();
+  tell(options, Stage::pair, 1);
+  tell(options, Stage::detect, 0);
   // The output is the input itself when nothing was split, flipped, removed or rewritten: its
   // detection is then the input's. Otherwise detect again, independently of the pipeline.
   const bool unchanged = !filtering && simple.is_identity() && report.vertices_split == 0 &&
                          report.faces_flipped == 0 && report.isolated_vertices_removed == 0;
   if (detecting)
     report.after = unchanged ? report.before : detect_defects(mesh.soup);
+  tell(options, Stage::detect, 1);
   report.components_before = report.before.num_components;
   report.components_after = report.after.num_components;
   report.boundary_edges_before = report.before.boundary_edges.size();

@@ -432,6 +432,36 @@ explain)
   expect_exit 2 "$mb" explain frobnicate
   expect_in "$work/err" "no entry for 'frobnicate'; known terms: manifold, singular edge"
   ;;
+progress)
+  # On a pipe: nothing unless --progress, then one line per stage (MESHBRIDGE_PROGRESS_DELAY=0:
+  # from the start instead of after a second).
+  export MESHBRIDGE_PROGRESS_DELAY=0
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/a.obj"
+  [ ! -s "$work/err" ] || fail "progress on a pipe without --progress: $(cat "$work/err")"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/a.obj" --progress
+  [ "$(grep -c '%  ' "$work/err")" = 5 ] || fail "repair stages: $(cat "$work/err")"
+  for stage in read group pair detect write; do
+    grep -Eq "twocubes.obj  \[[#.]{24}\] [0-9]+%  $stage  0:00$" "$work/err" || fail "no $stage line"
+  done
+  expect_in "$work/out" "-> $work/a.obj"
+  expect_exit 1 "$mb" check "$models/twocubes.obj" --progress
+  [ "$(grep -c '%  ' "$work/err")" = 2 ] || fail "check stages: $(cat "$work/err")"
+  expect_in "$work/err" "0%  read"
+  expect_in "$work/err" "60%  detect"
+  expect_exit 1 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --progress
+  expect_in "$work/err" "80%  write"
+  # A terminal (script(1) gives one): the line is redrawn in place and erased at the end.
+  if command -v script >/dev/null; then
+    script -qec "'$mb' repair '$models/twocubes.obj' '$work/t.obj'" /dev/null >"$work/tty" 2>&1 ||
+      fail "repair on a terminal: $(cat "$work/tty")"
+    grep -q $'\r.*twocubes.obj  \[.*write' "$work/tty" || fail "no bar on a terminal: $(cat -v "$work/tty")"
+    grep -q $'\r\033\[K' "$work/tty" || fail "bar not erased: $(cat -v "$work/tty")"
+  fi
+  # Work that ends within the delay shows nothing (the default delay is 1 s).
+  MESHBRIDGE_PROGRESS_DELAY=600 expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/a.obj" --progress
+  [ ! -s "$work/err" ] || fail "progress for work within the delay: $(cat "$work/err")"
+  unset MESHBRIDGE_PROGRESS_DELAY
+  ;;
 *)
   echo "unknown case $case_name" >&2
   exit 2

@@ -6,6 +6,7 @@
 #include "meshbridge/defect_report.h"
 #include "meshbridge/indexed_mesh.h"
 #include "meshbridge/pairing.h"
+#include "meshbridge/progress.h"
 #include "meshbridge/soup.h"
 
 #include <cstddef>
@@ -29,6 +30,8 @@ struct RepairOptions {
   //! come from them (components, boundary edges before/after) are 0; everything repair itself
   //! did is still counted. The cleanup options need detection and turn it on.
   bool detect_before_after = true;
+  //! Told when the stages group, pair and detect start and end (default empty: not called).
+  ProgressCallback progress;
 };
 
 //! What repair changed. Every count is exact.
