@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
+#include "paths.h"
 #include "progress.h"
 
 #include "meshbridge/detect_defects.h"
@@ -24,6 +25,7 @@ struct CheckArguments {
 
 int run_check(const CheckArguments& arguments) {
   const std::string& path = arguments.file;
+  check_readable_file(path);
   ReadInfo info;
   DefectReport report;
   {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
+#include "paths.h"
 
 #include "meshbridge/bridged_mesh.h"
 #include "meshbridge/detect_defects.h"
@@ -46,6 +47,7 @@ BuildFigures stock_figures(const StockBuildReport& s) {
 
 int run_compare(const CompareArguments& arguments) {
   const std::string& path = arguments.file;
+  check_readable_file(path);
   ReadInfo info;
   const Soup soup = read_soup(path, &info);
   warn_about_reader(path, info);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
+#include "paths.h"
 #include "progress.h"
 #include "validators.h"
 
@@ -11,7 +12,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -30,15 +33,18 @@ void write_text_atomically(const std::string& path, const std::string& text) {
   const std::string temporary = path + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    errno = 0;
     out << text;
     if (!out.flush()) {
+      const std::string reason = errno ? std::strerror(errno) : "write failed";
       std::remove(temporary.c_str());
-      throw WriteError(path + ": cannot write the report");
+      throw WriteError(path + ": cannot write the report (" + reason + ")");
     }
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
     std::remove(temporary.c_str());
-    throw WriteError(path + ": cannot move the report into place");
+    throw WriteError(path + ": cannot move the report into place (" + reason + ")");
   }
 }
 
@@ -64,6 +70,10 @@ int run_repair(RepairArguments& arguments) {
   if (!is_supported_mesh_file(out)) {
     throw UsageError(out + ": unknown output format (expected .obj, .off, .ply or .stl)");
   }
+  check_readable_file(in);
+  check_writable_file(out);
+  if (!arguments.report.empty())
+    check_writable_file(arguments.report);
 
   ReadInfo info;
   RepairResult result;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
 #include "defect_snapshot.h"
+#include "paths.h"
 #include "progress.h"
 
 #include "meshbridge/detect_defects.h"
@@ -45,8 +46,11 @@ void write_png_atomically(const std::string& path, const QImage& image) {
   const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
   const std::string temporary = dir + "." + name + ".tmp" + std::to_string(::getpid()) + ".png";
   QImageWriter writer(QFile::decodeName(temporary.c_str()), QByteArrayLiteral("png"));
+  errno = 0;
   if (!writer.write(image)) {
-    const std::string reason = writer.errorString().toStdString();
+    // Qt says "Unknown error" for a full disk; the OS reason, when there is one, says more.
+    const std::string reason =
+        errno != 0 ? std::strerror(errno) : writer.errorString().toStdString();
     std::remove(temporary.c_str());
     throw WriteError(path + ": cannot write the PNG (" + reason + ")");
   }
@@ -89,6 +93,8 @@ int run_snapshot(const SnapshotArguments& arguments) {
   options.view = parse_snapshot_view(arguments.view);
   if (!ends_with_png(out))
     throw UsageError(out + ": the snapshot is written as PNG; name it .png");
+  check_readable_file(path);
+  check_writable_file(out);
 
   ProgressDisplay progress(path, progress_wanted(arguments.progress), progress_wanted(false),
                            snapshot_plan());

@@ -60,7 +60,7 @@ check_exit_codes)
   expect_exit 1 "$mb" check "$models/twocubes.obj"
   expect_in "$work/out" "singular edges: 1"
   expect_exit 2 "$mb" check "$work/missing.obj"
-  expect_in "$work/err" "cannot open"
+  expect_in "$work/err" "missing.obj: cannot read: no such file"
   expect_exit 2 "$mb" check
   expect_in "$work/err" "meshbridge check: error: FILE is required"
   expect_exit 2 "$mb" frobnicate
@@ -174,7 +174,7 @@ bad_input)
   expect_exit 2 "$mb" check "$work/x.dxf"
   expect_in "$work/err" "unknown format"
   expect_exit 2 "$mb" check "$work"
-  expect_in "$work/err" "is a directory"
+  expect_in "$work/err" "cannot read: it is a folder"
   ;;
 atomic_output)
   echo "previous content" >"$work/keep.obj"
@@ -339,7 +339,7 @@ snapshot)
   ;;
 snapshot_errors)
   expect_exit 2 "$mb" snapshot "$work/missing.obj" "$work/a.png"
-  expect_in "$work/err" "cannot open"
+  expect_in "$work/err" "missing.obj: cannot read: no such file"
   [ ! -e "$work/a.png" ] || fail "missing input left an output"
   printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' >"$work/range.obj"
   echo "previous content" >"$work/keep.png"
@@ -347,19 +347,19 @@ snapshot_errors)
   expect_in "$work/err" "out of range"
   [ "$(cat "$work/keep.png")" = "previous content" ] || fail "output overwritten on bad input"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/nodir/a.png"
-  expect_in "$work/err" "nodir/a.png: cannot write the PNG"
+  expect_in "$work/err" "nodir/a.png: cannot write: the folder '$work/nodir' does not exist"
   [ ! -e "$work/nodir" ] || fail "created a directory"
   mkdir "$work/locked"
   chmod 555 "$work/locked"
   if ! touch "$work/locked/probe" 2>/dev/null; then  # root writes anyway: nothing to test then
     expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/locked/a.png"
-    expect_in "$work/err" "cannot write the PNG"
+    expect_in "$work/err" "cannot write into the folder '$work/locked' (Permission denied)"
     [ -z "$(ls -A "$work/locked")" ] || fail "file left in the locked directory: $(ls -A "$work/locked")"
   fi
   chmod 755 "$work/locked"
   mkdir "$work/dir.png"  # the PNG is written, but cannot replace a directory: the temporary goes
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/dir.png"
-  expect_in "$work/err" "cannot move the written file into place"
+  expect_in "$work/err" "dir.png: cannot write: it is a folder"
   ls -a "$work" | grep -q tmp && fail "temporary file left behind: $(ls -a "$work")"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --size 8
   expect_in "$work/err" "--size: Value 8 not in range 16 to 8192"
@@ -461,6 +461,57 @@ progress)
   MESHBRIDGE_PROGRESS_DELAY=600 expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/a.obj" --progress
   [ ! -s "$work/err" ] || fail "progress for work within the delay: $(cat "$work/err")"
   unset MESHBRIDGE_PROGRESS_DELAY
+  ;;
+messages)
+  # Each names the path and the cause, before any work is done.
+  expect_exit 2 "$mb" check "$work/no/such/folder/a.obj"
+  expect_in "$work/err" "$work/no/such/folder/a.obj: cannot read: the folder '$work/no' does not exist"
+  expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/nodir/sub/out.obj"
+  expect_in "$work/err" "$work/nodir/sub/out.obj: cannot write: the folder '$work/nodir' does not exist"
+  expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/out.obj" --report "$work/nodir/r.json"
+  expect_in "$work/err" "r.json: cannot write: the folder '$work/nodir' does not exist"
+  [ ! -e "$work/out.obj" ] || fail "repair wrote its output before failing on the report's folder"
+  touch "$work/plain"
+  expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/plain/out.obj"
+  expect_in "$work/err" "cannot write: '$work/plain' is not a folder"
+  # Permission denied, with the OS reason: as an unprivileged user (root may write anywhere).
+  mkdir "$work/locked" "$work/secret"
+  cp "$models/twocubes.obj" "$work/secret/a.obj"
+  chmod 555 "$work/locked"
+  chmod 000 "$work/secret/a.obj"
+  as_user=()
+  if [ "$(id -u)" -eq 0 ]; then
+    command -v setpriv >/dev/null && as_user=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+    chmod 755 "$work"
+  fi
+  if [ "$(id -u)" -ne 0 ] || [ ${#as_user[@]} -gt 0 ]; then
+    expect_exit 2 "${as_user[@]}" "$mb" repair "$models/twocubes.obj" "$work/locked/a.obj"
+    expect_in "$work/err" "$work/locked/a.obj: cannot write into the folder '$work/locked' (Permission denied)"
+    expect_exit 2 "${as_user[@]}" "$mb" check "$work/secret/a.obj"
+    expect_in "$work/err" "$work/secret/a.obj: cannot read (Permission denied)"
+  else
+    echo "messages: permission checks skipped (root without setpriv)"
+  fi
+  chmod 755 "$work/locked"
+  # Disk full (ENOSPC) on an 8 KiB tmpfs in a private mount namespace, where unshare allows it.
+  mkdir "$work/full"
+  if unshare -rm true 2>/dev/null; then
+    # shellcheck disable=SC2016
+    full_run() {  # full_run COMMAND...: runs COMMAND with an 8 KiB tmpfs mounted on $work/full
+      unshare -rm sh -c 'mount -t tmpfs -o size=8k tmpfs "$0" && exec "$@"' "$work/full" "$@"
+    }
+    expect_exit 2 full_run "$mb" repair "$models/prisms24.obj" "$work/full/a.obj"
+    expect_in "$work/err" "$work/full/a.obj"
+    expect_in "$work/err" "No space left on device"
+    expect_exit 2 full_run sh -c 'head -c 9000 /dev/zero >"$0/fill" 2>/dev/null; exec "$@"' \
+      "$work/full" "$mb" repair "$models/prisms24.obj" "$work/b.obj" --report "$work/full/r.json"
+    expect_in "$work/err" "$work/full/r.json: cannot write the report (No space left on device)"
+    expect_exit 2 full_run sh -c 'head -c 9000 /dev/zero >"$0/fill" 2>/dev/null; exec "$@"' \
+      "$work/full" "$mb" snapshot "$models/prisms24.obj" "$work/full/a.png"
+    expect_in "$work/err" "$work/full/a.png: cannot write the PNG (No space left on device)"
+  else
+    echo "messages: disk-full checks skipped (unshare -rm not permitted here)"
+  fi
   ;;
 *)
   echo "unknown case $case_name" >&2

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "paths.h"
+
+#include "meshbridge/errors.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace meshbridge::cli {
+
+namespace {
+
+// stat() that reports errno; true when it succeeded.
+bool stat_path(const std::string& path, struct stat& info, int& error) {
+  if (::stat(path.c_str(), &info) == 0)
+    return true;
+  error = errno;
+  return false;
+}
+
+// The nearest missing folder on the way to `folder` ("a/b/c" with only "a" present: "a/b").
+std::string first_missing(const std::string& folder) {
+  std::string missing = folder;
+  for (;;) {
+    const std::string parent = folder_of(missing);
+    struct stat info;
+    if (parent == missing || ::stat(parent.c_str(), &info) == 0)
+      return missing;
+    missing = parent;
+  }
+}
+
+}  // namespace
+
+std::string folder_of(const std::string& path) {
+  std::string trimmed = path;
+  while (trimmed.size() > 1 && trimmed.back() == '/')
+    trimmed.pop_back();
+  const auto slash = trimmed.find_last_of('/');
+  if (slash == std::string::npos)
+    return ".";
+  if (slash == 0)
+    return "/";
+  return trimmed.substr(0, slash);
+}
+
+void check_readable_file(const std::string& path) {
+  struct stat info;
+  int error = 0;
+  if (!stat_path(path, info, error)) {
+    if (error == ENOENT) {
+      const std::string folder = folder_of(path);
+      struct stat folder_info;
+      if (::stat(folder.c_str(), &folder_info) != 0 && errno == ENOENT) {
+        throw ReadError(path + ": cannot read: the folder '" + first_missing(folder) +
+                        "' does not exist");
+      }
+      throw ReadError(path + ": cannot read: no such file");
+    }
+    throw ReadError(path + ": cannot read (" + std::strerror(error) + ")");
+  }
+  if (S_ISDIR(info.st_mode))
+    throw ReadError(path + ": cannot read: it is a folder, not a mesh file");
+  if (::access(path.c_str(), R_OK) != 0)
+    throw ReadError(path + ": cannot read (" + std::strerror(errno) + ")");
+}
+
+void check_writable_file(const std::string& path) {
+  const std::string folder = folder_of(path);
+  struct stat info;
+  int error = 0;
+  if (!stat_path(folder, info, error)) {
+    if (error == ENOENT) {
+      throw WriteError(path + ": cannot write: the folder '" + first_missing(folder) +
+                       "' does not exist");
+    }
+    throw WriteError(path + ": cannot write into the folder '" + folder + "' (" +
+                     std::strerror(error) + ")");
+  }
+  if (!S_ISDIR(info.st_mode))
+    throw WriteError(path + ": cannot write: '" + folder + "' is not a folder");
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    throw WriteError(path + ": cannot write into the folder '" + folder + "' (" +
+                     std::strerror(errno) + ")");
+  }
+  if (stat_path(path, info, error) && S_ISDIR(info.st_mode))
+    throw WriteError(path + ": cannot write: it is a folder");
+}
+
+}  // namespace meshbridge::cli
