@@ -6,15 +6,18 @@
 
 #include <CLI/CLI.hpp>
 
+#include <poll.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
+#include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <memory>
-#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -38,12 +41,102 @@ struct BatchArguments {
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
 };
 
+//! The figures of one table row (from the repair report of a clean or repaired file).
+struct TableRow {
+  std::size_t faces_in = 0, singular_edges = 0, singular_vertices = 0, faces_out = 0;
+  std::size_t components_after = 0;
+  bool watertight_after = false;
+};
+
 //! One line of the outcome: a job's result, or an unreadable entry found while listing.
 struct Entry {
   std::string name;
-  const FileJob* job = nullptr;  //!< null: unreadable, `result` is already final
-  FileJobResult result;
+  const FileJob* job = nullptr;  //!< null: unreadable, the status, reason and record are final
+  FileStatus status = FileStatus::failed;
+  std::string reason;
+  std::string record;
+  TableRow row;
 };
+
+void take_result(Entry& entry, const FileJobResult& result) {
+  entry.status = result.status;
+  entry.reason = result.reason;
+  entry.record = result.record;
+  const RepairReport& p = result.report;
+  entry.row = {p.faces_in,  p.before.singular_edges.size(), p.before.num_singular_vertices(),
+               p.faces_out, p.after.num_components,         p.after.watertight};
+}
+
+// With --jobs > 1 every file is repaired in a child process of its own: OpenMesh's readers and
+// writers keep per-call state in process-wide objects, so threads would have to take turns for
+// reading and writing, and a file that crashes its child fails alone instead of ending the run.
+// The child sends its result over a pipe: "status faces_in singular_edges singular_vertices
+// faces_out components_after watertight reason_length\n", the reason, then the record.
+
+void write_all(int fd, const std::string& data) {
+  for (std::size_t done = 0; done < data.size();) {
+    const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+    if (n < 0 && errno == EINTR)
+      continue;
+    if (n <= 0)
+      return;
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+[[noreturn]] void run_child(const FileJob& job, const FileJobOptions& options, int fd) {
+  Entry entry;
+  try {
+    take_result(entry, run_file_job(job, options));
+  } catch (...) {  // run_file_job catches everything it can name; out of memory while copying
+    ::_exit(3);
+  }
+  const TableRow& r = entry.row;
+  std::ostringstream head;
+  head << static_cast<int>(entry.status) << ' ' << r.faces_in << ' ' << r.singular_edges << ' '
+       << r.singular_vertices << ' ' << r.faces_out << ' ' << r.components_after << ' '
+       << (r.watertight_after ? 1 : 0) << ' ' << entry.reason.size() << '\n';
+  write_all(fd, head.str() + entry.reason + entry.record);
+  ::close(fd);
+  ::_exit(0);
+}
+
+//! Decodes what run_child sent; false if it is incomplete.
+bool decode_child(const std::string& data, Entry& entry) {
+  const auto newline = data.find('\n');
+  if (newline == std::string::npos)
+    return false;
+  std::istringstream head(data.substr(0, newline));
+  int status = 0, watertight = 0;
+  std::size_t reason_size = 0;
+  TableRow& r = entry.row;
+  if (!(head >> status >> r.faces_in >> r.singular_edges >> r.singular_vertices >> r.faces_out >>
+        r.components_after >> watertight >> reason_size) ||
+      status < 0 || status > 3 || data.size() < newline + 1 + reason_size) {
+    return false;
+  }
+  r.watertight_after = watertight != 0;
+  entry.status = static_cast<FileStatus>(status);
+  entry.reason = data.substr(newline + 1, reason_size);
+  entry.record = data.substr(newline + 1 + reason_size);
+  return !entry.record.empty();
+}
+
+//! The `failed` entry of a child that ended without a result.
+void child_failed(Entry& entry, int wait_status) {
+  std::string why = "the repair process ended without a result";
+  if (WIFSIGNALED(wait_status)) {
+    why = "the repair process was killed by signal " + std::to_string(WTERMSIG(wait_status)) +
+          " (" + strsignal(WTERMSIG(wait_status)) + ")";
+  } else if (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 3) {
+    why = "out of memory";
+  }
+  entry.status = FileStatus::failed;
+  entry.reason = entry.job->input + ": " + why;
+  entry.row = {};
+  entry.record =
+      batch_record_json(entry.name, entry.job->output_name, "failed", entry.reason, nullptr);
+}
 
 std::string clock_text(double seconds) {
   const long s = static_cast<long>(seconds + 0.5);
@@ -88,15 +181,14 @@ class BatchProgress {
 };
 
 void print_table_row(const Entry& e) {
-  const FileJobResult& r = e.result;
-  std::cout << "| " << e.name << " | " << to_string(r.status) << " | ";
-  if (r.status == FileStatus::clean || r.status == FileStatus::repaired) {
-    const RepairReport& p = r.report;
-    std::cout << p.faces_in << " | " << p.before.singular_edges.size() << " | "
-              << p.before.num_singular_vertices() << " | " << p.faces_out << " | "
-              << p.after.num_components << " | " << (p.after.watertight ? "yes" : "no") << " |\n";
+  std::cout << "| " << e.name << " | " << to_string(e.status) << " | ";
+  if (e.status == FileStatus::clean || e.status == FileStatus::repaired) {
+    const TableRow& r = e.row;
+    std::cout << r.faces_in << " | " << r.singular_edges << " | " << r.singular_vertices << " | "
+              << r.faces_out << " | " << r.components_after << " | "
+              << (r.watertight_after ? "yes" : "no") << " |\n";
   } else {
-    std::cout << r.reason << " | | | | | |\n";
+    std::cout << e.reason << " | | | | | |\n";
   }
 }
 
@@ -115,13 +207,18 @@ int run_batch(const BatchArguments& arguments) {
   }
 
   std::vector<Entry> entries;
-  for (const FileJob& job : plan.jobs)
-    entries.push_back({job.name, &job, {}});
+  for (const FileJob& job : plan.jobs) {
+    Entry entry;
+    entry.name = job.name;
+    entry.job = &job;
+    entries.push_back(std::move(entry));
+  }
   for (const BatchPlan::Unreadable& u : plan.unreadable) {
-    Entry entry{u.name, nullptr, {}};
-    entry.result.status = FileStatus::skipped;
-    entry.result.reason = u.reason;
-    entry.result.record = skipped_record(u);
+    Entry entry;
+    entry.name = u.name;
+    entry.status = FileStatus::skipped;
+    entry.reason = u.reason;
+    entry.record = skipped_record(u);
     entries.push_back(std::move(entry));
     std::cerr << "meshbridge: warning: skipped " << u.name << " in " << arguments.in_dir << ": "
               << u.reason << "\n";
@@ -129,8 +226,8 @@ int run_batch(const BatchArguments& arguments) {
   std::stable_sort(entries.begin(), entries.end(),
                    [](const Entry& a, const Entry& b) { return a.name < b.name; });
 
-  // Workers take files in name order; records are printed in name order as soon as every
-  // earlier one is done, so the output is the same for any --jobs.
+  // Files are taken in name order; records are printed in name order as soon as every earlier
+  // one is done, so the output is the same for any --jobs.
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
   BatchProgress progress(plan.jobs.size(), !arguments.quiet && (terminal || arguments.progress),
                          terminal);
@@ -142,57 +239,120 @@ int run_batch(const BatchArguments& arguments) {
   std::vector<char> done(entries.size(), 0);
   for (std::size_t i = 0; i < entries.size(); ++i)
     done[i] = entries[i].job ? 0 : 1;
-  std::mutex lock;
   std::size_t next_to_print = 0, files_done = 0, failed_so_far = 0;
-  const auto print_ready = [&] {  // under `lock`
+  const auto finished = [&](std::size_t i) {
+    failed_so_far += entries[i].status == FileStatus::failed ? 1 : 0;
+    done[i] = 1;
+    progress.file_done(entries[i].name, ++files_done, failed_so_far);
     for (; next_to_print < entries.size() && done[next_to_print]; ++next_to_print) {
       if (arguments.json) {
-        std::cout << entries[next_to_print].result.record << "\n";
+        std::cout << entries[next_to_print].record << "\n";
       } else {
         print_table_row(entries[next_to_print]);
       }
     }
     std::cout.flush();
   };
-  std::atomic<std::size_t> next_job{0};
-  const auto work = [&] {
-    for (;;) {
-      const std::size_t i = next_job.fetch_add(1);
-      if (i >= entries.size())
-        return;
-      if (!entries[i].job)
-        continue;
-      FileJobResult result = run_file_job(*entries[i].job, options);
-      const std::lock_guard<std::mutex> guard(lock);
-      failed_so_far += result.status == FileStatus::failed ? 1 : 0;
-      entries[i].result = std::move(result);
-      done[i] = 1;
-      progress.file_done(entries[i].name, ++files_done, failed_so_far);
-      print_ready();
+  for (; next_to_print < entries.size() && done[next_to_print]; ++next_to_print) {
+    if (arguments.json) {
+      std::cout << entries[next_to_print].record << "\n";
+    } else {
+      print_table_row(entries[next_to_print]);
     }
-  };
-  {
-    const std::lock_guard<std::mutex> guard(lock);
-    print_ready();  // unreadable entries before the first job
   }
-  const unsigned threads = static_cast<unsigned>(
-      std::min<std::size_t>(arguments.jobs, std::max<std::size_t>(1, plan.jobs.size())));
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(work);
-  work();
-  for (std::thread& thread : pool)
-    thread.join();
+  std::cout.flush();
+
+  if (arguments.jobs <= 1) {
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+      if (entries[i].job && !done[i]) {
+        take_result(entries[i], run_file_job(*entries[i].job, options));
+        finished(i);
+      }
+    }
+  } else {
+    struct Child {
+      pid_t pid;
+      int fd;
+      std::size_t index;
+      std::string data;
+    };
+    std::vector<Child> running;
+    std::size_t next = 0;
+    std::signal(SIGPIPE, SIG_IGN);
+    for (;;) {
+      while (running.size() < arguments.jobs && next < entries.size()) {
+        const std::size_t i = next++;
+        if (done[i])
+          continue;
+        int fds[2];
+        if (::pipe(fds) != 0)
+          throw std::runtime_error(std::string("cannot start a repair process: ") +
+                                   strerror(errno));
+        std::cout.flush();
+        std::cerr.flush();
+        const pid_t pid = ::fork();
+        if (pid < 0) {
+          ::close(fds[0]);
+          ::close(fds[1]);
+          throw std::runtime_error(std::string("cannot start a repair process: ") +
+                                   strerror(errno));
+        }
+        if (pid == 0) {
+          ::close(fds[0]);
+          for (const Child& c : running)
+            ::close(c.fd);
+          run_child(*entries[i].job, options, fds[1]);
+        }
+        ::close(fds[1]);
+        running.push_back({pid, fds[0], i, {}});
+      }
+      if (running.empty())
+        break;
+      std::vector<pollfd> polls;
+      for (const Child& c : running)
+        polls.push_back({c.fd, POLLIN, 0});
+      if (::poll(polls.data(), polls.size(), -1) < 0) {
+        if (errno == EINTR)
+          continue;
+        throw std::runtime_error(std::string("waiting for the repair processes: ") +
+                                 strerror(errno));
+      }
+      for (std::size_t k = polls.size(); k-- > 0;) {
+        if (polls[k].revents == 0)
+          continue;
+        Child& c = running[k];
+        char buffer[65536];
+        const ssize_t n = ::read(c.fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR)
+          continue;
+        if (n > 0) {
+          c.data.append(buffer, static_cast<std::size_t>(n));
+          continue;
+        }
+        ::close(c.fd);
+        int wait_status = 0;
+        while (::waitpid(c.pid, &wait_status, 0) < 0 && errno == EINTR) {
+        }
+        Entry& entry = entries[c.index];
+        const bool exited_cleanly = WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0;
+        if (!exited_cleanly || !decode_child(c.data, entry))
+          child_failed(entry, wait_status);
+        const std::size_t index = c.index;
+        running.erase(running.begin() + static_cast<std::ptrdiff_t>(k));
+        finished(index);
+      }
+    }
+  }
 
   std::size_t count[4] = {0, 0, 0, 0};
   bool all_written = true;
   for (const Entry& e : entries) {
-    ++count[static_cast<int>(e.result.status)];
+    ++count[static_cast<int>(e.status)];
     // Skipped because up to date is fine; skipped because unreadable is not.
-    if (e.result.status == FileStatus::failed || !e.job) {
+    if (e.status == FileStatus::failed || !e.job) {
       all_written = false;
-    } else if (e.result.status == FileStatus::skipped &&
-               e.result.reason.find("is newer than the input") == std::string::npos) {
+    } else if (e.status == FileStatus::skipped &&
+               e.reason.find("is newer than the input") == std::string::npos) {
       all_written = false;
     }
   }
@@ -240,7 +400,9 @@ void add_batch_command(CLI::App& app, int& exit_code) {
                     "allow OUTDIR to be INDIR or inside it (originals are replaced)");
   command->add_flag("--resume", arguments->resume,
                     "skip files whose output exists and is newer than the input");
-  command->add_option("--jobs,-j", arguments->jobs, "files repaired in parallel (default: cores)")
+  command
+      ->add_option("--jobs,-j", arguments->jobs,
+                   "files repaired in parallel, each in a process of its own (default: cores)")
       ->capture_default_str()
       ->check(whole_number_in(1, 1024));
   command->callback([arguments, &exit_code] { exit_code = run_batch(*arguments); });
