@@ -75,6 +75,8 @@ check_json)
   [ "$(json_field "$work/out" file)" = "$models/prisms24.obj" ] || fail "prisms24 file"
   [ "$(json_field "$work/out" schema_version)" = 1 ] || fail "schema_version"
   [ "$(json_field "$work/out" kind)" = check ] || fail "kind"
+  [ "$(json_field "$work/out" read.declared_faces)" = 120 ] || fail "read.declared_faces"
+  [ "$(json_field "$work/out" read.faces_kept)" = 120 ] || fail "read.faces_kept"
   grep -q '"elements"' "$work/out" && fail "element lists without --elements"
   [ "$(wc -l <"$work/out")" = 1 ] || fail "check --json is not one line"
   expect_exit 1 "$mb" check "$models/prisms24.obj" --json --elements
@@ -123,6 +125,11 @@ prisms24 120 144 24
 icosphere 80 42 1
 TABLE
   expect_exit 0 "$mb" check "$work/twocubes.obj"  # two closed cubes: no defect left
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/e.obj" --report "$work/e.json" --elements
+  [ "$(json_field "$work/e.json" 'before.elements.singular_edges#')" = 1 ] || fail "--elements before"
+  [ "$(json_field "$work/e.json" before.elements.singular_edges.0.contenders)" = 4 ] || fail "contenders"
+  [ "$(json_field "$work/e.json" 'after.elements.singular_edges#')" = 0 ] || fail "--elements after"
+  grep -q '"elements"' "$work/twocubes.json" && fail "repair report lists elements without --elements"
   expect_exit 0 "$mb" repair "$models/moebius.obj" "$work/m.obj" --cut-nonorientable --report "$work/m.json"
   [ "$(json_field "$work/m.json" before.nonorientable_components)" = 1 ] || fail "moebius non-orientable"
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/c.obj" --pairing combinatorial --no-stitch --no-orient
