@@ -3,6 +3,8 @@
 
 #include "meshbridge/validate.h"
 
+#include "zbuffer_canvas.h"
+
 #include <QColor>
 #include <QFont>
 #include <QFontMetricsF>
@@ -62,34 +64,60 @@ ScreenAxes screen_axes(SnapshotView view) {
   throw std::invalid_argument("unknown snapshot view");
 }
 
-//! Edges carrying at least one polygon side, each once (drawing one twice would darken its
-//! antialiased rim).
-std::vector<VertexPair> distinct_edges(const Soup& soup) {
-  std::vector<VertexPair> edges;
-  edges.reserve(soup.num_corners());
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const PolygonView polygon = soup.polygon(f);
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-      const Index a = polygon[i];
-      const Index b = polygon[(i + 1) % polygon.size()];
-      if (a != b)
-        edges.push_back({std::min(a, b), std::max(a, b)});
-    }
+//! Where the model lands in the image: model coordinates are halved, centred on `centre` and
+//! scaled by `unit` into [-1, 1] (no overflow even near DBL_MAX), projected on the camera axes,
+//! then `mid` goes to the centre of `area` and one unit becomes `scale` pixels.
+struct Frame {
+  ScreenAxes axes;
+  Point forward;  //!< toward the camera: right x up
+  Point centre;
+  double unit = 1;
+  double mid_x = 0, mid_y = 0;
+  double scale = 1;
+  QRectF area;
+
+  Point normalized(const Point& p) const { return (p * 0.5 - centre * 0.5) * unit; }
+  CanvasPoint to_canvas(const Point& p) const {
+    const Point n = normalized(p);
+    return {area.center().x() + ((n | axes.right) - mid_x) * scale,
+            area.center().y() - ((n | axes.up) - mid_y) * scale, n | forward};
   }
-  std::sort(edges.begin(), edges.end(), [](const VertexPair& p, const VertexPair& q) {
-    return p.v0 != q.v0 ? p.v0 < q.v0 : p.v1 < q.v1;
-  });
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  return edges;
+};
+
+//! Vertices the picture is fitted to: those of defects with `focus` (if any), else all used.
+std::vector<char> fit_vertices(const Soup& soup, const DefectReport& report, SnapshotFocus focus) {
+  std::vector<char> fit(soup.num_vertices(), 0);
+  bool any = false;
+  if (focus == SnapshotFocus::defects) {
+    const auto mark = [&](Index v) {
+      if (v < fit.size()) {
+        fit[v] = 1;
+        any = true;
+      }
+    };
+    for (const SingularEdge& e : report.singular_edges)
+      mark(e.vertices.v0), mark(e.vertices.v1);
+    for (const VertexPair& e : report.boundary_edges)
+      mark(e.v0), mark(e.v1);
+    for (Index v : report.pinch_vertices)
+      mark(v);
+  }
+  if (!any) {
+    for (Index v : soup.corner_vertices)
+      fit[v] = 1;
+  }
+  return fit;
 }
 
-//! Pixel positions of all soup vertices: used vertices fitted into `area`, centred; isolated
-//! vertices are projected the same way but take no part in the fit.
-std::vector<QPointF> project(const Soup& soup, SnapshotView view, const QRectF& area) {
-  std::vector<bool> used(soup.num_vertices(), false);
+Frame make_frame(const Soup& soup, const DefectReport& report, const SnapshotOptions& options,
+                 const QRectF& area) {
+  Frame frame;
+  frame.axes = screen_axes(options.view);
+  frame.forward = frame.axes.right % frame.axes.up;
+  frame.area = area;
+  std::vector<char> used(soup.num_vertices(), 0);
   for (Index v : soup.corner_vertices)
-    used[v] = true;
-  // Halve before subtracting, then scale by the largest offset: no overflow even near DBL_MAX.
+    used[v] = 1;
   Point low(std::numeric_limits<double>::max());
   Point high(std::numeric_limits<double>::lowest());
   for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
@@ -98,42 +126,70 @@ std::vector<QPointF> project(const Soup& soup, SnapshotView view, const QRectF& 
       high.maximize(soup.positions[v]);
     }
   }
-  const Point centre = low * 0.5 + high * 0.5;
+  frame.centre = low * 0.5 + high * 0.5;
   double extent = 0;
   for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
     if (used[v])
-      extent = std::max(extent, (soup.positions[v] * 0.5 - centre * 0.5).max_abs());
+      extent = std::max(extent, (soup.positions[v] * 0.5 - frame.centre * 0.5).max_abs());
   }
-  const double unit = extent > 0 ? 1 / extent : 1;
+  frame.unit = extent > 0 ? 1 / extent : 1;
 
-  const ScreenAxes axes = screen_axes(view);
-  std::vector<QPointF> screen(soup.num_vertices());
-  double min_x = std::numeric_limits<double>::max(), max_x = std::numeric_limits<double>::lowest();
-  double min_y = min_x, max_y = max_x;
-  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-    const Point p = (soup.positions[v] * 0.5 - centre * 0.5) * unit;  // every coordinate in [-1,1]
-    screen[v] = QPointF(p.dot(axes.right), p.dot(axes.up));
-    if (used[v]) {
-      min_x = std::min(min_x, screen[v].x());
-      max_x = std::max(max_x, screen[v].x());
-      min_y = std::min(min_y, screen[v].y());
-      max_y = std::max(max_y, screen[v].y());
+  // The projected box of the fitted vertices, and of the whole model (a zoom shows at least a
+  // tenth of the model's width, so one short defect edge is not blown up to fill the picture).
+  const auto box = [&](const std::vector<char>& which, double* out) {
+    out[0] = out[2] = std::numeric_limits<double>::max();
+    out[1] = out[3] = std::numeric_limits<double>::lowest();
+    for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
+      if (!which[v])
+        continue;
+      const Point n = frame.normalized(soup.positions[v]);
+      const double x = n | frame.axes.right, y = n | frame.axes.up;
+      out[0] = std::min(out[0], x), out[1] = std::max(out[1], x);
+      out[2] = std::min(out[2], y), out[3] = std::max(out[3], y);
+    }
+  };
+  double whole[4], fitted[4];
+  box(used, whole);
+  box(fit_vertices(soup, report, options.focus), fitted);
+  if (options.focus == SnapshotFocus::defects) {
+    const double least = 0.1 * std::max(whole[1] - whole[0], whole[3] - whole[2]);
+    for (int axis = 0; axis < 4; axis += 2) {
+      const double middle = (fitted[axis] + fitted[axis + 1]) / 2;
+      const double half = std::max((fitted[axis + 1] - fitted[axis]) * 0.55, least / 2);
+      fitted[axis] = middle - half, fitted[axis + 1] = middle + half;
     }
   }
-  const double width = max_x - min_x;
-  const double height = max_y - min_y;
-  double scale = 1;
+  const double width = fitted[1] - fitted[0], height = fitted[3] - fitted[2];
+  frame.scale = 1;
   if (width > 1e-12 || height > 1e-12) {
-    scale = std::min(width > 1e-12 ? area.width() / width : std::numeric_limits<double>::max(),
-                     height > 1e-12 ? area.height() / height : std::numeric_limits<double>::max());
+    frame.scale =
+        std::min(width > 1e-12 ? area.width() / width : std::numeric_limits<double>::max(),
+                 height > 1e-12 ? area.height() / height : std::numeric_limits<double>::max());
   }
-  const QPointF mid((min_x + max_x) / 2, (min_y + max_y) / 2);
-  for (QPointF& s : screen) {
-    // Image y grows downward.
-    s = QPointF(area.center().x() + (s.x() - mid.x()) * scale,
-                area.center().y() - (s.y() - mid.y()) * scale);
+  frame.mid_x = (fitted[0] + fitted[1]) / 2;
+  frame.mid_y = (fitted[2] + fitted[3]) / 2;
+  return frame;
+}
+
+//! Light grey for a face whose unit normal makes `cosine` with the light (both sides lit).
+QRgb shade(double cosine) {
+  const int grey = static_cast<int>(std::lround(95 + 140 * std::min(1.0, std::abs(cosine))));
+  return qRgb(grey, grey, grey);
+}
+
+//! The median on-screen length of some edges (0 for none): how dense the defects are drawn.
+template <class Edges, class PairOf>
+double median_length(const std::vector<CanvasPoint>& canvas, const Edges& edges, PairOf pair_of) {
+  std::vector<double> lengths;
+  const std::size_t step = std::max<std::size_t>(1, edges.size() / 4096);  // a sample suffices
+  for (std::size_t i = 0; i < edges.size(); i += step) {
+    const VertexPair p = pair_of(edges[i]);
+    lengths.push_back(std::hypot(canvas[p.v0].x - canvas[p.v1].x, canvas[p.v0].y - canvas[p.v1].y));
   }
-  return screen;
+  if (lengths.empty())
+    return 0;
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  return lengths[lengths.size() / 2];
 }
 
 //! True if `font` puts ink on an image: offscreen, without a font file, text draws nothing.
@@ -199,7 +255,10 @@ const char* to_string(SnapshotView view) {
 }
 
 DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report,
-                                    const SnapshotOptions& options) {
+                                    const SnapshotOptions& options, const Soup* frame_soup,
+                                    const DefectReport* frame_report) {
+  if (frame_soup != nullptr && frame_report == nullptr)
+    throw std::invalid_argument("draw_defect_snapshot: frame_soup without frame_report");
   if (options.size < SnapshotOptions::kMinSize || options.size > SnapshotOptions::kMaxSize) {
     throw std::invalid_argument(
         "snapshot size must be " + std::to_string(SnapshotOptions::kMinSize) + " to " +
@@ -225,17 +284,16 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
   const double pen_scale = std::max(1.0, size / 800);
   const double border = size * options.margin;
   DefectSnapshot result;
-  result.image = QImage(options.size, options.size, QImage::Format_ARGB32);
-  if (result.image.isNull())
-    throw std::bad_alloc();
-  result.image.fill(kBackground);
 
   // The legend: one line at the top, shrunk until it fits the width.
-  const QString legend =
+  const QString counts =
       QStringLiteral("%1 singular edges, %2 singular vertices, %3 boundary edges")
           .arg(report.singular_edges.size())
           .arg(report.num_singular_vertices())
           .arg(report.boundary_edges.size());
+  const QString legend = options.title.empty()
+                             ? counts
+                             : QString::fromLocal8Bit(options.title.c_str()) + ": " + counts;
   QFont font;
   double legend_height = 0;
   if (options.legend && QGuiApplication::instance() != nullptr) {
@@ -252,43 +310,77 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
   }
   const QRectF area(border, border + legend_height, size - 2 * border,
                     size - 2 * border - legend_height);
-  const std::vector<QPointF> screen = project(soup, options.view, area);
+  const Frame frame = frame_soup ? make_frame(*frame_soup, *frame_report, options, area)
+                                 : make_frame(soup, report, options, area);
+  std::vector<CanvasPoint> canvas_points(soup.num_vertices());
+  for (std::size_t v = 0; v < soup.num_vertices(); ++v)
+    canvas_points[v] = frame.to_canvas(soup.positions[v]);
 
-  QPainter painter(&result.image);
-  painter.setRenderHint(QPainter::Antialiasing, true);
-  painter.setRenderHint(QPainter::TextAntialiasing, true);
-  const auto draw_edges = [&](const QColor& color, double width, const auto& pairs,
-                              const auto& pair_of) {
-    QVector<QLineF> lines;
-    lines.reserve(static_cast<int>(pairs.size()));
-    for (const auto& item : pairs) {
-      const VertexPair pair = pair_of(item);
-      lines.push_back(QLineF(screen[pair.v0], screen[pair.v1]));
+  ZBufferCanvas canvas(options.size, options.size, kBackground);
+  // The light comes from the upper left, in front: fixed to the camera, so every view is lit.
+  Point light = frame.axes.right * -0.4 + frame.axes.up * 0.6 + frame.forward * 0.7;
+  light.normalize();
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const PolygonView polygon = soup.polygon(f);
+    Point normal(0, 0, 0);  // Newell's normal: fine for any simple polygon
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const Point p = frame.normalized(soup.positions[polygon[i]]);
+      const Point q = frame.normalized(soup.positions[polygon[(i + 1) % polygon.size()]]);
+      normal += Point((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
+                      (p[0] - q[0]) * (p[1] + q[1]));
     }
-    painter.setPen(QPen(color, width * pen_scale, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-    painter.drawLines(lines);
-  };
-  const auto same = [](const VertexPair& pair) { return pair; };
-  draw_edges(kEdgeColor, 1, distinct_edges(soup), same);
-  draw_edges(kBoundaryColor, 2, report.boundary_edges, same);
-  draw_edges(kSingularColor, 3, report.singular_edges,
-             [](const SingularEdge& edge) { return edge.vertices; });
-
-  painter.setPen(Qt::NoPen);
-  painter.setBrush(kSingularColor);
-  const double radius = 3.5 * pen_scale;
-  for (const std::vector<Index>* list : {&report.singular_edge_vertices, &report.pinch_vertices}) {
-    for (Index v : *list)
-      painter.drawEllipse(screen[v], radius, radius);
+    const double length = normal.norm();
+    const QRgb color = shade(length > 0 ? (normal | light) / length : 0);
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+      canvas.fill_triangle(canvas_points[polygon[0]], canvas_points[polygon[i]],
+                           canvas_points[polygon[i + 1]], color);
+    }
   }
 
+  // Depth tolerance: three pixels' worth, so edges on the surface are not lost to rounding.
+  const double tolerance = 3 / std::max(frame.scale, 1e-300);
+  const auto same = [](const VertexPair& pair) { return pair; };
+  const auto vertices_of = [](const SingularEdge& edge) { return edge.vertices; };
+  // Defect edges shorter than kDenseLength pixels on screen (median) are too dense to draw one
+  // by one: they tint the surface instead (not counted as defect pixels), their hidden parts
+  // and vertex dots are left out, so the shape stays visible.
+  constexpr double kDenseLength = 6;
+  constexpr std::size_t kMostHiddenDrawn = 20000;
+  const auto draw_edges = [&](const auto& edges, const auto& pair_of, double width, QRgb color,
+                              QRgb hidden) {
+    const double median = median_length(canvas_points, edges, pair_of);
+    const bool dense = !edges.empty() && median < kDenseLength;
+    // Thinner where the edges are short on screen: a grid of defects stays a grid.
+    const double shown = std::max(1.0, std::min(width * pen_scale, median / 4));
+    if (dense || edges.size() > kMostHiddenDrawn)
+      hidden = qRgba(0, 0, 0, 0);
+    for (const auto& edge : edges) {
+      const VertexPair pair = pair_of(edge);
+      canvas.draw_line(canvas_points[pair.v0], canvas_points[pair.v1], shown, color, hidden,
+                       tolerance, dense ? 0.45 : 1.0);
+    }
+    return dense ? 0.0 : shown;
+  };
+  draw_edges(report.boundary_edges, same, 2, kBoundaryColor.rgb(), qRgb(170, 225, 170));
+  const double red_width =
+      draw_edges(report.singular_edges, vertices_of, 3, kSingularColor.rgb(), qRgb(245, 170, 170));
+  if (red_width > 0 || report.singular_edges.empty()) {
+    const double radius = std::max(red_width / 2 + 0.5, std::min(3.5 * pen_scale, red_width * 1.2));
+    for (Index v : report.singular_edge_vertices)
+      canvas.draw_dot(canvas_points[v], radius, kSingularColor.rgb(), tolerance);
+  }
+  for (Index v : report.pinch_vertices)  // no edge shows these: always full size
+    canvas.draw_dot(canvas_points[v], 3.5 * pen_scale, kSingularColor.rgb(), tolerance);
+  result.image = std::move(canvas.image());
+
   if (result.legend_drawn) {
+    QPainter painter(&result.image);
+    painter.setRenderHint(QPainter::TextAntialiasing, true);
     painter.setFont(font);
     painter.setPen(kLegendColor);
     painter.drawText(QRectF(border, border / 2, size - 2 * border, legend_height),
                      Qt::AlignLeft | Qt::AlignTop, legend);
   }
-  painter.end();
 
   for (int y = 0; y < result.image.height(); ++y) {
     const QRgb* row = reinterpret_cast<const QRgb*>(result.image.constScanLine(y));
@@ -298,6 +390,25 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
     }
   }
   return result;
+}
+
+DefectSnapshot side_by_side(const DefectSnapshot& left, const DefectSnapshot& right) {
+  constexpr int kRule = 2;
+  DefectSnapshot both;
+  both.image = QImage(left.image.width() + kRule + right.image.width(),
+                      std::max(left.image.height(), right.image.height()), QImage::Format_ARGB32);
+  if (both.image.isNull())
+    throw std::bad_alloc();
+  both.image.fill(kBackground);
+  QPainter painter(&both.image);
+  painter.drawImage(0, 0, left.image);
+  painter.fillRect(left.image.width(), 0, kRule, both.image.height(), kEdgeColor);
+  painter.drawImage(left.image.width() + kRule, 0, right.image);
+  painter.end();
+  both.legend_drawn = left.legend_drawn && right.legend_drawn;
+  both.red_pixels = left.red_pixels + right.red_pixels;
+  both.green_pixels = left.green_pixels + right.green_pixels;
+  return both;
 }
 
 }  // namespace meshbridge::cli

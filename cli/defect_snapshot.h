@@ -23,6 +23,13 @@ enum class SnapshotView {
   z   //!< from +z (top view), +y up, +x to the right
 };
 
+//! What the picture is fitted to.
+enum class SnapshotFocus {
+  whole,   //!< the whole model (default)
+  defects  //!< the bounding box of the singular and boundary edges and pinch vertices (the whole
+           //!< model when there is no such defect)
+};
+
 //! Parses "iso", "x", "y" or "z". \throw std::invalid_argument naming the text otherwise
 SnapshotView parse_snapshot_view(const std::string& text);
 //! "iso", "x", "y" or "z".
@@ -37,9 +44,12 @@ struct SnapshotOptions {
   SnapshotView view = SnapshotView::iso;  //!< default iso
   //! Blank border on every side, as a fraction of `size` (default 0.05).
   double margin = 0.05;
+  SnapshotFocus focus = SnapshotFocus::whole;  //!< default whole
   //! Draw the legend line of counts at the top (default true). It is left out anyway when no
   //! QGuiApplication exists or text does not render (no font found offscreen).
   bool legend = true;
+  //! Starts the legend, e.g. the file name (default empty: counts only).
+  std::string title;
 };
 
 //! What draw_defect_snapshot made.
@@ -54,21 +64,31 @@ struct DefectSnapshot {
   static constexpr int kColorTolerance = 48;
 };
 
-//! Draws `soup` as an orthographic wireframe with its defects from `report` on top, antialiased,
-//! on white, in layers: every polygon side light grey (192,192,192) 1 px, then boundary edges
-//! green (0,160,0) 2 px, then singular edges red (220,0,0) 3 px, then singular vertices
-//! (singular-edge endpoints and pinch vertices) as red dots 7 px across; widths grow with `size`
-//! above 800. No hidden lines are removed, so defects at the back show through. The vertices
-//! used by polygons are fitted into the image inside the margin (below the legend, if one is
-//! drawn), keeping the aspect ratio; a model that projects to a single point is drawn at the
-//! centre. The legend is one black line, "N singular edges, M singular vertices, K boundary
-//! edges"; text needs a QGuiApplication (the `snapshot` command makes one on the "offscreen"
-//! platform), so without one the legend is left out and the rest is drawn all the same.
+//! Draws `soup` seen orthographically along `options.view`: its polygons flat-shaded light grey
+//! (Lambert, one fixed light, both sides lit) with a depth buffer, on white; on top, where the
+//! surface does not hide them, boundary edges green (0,160,0), 2 px, and singular edges red
+//! (220,0,0), 3 px, with singular vertices (singular-edge endpoints and pinch vertices) as red
+//! dots 7 px across; widths grow with `size` above 800 and shrink (to 1 px) where the defect
+//! edges are short on screen, so a dense mesh shows a grid rather than a solid colour. Defect
+//! edges behind the surface are drawn 1 px in pale red / pale green (not counted). Polygons
+//! smaller than a pixel still colour the pixel under their centre. The model (or with
+//! SnapshotFocus::defects the defects' bounding box) is fitted into the image inside the margin,
+//! below the legend; with `frame_soup` the fit is that of `frame_soup` and `frame_report`
+//! instead, so two pictures (before and after a repair) line up. The legend is one black line,
+//! "TITLE: N singular edges, M singular vertices, K boundary edges"; text needs a
+//! QGuiApplication (the CLI makes one on the "offscreen" platform), so without one the legend
+//! is left out and the rest is drawn all the same.
 //! \pre `soup` passes validate_soup(); `report` is detect_defects(soup); `options.size` in
-//! [kMinSize, kMaxSize]; `options.margin` in [0, 0.45]
+//! [kMinSize, kMaxSize]; `options.margin` in [0, 0.45]; `frame_report` set when `frame_soup` is
 //! \throw InvalidSoupError from validate_soup()
 //! \throw std::invalid_argument naming the bad option, or a report vertex the soup lacks
 DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report,
-                                    const SnapshotOptions& options = {});
+                                    const SnapshotOptions& options = {},
+                                    const Soup* frame_soup = nullptr,
+                                    const DefectReport* frame_report = nullptr);
+
+//! `left` and `right` side by side with a 2-pixel grey rule between them (heights may differ;
+//! the rest is white). Pixel counts add up.
+DefectSnapshot side_by_side(const DefectSnapshot& left, const DefectSnapshot& right);
 
 }  // namespace meshbridge::cli

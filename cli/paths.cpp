@@ -47,6 +47,11 @@ std::string folder_of(const std::string& path) {
   return trimmed.substr(0, slash);
 }
 
+std::string file_name_of(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
 void check_readable_file(const std::string& path) {
   struct stat info;
   int error = 0;

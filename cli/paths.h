@@ -11,6 +11,9 @@ namespace meshbridge::cli {
 //! The folder a path's file lives in: "" for "a.obj" becomes ".", "/a.obj" becomes "/".
 std::string folder_of(const std::string& path);
 
+//! The last part of a path: "a/b/c.obj" gives "c.obj".
+std::string file_name_of(const std::string& path);
+
 //! Throws ReadError naming `path` when it cannot be read: "the folder 'D' does not exist",
 //! "no such file", "it is a folder", or the OS reason (e.g. "Permission denied"). Other
 //! problems (format, content) are left to the reader.

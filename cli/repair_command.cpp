@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
+#include "defect_snapshot.h"
 #include "paths.h"
+#include "png_output.h"
 #include "progress.h"
 #include "validators.h"
 
@@ -54,6 +56,7 @@ struct RepairArguments {
   bool no_orient = false, no_stitch = false;
   bool elements = false;
   bool progress = false;
+  std::string before_after;
   RepairOptions options;
   double separate = 0.0;
 };
@@ -74,6 +77,12 @@ int run_repair(RepairArguments& arguments) {
   check_writable_file(out);
   if (!arguments.report.empty())
     check_writable_file(arguments.report);
+  if (!arguments.before_after.empty()) {
+    if (!ends_with_png(arguments.before_after)) {
+      throw UsageError(arguments.before_after + ": --before-after is written as PNG; name it .png");
+    }
+    check_writable_file(arguments.before_after);
+  }
 
   ReadInfo info;
   RepairResult result;
@@ -94,6 +103,16 @@ int run_repair(RepairArguments& arguments) {
       json.elements = arguments.elements;
       write_text_atomically(arguments.report,
                             repair_report_json(in, out, result.report, &info, json) + "\n");
+    }
+    if (!arguments.before_after.empty()) {
+      const OffscreenQt qt;  // fonts for the legends
+      SnapshotOptions picture;
+      picture.title = "before: " + file_name_of(in);
+      const DefectSnapshot before = draw_defect_snapshot(soup, result.report.before, picture);
+      picture.title = "after: " + file_name_of(out);
+      const DefectSnapshot after = draw_defect_snapshot(result.mesh.soup, result.report.after,
+                                                        picture, &soup, &result.report.before);
+      write_png_atomically(arguments.before_after, side_by_side(before, after).image);
     }
   }
   warn_about_reader(in, info);
@@ -156,6 +175,9 @@ void add_repair_command(CLI::App& app, int& exit_code) {
                    "move each split vertex copy this distance (model units) into its own fan, "
                    "so the repair survives STL readers that weld by position; 0 = off")
       ->check(finite_at_least(0.0));
+  command->add_option("--before-after", arguments->before_after,
+                      "also draw the input and the result side by side into this PNG (as "
+                      "`snapshot` draws them, same framing)");
   command->add_flag("--progress", arguments->progress,
                     "show the stage and a progress bar on stderr even when it is not a terminal "
                     "(on a terminal it shows anyway once the work takes over a second)");

@@ -520,6 +520,41 @@ messages)
     echo "messages: disk-full checks skipped (unshare -rm not permitted here)"
   fi
   ;;
+snapshot_views)
+  # --focus defects zooms in: prisms24's defects span the model, the hole of cube_with_hole does
+  # not, so its green rim gets longer (more green pixels) when zoomed.
+  expect_exit 1 "$mb" snapshot "$models/cube_with_hole.obj" "$work/whole.png" --size 400
+  expect_in "$work/out" "cube_with_hole.obj ->"
+  whole=$(pixels "$work/out" green)
+  expect_exit 1 "$mb" snapshot "$models/cube_with_hole.obj" "$work/zoom.png" --size 400 --focus defects
+  zoom=$(pixels "$work/out" green)
+  [ "$zoom" -gt "$whole" ] 2>/dev/null || fail "--focus defects did not zoom: $whole -> $zoom green"
+  [ "$(pixels "$work/out" red)" = 0 ] || fail "red pixels for cube_with_hole"
+  expect_exit 0 "$mb" snapshot "$models/icosphere.obj" "$work/ico.png" --focus DEFECTS --size 64
+  [ "$(pixels "$work/out" red)" = 0 ] && [ "$(pixels "$work/out" green)" = 0 ] || fail "icosphere"
+  expect_exit 2 "$mb" snapshot "$models/icosphere.obj" "$work/ico.png" --focus edges
+  expect_in "$work/err" "--focus: edges not in {whole,defects}"
+  # The surface is shaded grey: many grey levels, not a wireframe on white.
+  if command -v convert >/dev/null; then
+    levels=$(convert "$work/whole.png" -colorspace gray -format %k info:)
+    [ "$levels" -ge 4 ] 2>/dev/null || fail "only $levels grey levels in the shaded picture"
+  fi
+  # repair --before-after: the input and the result side by side, red only on the left.
+  expect_exit 0 "$mb" repair "$models/prisms24.obj" "$work/p.obj" --before-after "$work/ba.png"
+  is_png "$work/ba.png" || fail "ba.png is not a PNG"
+  [ "$(png_size "$work/ba.png")" = 1602x800 ] || fail "before-after size: $(png_size "$work/ba.png")"
+  if command -v convert >/dev/null; then
+    red_in() {  # red_in FILE GEOMETRY -> count of (220,0,0)-ish pixels in that part
+      convert "$1" -crop "$2" +repage -fuzz 18% -fill black +opaque 'rgb(220,0,0)' \
+        -fill white -opaque 'rgb(220,0,0)' -format '%[fx:round(mean*w*h)]' info:
+    }
+    [ "$(red_in "$work/ba.png" 800x800+0+0)" -gt 100 ] 2>/dev/null || fail "no red on the left"
+    [ "$(red_in "$work/ba.png" 800x800+802+0)" = 0 ] || fail "red on the right (after repair)"
+  fi
+  expect_exit 2 "$mb" repair "$models/prisms24.obj" "$work/q.obj" --before-after "$work/ba.jpg"
+  expect_in "$work/err" "name it .png"
+  [ ! -e "$work/q.obj" ] || fail "repair wrote its output despite a bad --before-after"
+  ;;
 *)
   echo "unknown case $case_name" >&2
   exit 2
