@@ -105,18 +105,6 @@ void ProgressDisplay::stage(Stage stage, double fraction) {
     draw_locked(changed);
 }
 
-void ProgressDisplay::files(std::size_t done, std::size_t total) {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  batch_ = true;
-  const auto percent = [](std::size_t d, std::size_t t) { return t ? d * 100 / t : 100; };
-  // Non-interactive output gets a line per 5 % (and the last file), not one per file.
-  const bool changed = percent(done, total) / 5 != percent(done_, total_) / 5 || done == total;
-  done_ = done;
-  total_ = total;
-  if (enabled_)
-    draw_locked(changed);
-}
-
 ProgressCallback ProgressDisplay::callback() {
   return [this](Stage stage, double fraction) { this->stage(stage, fraction); };
 }
@@ -147,19 +135,9 @@ std::string ProgressDisplay::line_locked() const {
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   std::ostringstream text;
-  text << label_ << "  ";
-  if (batch_) {
-    const double fraction = total_ ? double(done_) / double(total_) : 1.0;
-    text << bar(fraction) << " " << done_ << "/" << total_ << " files "
-         << static_cast<int>(fraction * 100) << "%  " << format_duration(elapsed) << " elapsed";
-    if (done_ > 0 && done_ < total_) {
-      text << ", ETA " << format_duration(elapsed / double(done_) * double(total_ - done_));
-    }
-  } else {
-    const double fraction = overall_locked();
-    text << bar(fraction) << " " << static_cast<int>(fraction * 100) << "%  " << to_string(stage_)
-         << "  " << format_duration(elapsed);
-  }
+  const double fraction = overall_locked();
+  text << label_ << "  " << bar(fraction) << " " << static_cast<int>(fraction * 100) << "%  "
+       << to_string(stage_) << "  " << format_duration(elapsed);
   return text.str();
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Progress on stderr for long work: the stage of one file (read, group, pair, detect, write)
-// with a bar, or files done / total with an ETA for a batch.
+// with a bar. (`batch` shows files done / total / ETA with its own line, cli/batch_command.cpp.)
 //
 // On a terminal one line is redrawn in place (at most 5 times a second, by a background thread,
 // so a long stage still shows its time running) and erased at the end. Elsewhere (a pipe, a
@@ -55,9 +55,6 @@ class ProgressDisplay {
   //! One file: `stage` has reached `fraction` (0 = started, 1 = done). The bar shows the whole
   //! file's estimated fraction from fixed stage weights. Thread-safe.
   void stage(Stage stage, double fraction);
-  //! A batch: `done` of `total` files finished; the line shows the percentage and an ETA from
-  //! the mean time per file so far. Thread-safe.
-  void files(std::size_t done, std::size_t total);
   //! A callback for RepairOptions::progress that forwards to stage().
   ProgressCallback callback();
 
@@ -83,11 +80,8 @@ class ProgressDisplay {
   std::condition_variable wake_;
   bool stopping_ = false;
   bool drawn_ = false;         // something is on the terminal line
-  bool batch_ = false;         // files() mode
   Stage stage_ = Stage::read;  // stage() mode
   double fraction_ = 0;        // of the current stage
-  std::size_t done_ = 0, total_ = 0;
-  std::string last_printed_;  // non-interactive: the last line printed
   std::thread thread_;
 };
 
