@@ -43,6 +43,8 @@ int run_check(const CheckArguments& arguments) {
     std::cout << check_report_json(path, report, &info, json) << "\n";
   } else {
     std::cout << path << "\n" << to_text(report);
+    if (report.has_defects())
+      std::cout << "(`meshbridge explain` tells what these terms mean)\n";
   }
   return report.has_defects() || info.faces_dropped_by_reader > 0 ? kDefectsFound : kOk;
 }

@@ -29,12 +29,12 @@ const std::vector<Entry> kEntries = {
      "need this; MeshBridge's repair always produces it and never deletes a face to get it."},
     {"singular edge",
      "An edge shared by three or more faces, like the spine of a book with three pages.\n"
-     "`check` prints them as [3-7(4)]: the edge between vertices 3 and 7 (vertex numbers\n"
+     "`check` lists them as [3-7 (4 faces)]: the edge between vertices 3 and 7 (vertex numbers\n"
      "count from 0 in file order), with 4 faces on it. Two cubes glued at one edge give one\n"
      "singular edge with 4 faces."},
     {"contender",
      "One face on a singular edge, seen as a candidate to pair with another face across that\n"
-     "edge. The number in brackets after a singular edge, 3-7(4), counts its contenders.\n"
+     "edge. The faces counted after a singular edge, 3-7 (4 faces), are its contenders.\n"
      "Repair pairs contenders two by two (by angle around the edge with --pairing geometric,\n"
      "by face order with --pairing combinatorial); each pair becomes one manifold edge."},
     {"side",

@@ -41,7 +41,7 @@ std::string to_text(const DefectReport& r, std::size_t max_listed) {
       << ", components " << r.num_components << ", Euler characteristic " << r.euler_characteristic
       << ", watertight " << (r.watertight ? "yes" : "no") << "\n";
   list(out, "singular edges", r.singular_edges, max_listed, [&](const SingularEdge& e) {
-    out << e.vertices.v0 << "-" << e.vertices.v1 << "(" << e.contenders << ")";
+    out << e.vertices.v0 << "-" << e.vertices.v1 << " (" << e.contenders << " faces)";
   });
   list(out, "singular vertices on singular edges", r.singular_edge_vertices, max_listed, index);
   list(out, "pinch vertices", r.pinch_vertices, max_listed, index);

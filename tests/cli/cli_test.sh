@@ -430,7 +430,7 @@ explain)
   for term in "singular edge" contender "sides cut" fan "pinch vertex" "set aside" watertight; do
     grep -q "^$term\$" "$work/out" || fail "explain lacks '$term'"
   done
-  expect_in "$work/out" "3-7(4)"
+  expect_in "$work/out" "3-7 (4 faces)"
   expect_exit 0 "$mb" explain Fan
   expect_in "$work/out" "umbrella"
   [ "$(grep -c '^[a-zA-Z]' "$work/out")" = 1 ] || fail "explain fan printed more: $(cat "$work/out")"

@@ -117,6 +117,6 @@ TEST(DetectDefects, degenerate_zero_area_duplicate_and_isolated_elements) {
 TEST(DetectDefects, text_carries_the_counts) {
   const DefectReport r = detect_defects(models::two_cubes_sharing_edge());
   const std::string text = to_text(r);
-  EXPECT_NE(text.find("singular edges: 1"), std::string::npos);
+  EXPECT_NE(text.find("singular edges: 1  [3-7 (4 faces)]"), std::string::npos);
   EXPECT_NE(text.find("watertight no"), std::string::npos);
 }
