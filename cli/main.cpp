@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -20,6 +21,46 @@ namespace {
 std::string command_name(const CLI::App& app) {
   const auto chosen = app.get_subcommands();
   return chosen.empty() ? app.get_name() : app.get_name() + " " + chosen.front()->get_name();
+}
+
+//! `text` broken into lines of at most `width` characters at spaces (CLI11 indents each line
+//! under the option's column), keeping the line breaks already in it.
+std::string wrapped(const std::string& text, std::size_t width) {
+  std::string result, line, word;
+  const auto flush_word = [&] {
+    if (word.empty())
+      return;
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      result += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    word.clear();
+  };
+  for (const char ch : text) {
+    if (ch == ' ') {
+      flush_word();
+    } else if (ch == '\n') {
+      flush_word();
+      result += line + "\n";
+      line.clear();
+    } else {
+      word += ch;
+    }
+  }
+  flush_word();
+  return result + line;
+}
+
+//! Wraps every option's description to fit an 100-column terminal beside the option column.
+void wrap_descriptions(CLI::App& app) {
+  for (CLI::App* command : app.get_subcommands({})) {
+    for (CLI::Option* option : command->get_options())
+      option->description(wrapped(option->get_description(), 62));
+    std::string text = command->get_description();  // re-flowed: its own breaks were guesses
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    command->description(wrapped(text, 62));
+  }
 }
 
 }  // namespace
@@ -44,6 +85,7 @@ int main(int argc, char** argv) {
   add_snapshot_command(app, exit_code);
   add_compare_command(app, exit_code);
   add_explain_command(app, exit_code);
+  wrap_descriptions(app);
 
   if (argc < 2) {
     std::cerr << app.help();
