@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// PLY reader. For now OpenMesh's reader behind the old pre-checks (openmesh_legacy.h).
+
+#include "io/formats.h"
+#include "io/openmesh_legacy.h"
+
+namespace meshbridge::detail {
+
+void read_ply(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes*) {
+  read_with_openmesh(file, "ply", soup, info);
+}
+
+}  // namespace meshbridge::detail
