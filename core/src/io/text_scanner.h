@@ -13,10 +13,15 @@ namespace meshbridge::detail {
 //! Walks [first, last) for the text readers (OBJ, OFF, ASCII PLY and STL).
 //! Blanks are ' ', '\t', '\r', '\v', '\f' and, when enabled, an OBJ line continuation (a
 //! backslash right before the line end). A '\n' is never a blank: readers see line ends.
+//! With `hash_ends_line`, a '#' where a word would start ends the line's content (a comment).
 class TextScanner {
  public:
-  TextScanner(const char* first, const char* last, bool backslash_continues = false)
-      : p_(first), end_(last), continuations_(backslash_continues) {}
+  TextScanner(const char* first, const char* last, bool backslash_continues = false,
+              bool hash_ends_line = false)
+      : p_(first),
+        end_(last),
+        continuations_(backslash_continues),
+        hash_comments_(hash_ends_line) {}
 
   const char* position() const { return p_; }
   bool at_end() const { return p_ == end_; }
@@ -42,7 +47,7 @@ class TextScanner {
   //! After the blanks: at the end of the line (or of the file)?
   bool at_line_end() {
     skip_blanks();
-    return p_ == end_ || *p_ == '\n';
+    return p_ == end_ || *p_ == '\n' || (hash_comments_ && *p_ == '#');
   }
   //! Moves past the next '\n' (or to the end of the file); continued lines are one line.
   void next_line() {
@@ -124,6 +129,7 @@ class TextScanner {
   const char* p_;
   const char* end_;
   bool continuations_;
+  bool hash_comments_;
   std::size_t line_ = 1;
 };
 
