@@ -20,8 +20,12 @@ int check_command(const std::vector<std::string>& args) {
   if (arguments.flag("json")) {
     std::cout << to_json(report) << "\n";
   } else {
-    std::cout << path << "\n" << to_text(report);
+    std::cout << path << "\n"
+              << "  read: " << describe_reading(info) << "\n"
+              << to_text(report);
   }
+  // Every record not kept as a simple polygon is in the soup as a degenerate face, so
+  // has_defects() covers it; dangling edges and lone points are not surface defects (warned).
   return report.has_defects() || info.faces_dropped_by_reader > 0 ? kDefectsFound : kOk;
 }
 

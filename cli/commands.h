@@ -10,8 +10,8 @@
 
 namespace meshbridge::cli {
 
-//! Tells on stderr about face records the file reader dropped (OpenMesh's OBJ reader skips
-//! faces with fewer than 3 distinct vertices without a word).
+//! Tells on stderr, in one line (describe_reading), about every record of the file that is not
+//! kept as one simple polygon: split, set aside, dangling edges, lone points. Silent otherwise.
 void warn_about_reader(const std::string& path, const ReadInfo& info);
 
 int check_command(const std::vector<std::string>& args);

@@ -52,6 +52,12 @@ struct ReadInfo {
   }
 };
 
+//! One line saying what became of the file's records, e.g. "10 face records: 8 kept, 1 split
+//! (pinched), 1 set aside (< 3 distinct corners); 3 dangling edges, 1 lone point (not part of
+//! the surface)". Parts that are 0 are left out; a file read unchanged gives "N face records:
+//! all kept".
+std::string describe_reading(const ReadInfo& info);
+
 //! An 8-bit RGBA colour (alpha 255 when the file gives none).
 struct Rgba {
   std::uint8_t r = 0, g = 0, b = 0, a = 255;

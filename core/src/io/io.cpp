@@ -39,6 +39,28 @@ Format format_of(const std::string& path) {
   return Format::unknown;
 }
 
+// Attributes belong to the input soup: every origin the mesh refers to must have its colour.
+void check_attributes(const std::string& path, const IndexedMesh& mesh,
+                      const MeshAttributes* attributes) {
+  if (attributes == nullptr)
+    return;
+  const auto check = [&](std::size_t colours, std::size_t count, const std::vector<Index>& origin,
+                         const char* what) {
+    if (colours == 0)
+      return;
+    std::size_t needed = origin.empty() ? count : 0;
+    for (Index o : origin)
+      needed = std::max<std::size_t>(needed, std::size_t(o) + 1);
+    if (colours < needed) {
+      throw WriteError(path + ": the attributes hold " + std::to_string(colours) + " " + what +
+                       " colour(s) but the mesh needs " + std::to_string(needed) +
+                       " (attributes of another mesh?)");
+    }
+  };
+  check(attributes->vertex_colors.size(), mesh.soup.num_vertices(), mesh.vertex_origin, "vertex");
+  check(attributes->face_colors.size(), mesh.soup.num_faces(), mesh.face_origin, "face");
+}
+
 }  // namespace
 
 bool is_supported_mesh_file(const std::string& path) {
@@ -96,6 +118,7 @@ void write_mesh(const std::string& path, const IndexedMesh& mesh, const MeshAttr
   const Format format = format_of(path);
   if (format == Format::unknown)
     throw WriteError(path + ": unknown format (expected .obj, .off, .ply or .stl)");
+  check_attributes(path, mesh, attributes);
   detail::write_atomically(path, [&](detail::AtomicOutput& out) {
     switch (format) {
       case Format::obj:
