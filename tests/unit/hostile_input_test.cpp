@@ -460,7 +460,7 @@ TEST_F(HostileFile, ply_negative_element_count) {
       "ply\nformat ascii 1.0\nelement vertex -3\nproperty float x\nproperty float y\n"
       "property float z\nelement face -1\nproperty list uchar int vertex_indices\nend_header\n";
   expect_error<ReadError>("negative.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-                          "PLY vertex 4 of 4294967293");
+                          "PLY element 'vertex' has count '-3', not a non-negative integer");
 }
 
 TEST_F(HostileFile, ply_two_gigabyte_claimed_allocation_in_the_header) {
@@ -492,20 +492,28 @@ TEST_F(HostileFile, ply_binary_list_with_a_huge_count) {
   bytes += body.substr(0, 48);  // the four vertices
   put<std::uint32_t>(bytes, 0xFFFFFFFFu);
   put<std::int32_t>(bytes, 0);
-  expect_error<ReadError>("huge_list_uint.ply", bytes, "Unsupported Index type");
+  expect_error<ReadError>("huge_list_uint.ply", bytes,
+                          "PLY face 0 of 1 claims 4294967295 corners, more than the rest");
   std::string as_int = binary_ply_header("4", "1", "list int int") + body.substr(0, 48);
   put<std::int32_t>(as_int, -1);  // read as 4294967295 corners
   put<std::int32_t>(as_int, 0);
-  expect_error<ReadError>("huge_list_int.ply", as_int, "PLY face 0 of 1 claims 4294967295 corners");
+  expect_error<ReadError>("huge_list_int.ply", as_int,
+                          "PLY face 0 of 1 has a negative corner count (-1)");
 }
 
-TEST_F(HostileFile, ply_faces_with_zero_one_and_two_vertices) {
+TEST_F(HostileFile, ply_faces_with_zero_one_and_two_vertices_are_set_aside) {
   const std::string header =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
       "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
-  expect_error<InvalidSoupError>("short.ply",
-                                 header + "0 0 0\n1 0 0\n0 1 0\n0\n1 0\n2 0 1\n3 0 1 2\n",
-                                 "face 0 has 0 corner(s)");
+  // As in OBJ and OFF: set aside (1 or 2 corners stay as padded triangles, 0 only counted).
+  ReadInfo info;
+  const Soup soup = expect_read(
+      "short.ply", header + "0 0 0\n1 0 0\n0 1 0\n0\n1 0\n2 0 1\n3 0 1 2\n", 3, 3, &info);
+  EXPECT_EQ(soup.corner_vertices, (std::vector<Index>{0, 0, 0, 0, 1, 1, 0, 1, 2}));
+  EXPECT_EQ(info.declared_faces, 4u);
+  EXPECT_EQ(info.faces_set_aside, 3u);
+  EXPECT_EQ(info.faces_without_corners, 1u);
+  EXPECT_EQ(info.faces_kept, 1u);
 }
 
 TEST_F(HostileFile, ply_negative_and_out_of_range_indices) {
@@ -525,7 +533,7 @@ TEST_F(HostileFile, ply_header_without_end_or_with_unknown_format) {
                           "no end_header");
   expect_error<ReadError>("bad_version.ply",
                           "ply\nformat ascii one\nelement vertex 3\nend_header\n0 0 0\n",
-                          "no end_header");
+                          "unsupported PLY version 'one' (expected 1.0)");
   // A property before any element makes OpenMesh use elements_.back() of an empty vector.
   expect_error<ReadError>("property_first.ply",
                           "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\n"
@@ -539,7 +547,7 @@ TEST_F(HostileFile, ply_header_without_end_or_with_unknown_format) {
                           "ply\nformat ascii 1.0\nelement vertex 3\nproperty quaternion x\n"
                           "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
                           "0\n1\n2\n3 0 1 2\n",
-                          "the PLY vertex element has 0 coordinate properties (x, y, z), not 3");
+                          "PLY property 'x' of element 'vertex' has unknown type 'quaternion'");
   expect_error<ReadError>("float_indices.ply",
                           "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
                           "property float y\nproperty float z\nelement face 1\n"
@@ -615,16 +623,22 @@ TEST_F(HostileFile, binary_stl_whose_header_starts_with_solid) {
   expect_read("solid_header.stl", binary_stl(kTetrahedron, 4, "solid but actually binary"), 4, 4);
 }
 
-TEST_F(HostileFile, binary_stl_with_all_triangles_collapsed_to_a_point) {
-  // OpenMesh's STL reader drops a triangle whose corners weld together; ReadInfo counts it.
+TEST_F(HostileFile, binary_stl_with_triangles_collapsed_to_a_point_are_set_aside) {
+  // A facet whose corners weld together stays in the soup (repair sets it aside) and counts in
+  // faces_set_aside: every facet of the file is accounted for.
   const std::vector<std::vector<float>> points(3, std::vector<float>(9, 1.5f));
-  expect_error<ReadError>("points.stl", binary_stl(points, 3), "no polygons");
+  ReadInfo info;
+  expect_read("points.stl", binary_stl(points, 3), 1, 3, &info);
+  EXPECT_EQ(info.declared_faces, 3u);
+  EXPECT_EQ(info.faces_set_aside, 3u);
+  EXPECT_EQ(info.faces_kept, 0u);
   auto triangles = kTetrahedron;
   triangles.push_back(std::vector<float>(9, 0.0f));
-  ReadInfo info;
-  expect_read("one_collapsed.stl", binary_stl(triangles, 5), 4, 4, &info);
+  expect_read("one_collapsed.stl", binary_stl(triangles, 5), 4, 5, &info);
   EXPECT_EQ(info.declared_faces, 5u);
-  EXPECT_EQ(info.faces_dropped_by_reader, 1u);
+  EXPECT_EQ(info.faces_kept, 4u);
+  EXPECT_EQ(info.faces_set_aside, 1u);
+  EXPECT_EQ(info.faces_dropped_by_reader, 0u);
 }
 
 TEST_F(HostileFile, ascii_stl_truncated_and_malformed) {
@@ -658,7 +672,8 @@ TEST_F(HostileFile, unknown_extension_directory_and_missing_file) {
 TEST_F(HostileFile, format_and_extension_disagree) {
   expect_error<ReadError>("off_inside.obj", kOffTetrahedron, "no polygons");
   expect_error<ReadError>("obj_inside.off", kObjTetrahedron, "not an OFF file: it starts with 'v'");
-  expect_error<ReadError>("obj_inside.ply", kObjTetrahedron, "could not parse");
+  expect_error<ReadError>("obj_inside.ply", kObjTetrahedron,
+                          "not a PLY file: it starts with 'v', not 'ply'");
   expect_error<ReadError>("obj_inside.stl", kObjTetrahedron, "neither ASCII STL");
 }
 

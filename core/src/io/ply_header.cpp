@@ -121,9 +121,13 @@ PlyHeader parse_ply_header(std::string_view data, const std::string& path) {
     return true;
   };
   std::string_view line;
-  if (!next_line(line) || words_of(line).size() != 1 ||
-      (words_of(line)[0] != "ply" && words_of(line)[0] != "PLY")) {
-    throw ReadError(where + "not a PLY file (the first line is not 'ply')");
+  const bool has_line = next_line(line);
+  const std::vector<std::string_view> first = words_of(line);
+  if (!has_line || first.size() != 1 || (first[0] != "ply" && first[0] != "PLY")) {
+    std::string start(first.empty() ? std::string_view() : first[0].substr(0, 16));
+    for (char& c : start)
+      c = c >= 32 && c < 127 ? c : '?';
+    throw ReadError(where + "not a PLY file: it starts with '" + start + "', not 'ply'");
   }
   while (true) {
     if (!next_line(line)) {

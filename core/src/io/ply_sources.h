@@ -120,11 +120,15 @@ class AsciiSource {
  public:
   AsciiSource(const char* first, const char* last) : p_(first), end_(last) {}
   std::size_t remaining() const { return static_cast<std::size_t>(end_ - p_); }
-  bool real(PlyScalar, double& value) {
+  //! A value declared `float` is rounded to float, as the binary encoding of the same file
+  //! would store it (so ascii and binary PLY of one mesh read the same).
+  bool real(PlyScalar type, double& value) {
     skip_space();
     const char* e = parse_double(p_, end_, value);
     if (e == nullptr || (e != end_ && !is_space(*e)))
       return false;
+    if (type == PlyScalar::f32)
+      value = static_cast<float>(value);
     p_ = e;
     return true;
   }

@@ -137,14 +137,25 @@ class PlyReader {
   }
 
   void check_elements() {
-    const PlyElement* vertex = nullptr;
+    // The vertex element first: without x, y and z nothing else matters.
+    int coordinates = 0;
+    for (const PlyElement& e : header_.elements) {
+      if (e.name != "vertex")
+        continue;
+      for (const PlyProperty& p : e.properties) {
+        const Role r = role_of(e, p);
+        coordinates += r == Role::x || r == Role::y || r == Role::z;
+      }
+    }
+    if (coordinates != 3) {
+      throw ReadError(where() + "the PLY vertex element has " + std::to_string(coordinates) +
+                      " coordinate properties (x, y, z), not 3");
+    }
     for (const PlyElement& e : header_.elements) {
       if (e.count > 0 && e.properties.empty()) {
         throw ReadError(where() + "PLY element '" + e.name + "' declares " +
                         std::to_string(e.count) + " items without any property");
       }
-      if (e.name == "vertex")
-        vertex = &e;
       if ((e.name != "face" && e.name != "tristrips") || e.count == 0)
         continue;
       bool has_indices = false;
@@ -165,17 +176,6 @@ class PlyReader {
         throw ReadError(where() + "PLY element '" + e.name +
                         "' has no 'vertex_indices' (or 'vertex_index') list");
       }
-    }
-    int coordinates = 0;
-    if (vertex != nullptr) {
-      for (const PlyProperty& p : vertex->properties) {
-        const Role r = role_of(*vertex, p);
-        coordinates += r == Role::x || r == Role::y || r == Role::z;
-      }
-    }
-    if (coordinates != 3) {
-      throw ReadError(where() + "the PLY vertex element has " + std::to_string(coordinates) +
-                      " coordinate properties (x, y, z), not 3");
     }
   }
 

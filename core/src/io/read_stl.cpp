@@ -97,13 +97,15 @@ void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
       const std::size_t line = in.line();
       double x = 0, y = 0, z = 0;
       const bool ok = equals_ignoring_case(in.word(), "vertex") && in.number(x) && in.number(y) &&
-                      in.number(z) && std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
+                      in.number(z) && std::isfinite(float(x)) && std::isfinite(float(y)) &&
+                      std::isfinite(float(z));
       if (!ok) {
         throw ReadError(file.path() + ": ASCII STL triangle " + std::to_string(triangles) +
                         ", corner " + std::to_string(c) + " (line " + std::to_string(line) +
-                        ") is not 'vertex x y z' with three finite numbers");
+                        ") is not 'vertex x y z' with three finite numbers (32-bit floats)");
       }
-      corners.insert(corners.end(), {x, y, z});
+      // STL coordinates are 32-bit floats (binary STL stores nothing else): ascii ones too.
+      corners.insert(corners.end(), {double(float(x)), double(float(y)), double(float(z))});
     }
     ++triangles;
   }
