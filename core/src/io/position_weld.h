@@ -1,65 +1,85 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Welding corners by exact position (STL): one hash table, vertices in order of first appearance.
+// Welding STL corners by exact position: one open-addressing hash table on the 32-bit float
+// bit patterns, vertices in order of first appearance (as OpenMesh's STL reader numbers them).
 
 #include "meshbridge/soup.h"
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <vector>
 
 namespace meshbridge::detail {
 
-//! Hash of a position's exact value (-0 and +0 hash alike, as they compare equal).
-inline std::uint64_t position_hash(const Point& p) {
-  std::uint64_t h = 0;
+//! A corner position as the bit patterns of its three floats, -0 stored as +0 (they are equal).
+using FloatKey = std::array<std::uint32_t, 3>;
+
+inline FloatKey float_key(float x, float y, float z) {
+  FloatKey key;
+  const float xyz[3] = {x, y, z};
   for (int i = 0; i < 3; ++i) {
-    const double x = p[i] + 0.0;  // -0 becomes +0
-    std::uint64_t bits;
-    std::memcpy(&bits, &x, 8);
-    h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
-    h ^= h >> 32;
+    std::memcpy(&key[i], &xyz[i], 4);
+    if (key[i] == 0x80000000u)
+      key[i] = 0;
   }
-  return h;
+  return key;
 }
 
-//! Appends triangles of `corners` corners (3 per triangle) to `soup`, one vertex per distinct
-//! position in order of first appearance. `corner(c)` gives corner c's position (finite).
-template <class CornerPosition>
-void weld_triangle_corners(std::size_t corners, CornerPosition corner, Soup& soup) {
+inline std::uint32_t float_key_hash(const FloatKey& k) {
+  std::uint64_t h = (std::uint64_t(k[0]) << 32 | k[1]) * 0x9E3779B97F4A7C15ull;
+  h ^= (h >> 29) + k[2] * 0xC2B2AE3D27D4EB4Full;
+  h *= 0x165667B19E3779F9ull;
+  return static_cast<std::uint32_t>(h >> 32);
+}
+
+//! Appends the triangles of `corners` corners (3 per triangle, in order) to `soup`: one vertex
+//! per distinct position in order of first appearance. `corner(c)` returns corner c's FloatKey
+//! (and may throw, e.g. for a non-finite coordinate).
+template <class CornerKey>
+void weld_triangle_corners(std::size_t corners, CornerKey corner, Soup& soup) {
   std::size_t capacity = 1024;
   while (capacity < corners / 2)
     capacity *= 2;
   std::vector<Index> slots(capacity, kNoIndex);
   std::size_t mask = capacity - 1;
-  soup.positions.reserve(corners / 4);
+  std::vector<FloatKey> keys;  // one per vertex: compact, so probes stay in cache
+  keys.reserve(corners / 4 + 16);
   soup.corner_vertices.resize(corners);
   soup.face_begin.resize(corners / 3 + 1);
   for (std::size_t f = 0; f <= corners / 3; ++f)
     soup.face_begin[f] = static_cast<Index>(3 * f);
   for (std::size_t c = 0; c < corners; ++c) {
-    const Point p = corner(c);
-    std::size_t s = position_hash(p) & mask;
-    while (slots[s] != kNoIndex && !(soup.positions[slots[s]] == p))
+    const FloatKey key = corner(c);
+    std::size_t s = float_key_hash(key) & mask;
+    while (slots[s] != kNoIndex && keys[slots[s]] != key)
       s = (s + 1) & mask;
-    if (slots[s] == kNoIndex) {
-      slots[s] = static_cast<Index>(soup.positions.size());
-      soup.positions.push_back(p);
-      if (2 * soup.positions.size() > capacity) {  // keep the load at most 1/2
-        capacity *= 2;
-        mask = capacity - 1;
-        slots.assign(capacity, kNoIndex);
-        for (std::size_t v = 0; v < soup.positions.size(); ++v) {
-          std::size_t t = position_hash(soup.positions[v]) & mask;
-          while (slots[t] != kNoIndex)
-            t = (t + 1) & mask;
-          slots[t] = static_cast<Index>(v);
-        }
-        soup.corner_vertices[c] = static_cast<Index>(soup.positions.size() - 1);
-        continue;
+    if (slots[s] != kNoIndex) {
+      soup.corner_vertices[c] = slots[s];
+      continue;
+    }
+    const Index v = static_cast<Index>(keys.size());
+    keys.push_back(key);
+    slots[s] = v;
+    soup.corner_vertices[c] = v;
+    if (2 * keys.size() > capacity) {  // keep the load at most 1/2
+      capacity *= 2;
+      mask = capacity - 1;
+      slots.assign(capacity, kNoIndex);
+      for (std::size_t u = 0; u < keys.size(); ++u) {
+        std::size_t t = float_key_hash(keys[u]) & mask;
+        while (slots[t] != kNoIndex)
+          t = (t + 1) & mask;
+        slots[t] = static_cast<Index>(u);
       }
     }
-    soup.corner_vertices[c] = slots[s];
+  }
+  std::vector<Index>().swap(slots);
+  soup.positions.resize(keys.size());
+  for (std::size_t v = 0; v < keys.size(); ++v) {
+    float xyz[3];
+    std::memcpy(xyz, keys[v].data(), 12);
+    soup.positions[v] = Point(xyz[0], xyz[1], xyz[2]);
   }
 }
 

@@ -45,27 +45,22 @@ void read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup, Re
   const auto* bytes = reinterpret_cast<const unsigned char*>(file.data()) + 84;
   info.declared_faces = triangles;
   info.declared_vertices = 3 * std::size_t(triangles);
-  for (std::uint32_t t = 0; t < triangles; ++t) {
-    const unsigned char* record = bytes + 50 * std::size_t(t) + 12;  // after the normal
-    for (int c = 0; c < 9; ++c) {
-      const float x = little_endian_float(record + 4 * c);
-      if (!std::isfinite(x)) {
-        throw InvalidSoupError(file.path() + ": binary STL triangle " + std::to_string(t) +
-                               ", corner " + std::to_string(c / 3) +
-                               " has a non-finite coordinate");
-      }
+  const auto corner = [&file, bytes](std::size_t c) {
+    const unsigned char* p = bytes + 50 * (c / 3) + 12 + 12 * (c % 3);  // after the normal
+    const float x = little_endian_float(p), y = little_endian_float(p + 4),
+                z = little_endian_float(p + 8);
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
+      throw InvalidSoupError(file.path() + ": binary STL triangle " + std::to_string(c / 3) +
+                             ", corner " + std::to_string(c % 3) + " has a non-finite coordinate");
     }
-  }
-  const auto corner = [bytes](std::size_t c) {
-    const unsigned char* p = bytes + 50 * (c / 3) + 12 + 12 * (c % 3);
-    return Point(little_endian_float(p), little_endian_float(p + 4), little_endian_float(p + 8));
+    return float_key(x, y, z);
   };
   weld_triangle_corners(3 * std::size_t(triangles), corner, soup);
 }
 
 void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
   TextScanner in(file.data(), file.end());
-  std::vector<double> corners;
+  std::vector<float> corners;
   std::size_t triangles = 0;
   const auto skip_space = [&] {
     while (!in.at_end()) {
@@ -105,14 +100,14 @@ void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
                         ") is not 'vertex x y z' with three finite numbers (32-bit floats)");
       }
       // STL coordinates are 32-bit floats (binary STL stores nothing else): ascii ones too.
-      corners.insert(corners.end(), {double(float(x)), double(float(y)), double(float(z))});
+      corners.insert(corners.end(), {float(x), float(y), float(z)});
     }
     ++triangles;
   }
   info.declared_faces = triangles;
   info.declared_vertices = 3 * triangles;
   const auto corner = [&corners](std::size_t c) {
-    return Point(corners[3 * c], corners[3 * c + 1], corners[3 * c + 2]);
+    return float_key(corners[3 * c], corners[3 * c + 1], corners[3 * c + 2]);
   };
   weld_triangle_corners(3 * triangles, corner, soup);
 }
