@@ -22,19 +22,7 @@ bool ends_with_stl(std::string path) {
 }
 
 void write_text_atomically(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out.flush()) {
-      std::remove(temporary.c_str());
-      throw WriteError(path + ": cannot write the report");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw WriteError(path + ": cannot move the report into place");
-  }
+  write_bytes_atomically(path, text);  // unique temporary beside `path`, renamed on success
 }
 
 }  // namespace

@@ -37,21 +37,13 @@ bool ends_with_png(std::string path) {
 //! so on any error the previous file at `path` is untouched and nothing half-written is left.
 //! \throw WriteError naming the path and the reason
 void write_png_atomically(const std::string& path, const QImage& image) {
-  const auto slash = path.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
-  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  const std::string temporary = dir + "." + name + ".tmp" + std::to_string(::getpid()) + ".png";
-  QImageWriter writer(QFile::decodeName(temporary.c_str()), QByteArrayLiteral("png"));
-  if (!writer.write(image)) {
-    const std::string reason = writer.errorString().toStdString();
-    std::remove(temporary.c_str());
-    throw WriteError(path + ": cannot write the PNG (" + reason + ")");
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw WriteError(path + ": cannot move the written file into place (" + reason + ")");
-  }
+  write_file_atomically(path, [&](const std::string& temporary) {
+    QImageWriter writer(QFile::decodeName(temporary.c_str()), QByteArrayLiteral("png"));
+    if (!writer.write(image)) {
+      throw WriteError(path + ": cannot write the PNG (" + writer.errorString().toStdString() +
+                       ")");
+    }
+  });
 }
 
 //! While alive, Qt's debug output and warnings are dropped (offscreen they are chatter such as

@@ -10,7 +10,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace meshbridge {
@@ -94,6 +96,17 @@ Soup read_soup(const std::string& path, ReadInfo* info = nullptr,
 
 //! True if `path` has an extension read_soup/write_mesh handle (.obj .off .ply .stl, any case).
 bool is_supported_mesh_file(const std::string& path);
+
+//! Writes a file the way write_mesh does (MeshBridge's one atomic-write helper): `fill` writes
+//! the whole content to the temporary path it is given (a unique name beside `path`), which is
+//! then renamed over `path`. If `fill` throws, the temporary file is removed, `path` is
+//! untouched and the exception is passed on. For callers that write through a library taking a
+//! file name (a PNG through Qt, a report).
+//! \throw WriteError naming `path` (no directory, no permission, rename failed)
+void write_file_atomically(const std::string& path,
+                           const std::function<void(const std::string& temporary_path)>& fill);
+//! write_file_atomically for content already in memory.
+void write_bytes_atomically(const std::string& path, std::string_view bytes);
 
 //! How write_mesh writes where a format has a choice.
 struct WriteOptions {

@@ -113,6 +113,15 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
   return soup;
 }
 
+void write_file_atomically(const std::string& path,
+                           const std::function<void(const std::string& temporary_path)>& fill) {
+  detail::write_atomically(path, [&](detail::AtomicOutput& out) { fill(out.temporary_path()); });
+}
+
+void write_bytes_atomically(const std::string& path, std::string_view bytes) {
+  detail::write_atomically(path, [&](detail::AtomicOutput& out) { out.write(bytes); });
+}
+
 void write_mesh(const std::string& path, const IndexedMesh& mesh, const MeshAttributes* attributes,
                 const WriteOptions& options) {
   const Format format = format_of(path);
