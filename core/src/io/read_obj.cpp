@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -197,12 +198,33 @@ class ObjReader {
   std::size_t texcoords_or_normals_ = 0;
 };
 
+// Counts 'v' and 'f' records (and the blanks of the 'f' lines, a bound on their corners) with
+// memchr, so the soup is allocated once: a few percent of the parse instead of reallocations.
+void reserve_for(const MappedFile& file, Soup& soup) {
+  std::size_t vertices = 0, faces = 0, corners = 0;
+  const char* p = file.data();
+  const char* end = file.end();
+  while (p < end) {
+    const char* line_end = static_cast<const char*>(std::memchr(p, '\n', end - p));
+    if (line_end == nullptr)
+      line_end = end;
+    if (line_end - p >= 2 && (p[1] == ' ' || p[1] == '\t')) {
+      if (p[0] == 'v') {
+        ++vertices;
+      } else if (p[0] == 'f') {
+        ++faces;
+        corners += static_cast<std::size_t>(std::count(p + 1, line_end, ' '));
+      }
+    }
+    p = line_end + 1;
+  }
+  soup.reserve(vertices, faces, corners);
+}
+
 }  // namespace
 
 void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
-  // A face takes at least 8 bytes ("f 1 2 3\n"), a vertex 8 ("v 0 0 0\n"): reserve for the
-  // typical mesh of twice as many faces as vertices without trusting anything.
-  soup.reserve(file.size() / 96, file.size() / 48, file.size() / 16);
+  reserve_for(file, soup);
   ObjReader(file, soup, info, attributes).read();
 }
 
