@@ -216,6 +216,8 @@ void reserve_for(const MappedFile& file, Soup& soup) {
         corners += static_cast<std::size_t>(std::count(p + 1, line_end, ' '));
       }
     }
+    if (line_end == end)
+      break;
     p = line_end + 1;
   }
   soup.reserve(vertices, faces, corners);
