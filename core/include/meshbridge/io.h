@@ -111,8 +111,10 @@ void write_bytes_atomically(const std::string& path, std::string_view bytes);
 //! How write_mesh writes where a format has a choice.
 struct WriteOptions {
   bool binary = true;  //!< PLY and STL: binary (default) or ASCII; OBJ and OFF are always text
-  //! PLY: positions as `double` (default: only if the attributes say the input had doubles;
-  //! `float` otherwise). Text formats always write the shortest exact text of each double.
+  //! PLY: positions as `double` always (default false: `double` only if the attributes say
+  //! the input had doubles or some coordinate is not exactly a float, so a write never rounds a
+  //! position; `float` otherwise). Text formats always write the shortest exact text of each
+  //! double; STL holds 32-bit floats only.
   bool double_precision = false;
 };
 
