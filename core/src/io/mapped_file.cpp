@@ -44,6 +44,15 @@ MappedFile::MappedFile(const std::string& path) : path_(path) {
   data_ = static_cast<const char*>(map);
 }
 
+void MappedFile::release_before(const char* upto) const {
+  static const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+  if (upto <= data_ || upto > data_ + size_)
+    return;
+  const std::size_t bytes = static_cast<std::size_t>(upto - data_) / page * page;
+  if (bytes > 0)
+    ::madvise(const_cast<char*>(data_), bytes, MADV_DONTNEED);
+}
+
 MappedFile::~MappedFile() {
   if (data_ != nullptr)
     ::munmap(const_cast<char*>(data_), size_);

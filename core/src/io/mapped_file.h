@@ -24,6 +24,11 @@ class MappedFile {
   std::string_view view() const { return {data_, size_}; }
   const std::string& path() const { return path_; }
 
+  //! Hands the pages wholly before `upto` back to the kernel (they stay readable: touching them
+  //! again reads them back from the page cache). A reader that streams calls this every few
+  //! megabytes, so the map adds only a window to the peak memory, not the whole file.
+  void release_before(const char* upto) const;
+
  private:
   std::string path_;
   const char* data_ = nullptr;

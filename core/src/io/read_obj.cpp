@@ -29,6 +29,10 @@ class ObjReader {
 
   void read() {
     while (!in_.at_end()) {
+      if (in_.position() - released_ > kReleaseEvery) {
+        released_ = in_.position();
+        file_.release_before(released_);
+      }
       const std::string_view keyword = in_.word();
       if (keyword == "v")
         vertex();
@@ -196,6 +200,8 @@ class ObjReader {
   TextScanner in_;
   std::vector<Index> corners_;
   std::size_t texcoords_or_normals_ = 0;
+  static constexpr std::ptrdiff_t kReleaseEvery = 8 << 20;  // bytes of the map kept behind
+  const char* released_ = file_.data();
 };
 
 // Counts 'v' and 'f' records (and the blanks of the 'f' lines, a bound on their corners) with
@@ -227,6 +233,7 @@ void reserve_for(const MappedFile& file, Soup& soup) {
 
 void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
   reserve_for(file, soup);
+  file.release_before(file.end());  // the counting pass touched every page
   ObjReader(file, soup, info, attributes).read();
 }
 

@@ -69,6 +69,13 @@ class OffReader {
   [[noreturn]] void fail(const std::string& what) const {
     throw ReadError(file_.path() + ": " + what);
   }
+  // Keeps at most a window of the map resident behind the cursor (see release_before).
+  void release_behind() {
+    if (in_.position() - released_ > (8 << 20)) {
+      released_ = in_.position();
+      file_.release_before(released_);
+    }
+  }
   std::string at_line() const { return " (line " + std::to_string(in_.line()) + ")"; }
 
   OffHeader read_header() {
@@ -160,6 +167,7 @@ class OffReader {
       attributes_->vertex_colors.reserve(static_cast<std::size_t>(nv));
     std::vector<double> rest;
     for (std::int64_t v = 0; v < nv; ++v) {
+      release_behind();
       double xyz[3];
       for (double& x : xyz) {
         in_.skip_space_and_comments();
@@ -187,6 +195,7 @@ class OffReader {
     }
     std::vector<Index> corners;
     for (std::int64_t f = 0; f < nf; ++f) {
+      release_behind();
       in_.skip_space_and_comments();
       std::int64_t n = 0;
       if (in_.at_end() || !in_.integer(n)) {
@@ -327,6 +336,7 @@ class OffReader {
   ReadInfo& info_;
   MeshAttributes* attributes_;
   TextScanner in_;
+  const char* released_ = file_.data();
 };
 
 }  // namespace
