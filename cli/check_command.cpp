@@ -42,10 +42,14 @@ int run_check(const CheckArguments& arguments) {
     json.elements = arguments.elements;
     std::cout << check_report_json(path, report, &info, json) << "\n";
   } else {
-    std::cout << path << "\n" << to_text(report);
+    std::cout << path << "\n"
+              << "  read: " << describe_reading(info) << "\n"
+              << to_text(report);
     if (report.has_defects())
       std::cout << "(`meshbridge explain` tells what these terms mean)\n";
   }
+  // Every record not kept as a simple polygon is in the soup as a degenerate face, so
+  // has_defects() covers it; dangling edges and lone points are not surface defects (warned).
   return report.has_defects() || info.faces_dropped_by_reader > 0 ? kDefectsFound : kOk;
 }
 

@@ -26,8 +26,8 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-//! Tells on stderr about face records the file reader dropped (OpenMesh's OBJ reader skips
-//! faces with fewer than 3 distinct vertices without a word).
+//! Tells on stderr, in one line (describe_reading), about every record of the file that is not
+//! kept as one simple polygon: split, set aside, dangling edges, lone points. Silent otherwise.
 void warn_about_reader(const std::string& path, const ReadInfo& info);
 
 void add_check_command(CLI::App& app, int& exit_code);

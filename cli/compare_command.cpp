@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -23,12 +24,18 @@ struct CompareArguments {
   bool json = false;
 };
 
-BuildFigures bridged_figures(const BridgedMesh& bridged, const Soup& soup) {
+// Faces count file records: a record is kept if some polygon of the mesh comes from it (a split
+// one gives several), lost otherwise (set aside, or without any corner in the file).
+BuildFigures bridged_figures(const BridgedMesh& bridged, const Soup& soup, const ReadInfo& info) {
   const DefectReport report = detect_defects(bridged.indexed.soup);
+  std::vector<char> kept(soup.num_faces(), 0);
+  for (Index origin : bridged.indexed.face_origin)
+    kept[origin] = 1;
+  const auto kept_records = static_cast<std::size_t>(std::count(kept.begin(), kept.end(), 1));
   BuildFigures figures;
   figures.vertices = bridged.mesh.n_vertices();
-  figures.faces_kept = bridged.mesh.n_faces();
-  figures.faces_lost = soup.num_faces() - bridged.mesh.n_faces();
+  figures.faces_kept = kept_records;
+  figures.faces_lost = soup.num_faces() - kept_records + info.faces_without_corners;
   figures.boundary_edges = report.boundary_edges.size();
   figures.components = report.num_components;
   return figures;
@@ -53,13 +60,14 @@ int run_compare(const CompareArguments& arguments) {
   warn_about_reader(path, info);
   const StockBuild stock = build_stock(soup);
   const BridgedMesh bridged = build_bridged_mesh(soup);
-  const BuildFigures b = bridged_figures(bridged, soup);
-  const BuildFigures s = stock_figures(stock.report);
+  const BuildFigures b = bridged_figures(bridged, soup, info);
+  BuildFigures s = stock_figures(stock.report);
+  s.faces_lost += info.faces_without_corners;
   if (arguments.json) {
-    std::cout << compare_report_json(path, soup.num_vertices(), soup.num_faces(), s, b) << "\n";
+    std::cout << compare_report_json(path, soup.num_vertices(), info.declared_faces, s, b) << "\n";
     return kOk;
   }
-  std::cout << path << ": " << soup.num_vertices() << " vertices, " << soup.num_faces()
+  std::cout << path << ": " << soup.num_vertices() << " vertices, " << info.declared_faces
             << " faces in the file\n";
   std::cout << std::left << std::setw(18) << "" << std::right << std::setw(16) << "OpenMesh stock"
             << std::setw(16) << "MeshBridge"

@@ -2,6 +2,7 @@
 #include "png_output.h"
 
 #include "meshbridge/errors.h"
+#include "meshbridge/io.h"
 
 #include <QByteArray>
 #include <QFile>
@@ -35,24 +36,16 @@ bool ends_with_png(std::string path) {
 }
 
 void write_png_atomically(const std::string& path, const QImage& image) {
-  const auto slash = path.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
-  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  const std::string temporary = dir + "." + name + ".tmp" + std::to_string(::getpid()) + ".png";
-  QImageWriter writer(QFile::decodeName(temporary.c_str()), QByteArrayLiteral("png"));
-  errno = 0;
-  if (!writer.write(image)) {
-    // Qt says "Unknown error" for a full disk; the OS reason, when there is one, says more.
-    const std::string reason =
-        errno != 0 ? std::strerror(errno) : writer.errorString().toStdString();
-    std::remove(temporary.c_str());
-    throw WriteError(path + ": cannot write the PNG (" + reason + ")");
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw WriteError(path + ": cannot move the written file into place (" + reason + ")");
-  }
+  write_file_atomically(path, [&](const std::string& temporary) {
+    QImageWriter writer(QFile::decodeName(temporary.c_str()), QByteArrayLiteral("png"));
+    errno = 0;
+    if (!writer.write(image)) {
+      // Qt says "Unknown error" for a full disk; the OS reason, when there is one, says more.
+      const std::string reason =
+          errno != 0 ? std::strerror(errno) : writer.errorString().toStdString();
+      throw WriteError(path + ": cannot write the PNG (" + reason + ")");
+    }
+  });
 }
 
 OffscreenQt::OffscreenQt() : previous_(qInstallMessageHandler(&filter_qt_message)) {

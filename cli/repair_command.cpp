@@ -32,22 +32,7 @@ bool ends_with_stl(std::string path) {
 }
 
 void write_text_atomically(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    errno = 0;
-    out << text;
-    if (!out.flush()) {
-      const std::string reason = errno ? std::strerror(errno) : "write failed";
-      std::remove(temporary.c_str());
-      throw WriteError(path + ": cannot write the report (" + reason + ")");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw WriteError(path + ": cannot move the report into place (" + reason + ")");
-  }
+  write_bytes_atomically(path, text);  // unique temporary beside `path`, renamed on success
 }
 
 struct RepairArguments {

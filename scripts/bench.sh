@@ -11,7 +11,12 @@
 #     split, MeshBridge scaling 1M -> 10M, the paper's experiments, the goals) and writes
 #     bench/results.md, which it also prints. About 3-5 minutes on 2 cores.
 #
-# Usage: scripts/bench.sh [--quick] [--out FILE] [other meshbridge-bench suite options]
+#  4. with --io (or --io-only: instead of 2 and 3), the whole-process benchmark
+#     scripts/bench_io.sh (every tool reading/writing the same files as its own process:
+#     OpenMesh, meshbridge check/repair, meshlabserver, the mmap + from_chars floor), appended to
+#     the report. About 30 minutes on 2 cores (the 5M files dominate); --quick: 1M, PLY and STL.
+#
+# Usage: scripts/bench.sh [--quick] [--io | --io-only] [--out FILE] [other suite options]
 # Environment: BUILD_DIR (default build/benchmark), MESHLAB_SDK_DIR (folder holding vcglib/).
 set -euo pipefail
 
@@ -21,7 +26,7 @@ build_dir="${BUILD_DIR:-$root/build/benchmark}"
 log() { echo "bench: $*" >&2; }
 
 # --- 1. dependencies -------------------------------------------------------------------------
-packages=(build-essential cmake pkg-config libopenmesh-dev libeigen3-dev libcgal-dev)
+packages=(build-essential cmake pkg-config libopenmesh-dev libeigen3-dev libcgal-dev time)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -56,12 +61,27 @@ if [ ! -f "$sdk_dir/vcglib/vcg/complex/complex.h" ]; then
   log "no vcglib in '$sdk_dir': the vcglib rows will be missing"
 fi
 
+io=0
+for a in "$@"; do
+  case "$a" in
+    --io) io=1 ;;
+    --io-only) io=2 ;;
+  esac
+done
+
 # --- 2. build --------------------------------------------------------------------------------
 log "building meshbridge-bench in $build_dir"
+launcher=()
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+fi
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DMESHBRIDGE_BUILD_BENCH=ON \
-  -DMESHBRIDGE_BUILD_TESTS=OFF -DMESHBRIDGE_BUILD_CLI=OFF -DMESHLAB_SDK_DIR="$sdk_dir" \
+  -DMESHBRIDGE_BUILD_TESTS=OFF -DMESHBRIDGE_BUILD_CLI="$([ "$io" -gt 0 ] && echo ON || echo OFF)" \
+  -DMESHLAB_SDK_DIR="$sdk_dir" "${launcher[@]}" \
   | grep "meshbridge-bench" >&2 || true
-cmake --build "$build_dir" --target meshbridge-bench --parallel "$(nproc)" >/dev/null
+targets=(meshbridge-bench)
+[ "$io" -gt 0 ] && targets+=(meshbridge meshbridge-io-bench)
+cmake --build "$build_dir" --target "${targets[@]}" --parallel "$(nproc)" >/dev/null
 
 # --- 3. run ----------------------------------------------------------------------------------
 out="$root/bench/results.md"
@@ -69,9 +89,23 @@ args=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --out) out="$2"; shift 2 ;;
+    --io | --io-only) shift ;;
     *) args+=("$1"); shift ;;
   esac
 done
 label="commit $(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown)"
 log "running the suite (progress below, the report on stdout and in $out)"
-"$build_dir/bench/meshbridge-bench" suite --out "$out" --label "$label" "${args[@]}"
+quick=""
+for a in "${args[@]}"; do
+  [ "$a" = --quick ] && quick=--quick
+done
+if [ "$io" -lt 2 ]; then
+  "$build_dir/bench/meshbridge-bench" suite --out "$out" --label "$label" "${args[@]}"
+fi
+if [ "$io" -gt 0 ]; then
+  log "running the whole-process benchmark (scripts/bench_io.sh)"
+  io_out="$build_dir/results_io.md"
+  bash "$root/scripts/bench_io.sh" "$build_dir" "$io_out" $quick >/dev/null
+  { echo; cat "$io_out"; } >>"$out"
+  cat "$io_out"
+fi

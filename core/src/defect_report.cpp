@@ -8,7 +8,7 @@ namespace meshbridge {
 bool DefectReport::has_defects() const {
   return !singular_edges.empty() || num_singular_vertices() > 0 || !boundary_edges.empty() ||
          !isolated_vertices.empty() || !degenerate_faces.empty() || !excluded_faces.empty() ||
-         !zero_area_faces.empty() || !duplicate_faces.empty() || !inconsistent_edges.empty() ||
+         !duplicate_faces.empty() || !inconsistent_edges.empty() ||
          num_nonorientable_components > 0;
 }
 

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: bytes -> a file -> read_soup, the command-line tool's loading path through
-// OpenMesh's readers. The first byte chooses the extension (obj, off, ply, stl; bit 2: upper
-// case); the rest is the file. read_soup may only throw ReadError or InvalidSoupError; a soup it
-// returns must be valid and repair with every invariant holding, and the repaired mesh must be
-// written and read back with no singular element. Anything else aborts.
+// MeshBridge's own readers (core/src/io/). The first byte chooses the reader by extension (bits
+// 0-1: obj, off, ply, stl; bit 2: upper case) and the writer of the round trip (bits 3-4); the
+// rest is the file. read_soup may only throw ReadError or InvalidSoupError; the accounting must
+// add up (every record kept, split or set aside); a soup it returns must be valid and repair
+// with every invariant holding, and the repaired mesh must be written (with the colours read)
+// and read back unchanged with no singular element. Anything else aborts.
 #include "fuzz_invariants.h"
 
 #include "meshbridge/errors.h"
@@ -37,18 +39,33 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   static const char* const kExtensions[] = {"obj", "off", "ply", "stl", "OBJ", "Off", "PLY", "STL"};
   static const std::string kBase = scratch_base();
-  const std::string path = kBase + "." + kExtensions[data[0] % 8];
+  // MESHBRIDGE_FUZZ_READER=obj|off|ply|stl pins the reader (a campaign per reader).
+  static const char* const kPinned = std::getenv("MESHBRIDGE_FUZZ_READER");
+  const std::string path =
+      kBase + "." + (kPinned != nullptr && *kPinned != '\0' ? kPinned : kExtensions[data[0] % 8]);
   {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
   }
   Soup soup;
+  MeshAttributes attributes;
   bool read = false;
   try {
     ReadInfo info;
-    soup = read_soup(path, &info);
+    soup = read_soup(path, &info, &attributes);
     read = true;
     fuzz::check(info.faces_dropped_by_reader <= info.declared_faces, "dropped > declared");
+    fuzz::check(info.faces_kept + info.faces_split + info.faces_set_aside ==
+                    info.declared_faces - info.faces_dropped_by_reader,
+                "kept + split + set aside != declared faces");
+    fuzz::check(soup.num_faces() + info.faces_without_corners + info.faces_dropped_by_reader ==
+                    info.declared_faces,
+                "the soup's faces are not the file's records");
+    fuzz::check(
+        attributes.vertex_colors.empty() || attributes.vertex_colors.size() == soup.num_vertices(),
+        "vertex colours do not match the vertices");
+    fuzz::check(attributes.face_colors.empty() || attributes.face_colors.size() == soup.num_faces(),
+                "face colours do not match the faces");
   } catch (const ReadError&) {
   } catch (const InvalidSoupError&) {
   }
@@ -66,10 +83,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   if (result.mesh.soup.num_faces() == 0)
     return 0;  // every polygon was set aside: nothing to write
-  // Through a file and back: OpenMesh's writer and reader keep the repair.
-  const std::string out = kBase + "_out.ply";
+  // Through a file and back, in the format bits 3-4 choose: the writer and reader keep the
+  // repair (STL fans polygons into triangles and welds corners by position, so only its
+  // triangle count is compared).
+  static const char* const kOutputs[] = {"_out.obj", "_out.off", "_out.ply", "_out.stl"};
+  const int output = (data[0] >> 3) % 4;
+  const std::string out = kBase + kOutputs[output];
   try {
-    write_mesh(out, result.mesh);
+    write_mesh(out, result.mesh, &attributes);
   } catch (const WriteError& error) {
     std::fprintf(stderr, "%s\n", error.what());
     fuzz::fail("write_mesh failed on a repaired mesh");
@@ -82,8 +103,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::fail("a written mesh does not read back");
   }
   std::remove(out.c_str());
+  if (output == 3) {
+    std::size_t triangles = 0;
+    for (std::size_t f = 0; f < result.mesh.soup.num_faces(); ++f)
+      triangles += result.mesh.soup.arity(f) - 2;
+    fuzz::check(back.num_faces() == triangles, "triangles lost writing STL");
+    return 0;
+  }
   fuzz::check(back.num_faces() == result.mesh.soup.num_faces(), "faces lost writing");
   fuzz::check(back.corner_vertices == result.mesh.soup.corner_vertices, "corners changed writing");
+  for (std::size_t v = 0; v < back.num_vertices() && v < result.mesh.soup.num_vertices(); ++v) {
+    const Point& a = back.positions[v];
+    const Point& b = result.mesh.soup.positions[v];
+    for (int k = 0; k < 3; ++k) {
+      // Text keeps every double exactly; PLY keeps at least float precision.
+      fuzz::check(output < 2 ? a[k] == b[k] : static_cast<float>(a[k]) == static_cast<float>(b[k]),
+                  "positions changed writing");
+    }
+  }
   const DefectReport after = detect_defects(back);
   fuzz::check(after.singular_edges.empty() && after.num_singular_vertices() == 0,
               "written mesh reads back non-manifold");

@@ -285,39 +285,44 @@ TEST_F(HostileFile, obj_index_out_of_range) {
 
 TEST_F(HostileFile, obj_index_zero_and_relative_index_before_the_first_vertex) {
   expect_error<ReadError>("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n",
-                          "face 0 refers to vertex index -1");
+                          "line 4: face corner '0': OBJ indices start at 1");
   expect_error<ReadError>("relative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -7\n",
-                          "face 0 refers to vertex index -4");
+                          "line 4: face corner '-7' refers to vertex -3, before the first vertex");
 }
 
 TEST_F(HostileFile, obj_index_too_large_for_any_integer) {
-  // OpenMesh's OBJ reader drops a face whose index it cannot parse; with no face left, that is
-  // an error (with others left, ReadInfo counts it as dropped).
+  // An index no integer holds is named; one that fits is out of range for this soup.
   expect_error<ReadError>("huge_index.obj",
                           "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999999\n",
-                          "no polygons");
-  expect_error<ReadError>("int_max.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2147483648\n",
-                          "no polygons");
+                          "line 4: face corner '99999999999999999999999' is not an index");
+  expect_error<InvalidSoupError>("int_max.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2147483648\n",
+                                 "vertex index 2147483647 is out of range");
 }
 
 TEST_F(HostileFile, obj_nan_coordinate) {
-  expect_error<ReadError>("nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n",
-                          "declares 3 vertices but OpenMesh's reader read 2");
+  expect_error<InvalidSoupError>("nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n",
+                                 "vertex 1 has a non-finite coordinate");
 }
 
 TEST_F(HostileFile, obj_infinite_and_overflowing_coordinates) {
-  expect_error<ReadError>("inf.obj", "v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n",
-                          "declares 3 vertices but OpenMesh's reader read 2");
+  expect_error<InvalidSoupError>("inf.obj", "v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n",
+                                 "vertex 1 has a non-finite coordinate");
   expect_error<ReadError>("overflow.obj", "v 0 0 0\nv 1 1e999 0\nv 0 1 0\nf 1 2 3\n",
-                          "declares 3 vertices but OpenMesh's reader read 2");
+                          "line 2: vertex 2: '1e999' is not a number a double can hold");
 }
 
-TEST_F(HostileFile, obj_faces_with_one_and_two_vertices_are_counted_as_dropped) {
+TEST_F(HostileFile, obj_faces_with_zero_one_and_two_vertices_are_set_aside) {
+  // "f 1" and "f 1 2" stay in the soup as triangles repeating their last corner (set aside by
+  // repair, listed by check); "f" alone has nothing to keep and is only counted.
   ReadInfo info;
-  expect_read("short_faces.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1\nf 1 2\nf\nf 1 2 3\n", 3, 1,
-              &info);
+  const Soup soup = expect_read("short_faces.obj",
+                                "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1\nf 1 2\nf\nf 1 2 3\n", 3, 3, &info);
+  EXPECT_EQ(soup.corner_vertices, (std::vector<Index>{0, 0, 0, 0, 1, 1, 0, 1, 2}));
   EXPECT_EQ(info.declared_faces, 4u);
-  EXPECT_EQ(info.faces_dropped_by_reader, 3u);
+  EXPECT_EQ(info.faces_set_aside, 3u);
+  EXPECT_EQ(info.faces_without_corners, 1u);
+  EXPECT_EQ(info.faces_kept, 1u);
+  EXPECT_EQ(info.faces_dropped_by_reader, 0u);
 }
 
 TEST_F(HostileFile, obj_with_non_utf8_bytes) {
@@ -330,7 +335,7 @@ TEST_F(HostileFile, obj_with_non_utf8_bytes) {
 TEST_F(HostileFile, obj_with_nul_bytes_and_binary_garbage) {
   std::string bytes = kObjTetrahedron;
   bytes.insert(10, std::string("\0\0\0", 3));
-  expect_error<ReadError>("nul.obj", bytes, "declares 4 vertices but OpenMesh's reader read 3");
+  expect_error<ReadError>("nul.obj", bytes, "line 2: vertex 2: '???1' is not a number");
   std::string garbage;
   for (int i = 0; i < 4096; ++i)
     garbage.push_back(static_cast<char>((i * 7919) % 256));
@@ -342,10 +347,13 @@ TEST_F(HostileFile, obj_with_a_very_long_line) {
   expect_read("long_line.obj", bytes, 4, 4);
 }
 
-TEST_F(HostileFile, obj_polygon_with_a_repeated_vertex_is_read_and_collapsed) {
-  // OpenMesh's OBJ reader drops the repeated corner itself: the soup holds the triangle.
-  const Soup soup = expect_read("repeat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2 3\n", 3, 1);
-  EXPECT_EQ(soup.corner_vertices, (std::vector<Index>{0, 1, 2}));
+TEST_F(HostileFile, obj_polygon_with_a_repeated_vertex_is_read_as_written) {
+  // The soup keeps the repeated corner (repair collapses it); the record counts as kept.
+  ReadInfo info;
+  const Soup soup =
+      expect_read("repeat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2 3\n", 3, 1, &info);
+  EXPECT_EQ(soup.corner_vertices, (std::vector<Index>{0, 1, 1, 2}));
+  EXPECT_EQ(info.faces_kept, 1u);
 }
 
 TEST_F(HostileFile, obj_face_corner_without_a_vertex_index) {
@@ -354,10 +362,10 @@ TEST_F(HostileFile, obj_face_corner_without_a_vertex_index) {
   expect_error<ReadError>("slash.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf /1 2 3\n",
                           "line 5: face corner '/1' has no vertex index");
   expect_error<ReadError>("slash_texcoord.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf x /1/1 2 3\n",
-                          "face corner '/1/1' has no vertex index");
-  // A missing normal is harmless (OpenMesh reads no normals for us): the corner is dropped.
-  ReadInfo info;
-  expect_read("slash_normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf //1 1 2 3\n", 3, 1, &info);
+                          "face corner 'x' has no vertex index");
+  // A corner without its vertex is an error too: dropping it would change the polygon.
+  expect_error<ReadError>("slash_normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf //1 1 2 3\n",
+                          "line 4: face corner '//1' has no vertex index");
   expect_read("texcoords.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n", 3, 1);
 }
 
@@ -384,9 +392,9 @@ TEST_F(HostileFile, off_header_claims_more_faces_than_present) {
 
 TEST_F(HostileFile, off_negative_counts) {
   expect_error<ReadError>("negative.off", "OFF\n-3 -1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-                          "declares 4294967293 vertices and 4294967295 faces, more than");
+                          "declares -3 vertices and -1 faces: a count cannot be negative");
   expect_error<ReadError>("negative_faces.off", "OFF\n3 -1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-                          "4294967295 faces, more than a file of 37 bytes can hold");
+                          "declares 3 vertices and -1 faces: a count cannot be negative");
 }
 
 TEST_F(HostileFile, off_huge_counts_claiming_gigabytes) {
@@ -400,13 +408,19 @@ TEST_F(HostileFile, off_face_with_a_huge_arity) {
   expect_error<ReadError>("arity.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n",
                           "OFF face 0 claims 4000000000 corners");
   expect_error<ReadError>("arity_neg.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n",
-                          "OFF face 0 claims 4294967293 corners");
+                          "OFF face 0 has a negative corner count -3 (line 6)");
 }
 
 TEST_F(HostileFile, off_faces_with_zero_one_and_two_vertices) {
-  expect_error<InvalidSoupError>("short.off",
-                                 "OFF\n3 4 0\n0 0 0\n1 0 0\n0 1 0\n0\n1 0\n2 0 1\n3 0 1 2\n",
-                                 "face 0 has 0 corner(s); a polygon needs at least 3");
+  // As in OBJ: set aside (1 or 2 corners stay as padded triangles, 0 corners only counted).
+  ReadInfo info;
+  const Soup soup = expect_read(
+      "short.off", "OFF\n3 4 0\n0 0 0\n1 0 0\n0 1 0\n0\n1 0\n2 0 1\n3 0 1 2\n", 3, 3, &info);
+  EXPECT_EQ(soup.corner_vertices, (std::vector<Index>{0, 0, 0, 0, 1, 1, 0, 1, 2}));
+  EXPECT_EQ(info.declared_faces, 4u);
+  EXPECT_EQ(info.faces_set_aside, 3u);
+  EXPECT_EQ(info.faces_without_corners, 1u);
+  EXPECT_EQ(info.faces_kept, 1u);
 }
 
 TEST_F(HostileFile, off_index_out_of_range_and_negative) {
@@ -446,7 +460,7 @@ TEST_F(HostileFile, ply_negative_element_count) {
       "ply\nformat ascii 1.0\nelement vertex -3\nproperty float x\nproperty float y\n"
       "property float z\nelement face -1\nproperty list uchar int vertex_indices\nend_header\n";
   expect_error<ReadError>("negative.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-                          "PLY vertex 4 of 4294967293");
+                          "PLY element 'vertex' has count '-3', not a non-negative integer");
 }
 
 TEST_F(HostileFile, ply_two_gigabyte_claimed_allocation_in_the_header) {
@@ -478,20 +492,28 @@ TEST_F(HostileFile, ply_binary_list_with_a_huge_count) {
   bytes += body.substr(0, 48);  // the four vertices
   put<std::uint32_t>(bytes, 0xFFFFFFFFu);
   put<std::int32_t>(bytes, 0);
-  expect_error<ReadError>("huge_list_uint.ply", bytes, "Unsupported Index type");
+  expect_error<ReadError>("huge_list_uint.ply", bytes,
+                          "PLY face 0 of 1 claims 4294967295 corners, more than the rest");
   std::string as_int = binary_ply_header("4", "1", "list int int") + body.substr(0, 48);
   put<std::int32_t>(as_int, -1);  // read as 4294967295 corners
   put<std::int32_t>(as_int, 0);
-  expect_error<ReadError>("huge_list_int.ply", as_int, "PLY face 0 of 1 claims 4294967295 corners");
+  expect_error<ReadError>("huge_list_int.ply", as_int,
+                          "PLY face 0 of 1 has a negative corner count (-1)");
 }
 
-TEST_F(HostileFile, ply_faces_with_zero_one_and_two_vertices) {
+TEST_F(HostileFile, ply_faces_with_zero_one_and_two_vertices_are_set_aside) {
   const std::string header =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
       "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
-  expect_error<InvalidSoupError>("short.ply",
-                                 header + "0 0 0\n1 0 0\n0 1 0\n0\n1 0\n2 0 1\n3 0 1 2\n",
-                                 "face 0 has 0 corner(s)");
+  // As in OBJ and OFF: set aside (1 or 2 corners stay as padded triangles, 0 only counted).
+  ReadInfo info;
+  const Soup soup = expect_read(
+      "short.ply", header + "0 0 0\n1 0 0\n0 1 0\n0\n1 0\n2 0 1\n3 0 1 2\n", 3, 3, &info);
+  EXPECT_EQ(soup.corner_vertices, (std::vector<Index>{0, 0, 0, 0, 1, 1, 0, 1, 2}));
+  EXPECT_EQ(info.declared_faces, 4u);
+  EXPECT_EQ(info.faces_set_aside, 3u);
+  EXPECT_EQ(info.faces_without_corners, 1u);
+  EXPECT_EQ(info.faces_kept, 1u);
 }
 
 TEST_F(HostileFile, ply_negative_and_out_of_range_indices) {
@@ -511,7 +533,7 @@ TEST_F(HostileFile, ply_header_without_end_or_with_unknown_format) {
                           "no end_header");
   expect_error<ReadError>("bad_version.ply",
                           "ply\nformat ascii one\nelement vertex 3\nend_header\n0 0 0\n",
-                          "no end_header");
+                          "unsupported PLY version 'one' (expected 1.0)");
   // A property before any element makes OpenMesh use elements_.back() of an empty vector.
   expect_error<ReadError>("property_first.ply",
                           "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\n"
@@ -525,7 +547,7 @@ TEST_F(HostileFile, ply_header_without_end_or_with_unknown_format) {
                           "ply\nformat ascii 1.0\nelement vertex 3\nproperty quaternion x\n"
                           "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
                           "0\n1\n2\n3 0 1 2\n",
-                          "the PLY vertex element has 0 coordinate properties (x, y, z), not 3");
+                          "PLY property 'x' of element 'vertex' has unknown type 'quaternion'");
   expect_error<ReadError>("float_indices.ply",
                           "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
                           "property float y\nproperty float z\nelement face 1\n"
@@ -601,16 +623,22 @@ TEST_F(HostileFile, binary_stl_whose_header_starts_with_solid) {
   expect_read("solid_header.stl", binary_stl(kTetrahedron, 4, "solid but actually binary"), 4, 4);
 }
 
-TEST_F(HostileFile, binary_stl_with_all_triangles_collapsed_to_a_point) {
-  // OpenMesh's STL reader drops a triangle whose corners weld together; ReadInfo counts it.
+TEST_F(HostileFile, binary_stl_with_triangles_collapsed_to_a_point_are_set_aside) {
+  // A facet whose corners weld together stays in the soup (repair sets it aside) and counts in
+  // faces_set_aside: every facet of the file is accounted for.
   const std::vector<std::vector<float>> points(3, std::vector<float>(9, 1.5f));
-  expect_error<ReadError>("points.stl", binary_stl(points, 3), "no polygons");
+  ReadInfo info;
+  expect_read("points.stl", binary_stl(points, 3), 1, 3, &info);
+  EXPECT_EQ(info.declared_faces, 3u);
+  EXPECT_EQ(info.faces_set_aside, 3u);
+  EXPECT_EQ(info.faces_kept, 0u);
   auto triangles = kTetrahedron;
   triangles.push_back(std::vector<float>(9, 0.0f));
-  ReadInfo info;
-  expect_read("one_collapsed.stl", binary_stl(triangles, 5), 4, 4, &info);
+  expect_read("one_collapsed.stl", binary_stl(triangles, 5), 4, 5, &info);
   EXPECT_EQ(info.declared_faces, 5u);
-  EXPECT_EQ(info.faces_dropped_by_reader, 1u);
+  EXPECT_EQ(info.faces_kept, 4u);
+  EXPECT_EQ(info.faces_set_aside, 1u);
+  EXPECT_EQ(info.faces_dropped_by_reader, 0u);
 }
 
 TEST_F(HostileFile, ascii_stl_truncated_and_malformed) {
@@ -643,8 +671,9 @@ TEST_F(HostileFile, unknown_extension_directory_and_missing_file) {
 
 TEST_F(HostileFile, format_and_extension_disagree) {
   expect_error<ReadError>("off_inside.obj", kOffTetrahedron, "no polygons");
-  expect_error<ReadError>("obj_inside.off", kObjTetrahedron, "could not parse");
-  expect_error<ReadError>("obj_inside.ply", kObjTetrahedron, "could not parse");
+  expect_error<ReadError>("obj_inside.off", kObjTetrahedron, "not an OFF file: it starts with 'v'");
+  expect_error<ReadError>("obj_inside.ply", kObjTetrahedron,
+                          "not a PLY file: it starts with 'v', not 'ply'");
   expect_error<ReadError>("obj_inside.stl", kObjTetrahedron, "neither ASCII STL");
 }
 

@@ -51,7 +51,10 @@ struct DefectReport {
   std::size_t num_singular_vertices() const {
     return singular_edge_vertices.size() + pinch_vertices.size();
   }
-  //! True if anything above needs attention (components and Euler number are not defects).
+  //! True if anything above needs attention. Not defects: components, Euler number, and
+  //! zero-area faces with 3 distinct corners (listed only: they are valid topology that repair
+  //! keeps on purpose, so a `check` of a repaired file can exit 0). `check` exits 1 exactly
+  //! when this is true.
   bool has_defects() const;
 };
 

@@ -1,45 +1,131 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 //! \file io.h
-//! Files in and out through OpenMesh's own readers and writers (OBJ, OFF, PLY, STL).
+//! Files in and out: OBJ, OFF, PLY and STL, read by MeshBridge's own readers (one per format,
+//! core/src/io/), each file once, from a memory map. Nothing a file declares is changed silently:
+//! every face record is accounted for in ReadInfo.
 
 #include "meshbridge/indexed_mesh.h"
 #include "meshbridge/soup.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace meshbridge {
 
-//! What the file declared next to what OpenMesh's reader passed on.
+//! What the file declared and what became of each record. Every face record of the file is in
+//! exactly one of `faces_kept`, `faces_split` and `faces_set_aside`:
+//! `declared_faces == faces_kept + faces_split + faces_set_aside` for every format.
 struct ReadInfo {
-  std::size_t declared_vertices = 0;  //!< 'v' records (OBJ) or header count (OFF, PLY); 0: unknown
-  std::size_t declared_faces = 0;     //!< 'f' records (OBJ) or header count (OFF, PLY); 0: unknown
-  std::size_t faces_dropped_by_reader = 0;  //!< declared faces the reader never passed on
-  std::size_t faces_kept = 0;       //!< polygons in the soup as the file had them
-  std::size_t faces_split = 0;      //!< pinched polygons split into simple ones
-  std::size_t faces_set_aside = 0;  //!< face records with < 3 distinct corners, not in the soup
-  std::size_t dangling_edges = 0;   //!< edge records (OBJ `l`, PLY `edge`), not in the soup
-  std::size_t lone_points = 0;      //!< point records (OBJ `p`), not in the soup
+  //! Vertex records (OBJ 'v'), header count (OFF, PLY) or 3 x triangles (STL, before welding).
+  std::size_t declared_vertices = 0;
+  //! Face records (OBJ 'f'), header count (OFF, PLY face/tristrip triangles), triangles (STL).
+  std::size_t declared_faces = 0;
+  //! Records read as simple polygons (consecutive repeated corners collapse, e.g. "f 1 2 2 3").
+  std::size_t faces_kept = 0;
+  //! Pinched polygons that revisit a vertex (e.g. "f 1 2 3 1 4 5"); repair splits them into
+  //! simple loops, the same way for every format.
+  std::size_t faces_split = 0;
+  //! Records with fewer than 3 distinct corners (e.g. an STL facet with one point three times,
+  //! "f 1 2"). They are in the soup (a record with 1 or 2 corners repeats its last corner up to
+  //! a triangle, so soup face f is record f) and in `faces` of every report, and repair sets
+  //! them aside; only records with no corner at all (`faces_without_corners`) are not in the soup.
+  std::size_t faces_set_aside = 0;
+  //! Face records without a single corner ("f" alone, a PLY face with count 0): counted in
+  //! `faces_set_aside` and `declared_faces`, absent from the soup.
+  std::size_t faces_without_corners = 0;
+  //! Two-point records that are no face: OBJ 'l' segments (a polyline of n points counts n - 1)
+  //! and PLY `edge` elements. Not part of the soup.
+  std::size_t dangling_edges = 0;
+  //! OBJ 'p' points (each index of a record counts one). Not part of the soup.
+  std::size_t lone_points = 0;
+  //! Declared faces OpenMesh's reader never passed on (only while a format still goes through
+  //! OpenMesh; MeshBridge's own readers keep every record and leave this 0).
+  std::size_t faces_dropped_by_reader = 0;
+
+  //! True if some record was not kept as one simple polygon.
+  bool changed_anything() const {
+    return faces_split + faces_set_aside + dangling_edges + lone_points + faces_dropped_by_reader >
+           0;
+  }
 };
 
-//! Reads the raw soup of a mesh file: every vertex and polygon as the file has them, captured by
-//! a custom OpenMesh importer, so nothing is refused or duplicated on the way in. STL is welded
-//! by exact position (OpenMesh's STL reader).
-//! \throw ReadError (missing, unreadable, empty, unknown extension, malformed, no polygons)
-//! \throw InvalidSoupError (index out of range, non-finite coordinate, polygon with < 3 corners)
-//! OpenMesh's OBJ reader skips face records with fewer than 3 distinct vertices without a word;
-//! `info` (if given) counts them, so callers can say so. Fewer vertices than declared (e.g. an
-//! unparseable coordinate such as "nan") is a ReadError, since every later index would shift.
-Soup read_soup(const std::string& path, ReadInfo* info = nullptr);
+//! One line saying what became of the file's records, e.g. "10 face records: 8 kept, 1 split
+//! (pinched), 1 set aside (< 3 distinct corners); 3 dangling edges, 1 lone point (not part of
+//! the surface)". Parts that are 0 are left out; a file read unchanged gives "N face records:
+//! all kept".
+std::string describe_reading(const ReadInfo& info);
+
+//! An 8-bit RGBA colour (alpha 255 when the file gives none).
+struct Rgba {
+  std::uint8_t r = 0, g = 0, b = 0, a = 255;
+  friend bool operator==(const Rgba& x, const Rgba& y) {
+    return x.r == y.r && x.g == y.g && x.b == y.b && x.a == y.a;
+  }
+};
+
+//! A run of faces under one OBJ `o`/`g`/`usemtl` name, from `first_face` to the next group.
+struct FaceGroup {
+  std::string name;  //!< "o NAME", "g NAME" or "usemtl NAME" as written (keyword included)
+  Index first_face = 0;
+};
+
+//! What a file carries besides positions and polygons, where MeshBridge keeps it.
+struct MeshAttributes {
+  std::vector<Rgba> vertex_colors;     //!< empty, or one per soup vertex
+  std::vector<Rgba> face_colors;       //!< empty, or one per soup face
+  std::vector<FaceGroup> face_groups;  //!< OBJ groups in file order (empty elsewhere)
+  bool double_precision = false;       //!< positions were stored as 64-bit floats (PLY double)
+};
+
+//! Reads the raw soup of a mesh file: every vertex and polygon as the file has them (repeated
+//! corners included; repair splits or sets them aside), nothing refused or merged on the way in
+//! except STL corners, which are welded by exact position. The format is chosen by extension
+//! (.obj .off .ply .stl, any case); a file whose first bytes contradict it is refused.
+//! \param info if given, filled with the counts above
+//! \param attributes if given, filled with colours and groups where the file has them
+//! \throw ReadError (missing, unreadable, empty, unknown extension, malformed: the message names
+//!        the line or record and what was expected; counts that lie; no polygons)
+//! \throw InvalidSoupError (index out of range, non-finite coordinate)
+Soup read_soup(const std::string& path, ReadInfo* info = nullptr,
+               MeshAttributes* attributes = nullptr);
 
 //! True if `path` has an extension read_soup/write_mesh handle (.obj .off .ply .stl, any case).
 bool is_supported_mesh_file(const std::string& path);
 
-//! Writes `mesh` through OpenMesh's writer chosen by the extension, positions with 17 digits.
-//! The file is written under a temporary name beside `path` and renamed on success, so on any
-//! error the previous file at `path` is untouched. STL gets triangles (polygons are fanned).
+//! Writes a file the way write_mesh does (MeshBridge's one atomic-write helper): `fill` writes
+//! the whole content to the temporary path it is given (a unique name beside `path`), which is
+//! then renamed over `path`. If `fill` throws, the temporary file is removed, `path` is
+//! untouched and the exception is passed on. For callers that write through a library taking a
+//! file name (a PNG through Qt, a report).
+//! \throw WriteError naming `path` (no directory, no permission, rename failed)
+void write_file_atomically(const std::string& path,
+                           const std::function<void(const std::string& temporary_path)>& fill);
+//! write_file_atomically for content already in memory.
+void write_bytes_atomically(const std::string& path, std::string_view bytes);
+
+//! How write_mesh writes where a format has a choice.
+struct WriteOptions {
+  bool binary = true;  //!< PLY and STL: binary (default) or ASCII; OBJ and OFF are always text
+  //! PLY: positions as `double` always (default false: `double` only if the attributes say
+  //! the input had doubles or some coordinate is not exactly a float, so a write never rounds a
+  //! position; `float` otherwise). Text formats always write the shortest exact text of each
+  //! double; STL holds 32-bit floats only.
+  bool double_precision = false;
+};
+
+//! Writes `mesh` by the format of the extension. Text formats write each coordinate as the
+//! shortest decimal that reads back to the same double. STL gets triangles (polygons fanned).
+//! Colours of `attributes` (of the soup `mesh` came from) are carried through `vertex_origin`
+//! and `face_origin` where the format holds them (OFF faces, PLY vertices and faces).
+//! The file is written under a unique temporary name beside `path` and renamed on success, so
+//! on any error the previous file at `path` is untouched and no temporary file stays.
 //! \throw WriteError naming the path and the reason
-void write_mesh(const std::string& path, const IndexedMesh& mesh);
+void write_mesh(const std::string& path, const IndexedMesh& mesh,
+                const MeshAttributes* attributes = nullptr, const WriteOptions& options = {});
 
 }  // namespace meshbridge

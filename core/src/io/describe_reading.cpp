@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// ReadInfo as one line of text for reports and warnings.
+
+#include "meshbridge/io.h"
+
+#include <string>
+
+namespace meshbridge {
+
+namespace {
+
+std::string counted(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+}  // namespace
+
+std::string describe_reading(const ReadInfo& info) {
+  std::string text = counted(info.declared_faces, "face record", "face records") + ": ";
+  if (info.faces_split + info.faces_set_aside + info.faces_dropped_by_reader == 0) {
+    text += "all kept";
+  } else {
+    text += std::to_string(info.faces_kept) + " kept";
+    if (info.faces_split > 0)
+      text += ", " + std::to_string(info.faces_split) + " split (pinched: a vertex revisited)";
+    if (info.faces_set_aside > 0) {
+      text += ", " + std::to_string(info.faces_set_aside) + " set aside (< 3 distinct corners";
+      if (info.faces_without_corners > 0)
+        text += "; " + std::to_string(info.faces_without_corners) + " without any corner";
+      text += ")";
+    }
+    if (info.faces_dropped_by_reader > 0)
+      text += ", " + std::to_string(info.faces_dropped_by_reader) + " dropped by the reader";
+  }
+  if (info.dangling_edges + info.lone_points > 0) {
+    text += "; ";
+    if (info.dangling_edges > 0)
+      text += counted(info.dangling_edges, "dangling edge", "dangling edges");
+    if (info.dangling_edges > 0 && info.lone_points > 0)
+      text += ", ";
+    if (info.lone_points > 0)
+      text += counted(info.lone_points, "lone point", "lone points");
+    text += " (not part of the surface, not written back)";
+  }
+  return text;
+}
+
+}  // namespace meshbridge

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The contract between the dispatcher (io.cpp) and the one reader and one writer per format.
+//
+// READERS  `void read_FMT(const MappedFile& file, Soup& soup, ReadInfo& info,
+//                          MeshAttributes* attributes)`
+//   - `file` is the whole file (size > 0); `soup` is empty; `info` is zeroed; `attributes` is
+//     null when the caller does not want colours/groups (then do not collect them).
+//   - Append every vertex and every face record in file order, exactly as the file has them:
+//     repeated corners stay (the dispatcher classifies them, see account_faces); a record with
+//     1 or 2 corners is appended as a triangle repeating its last corner (so soup face f is
+//     record f); a record with 0 corners is not appended but counted in
+//     `info.faces_without_corners`. Never drop, merge or reorder anything (STL welds corners by
+//     exact position: that is its vertex identity). Convert coordinates to double unchanged.
+//   - Fill `info.declared_vertices` / `info.declared_faces` (see io.h), `info.dangling_edges`
+//     (OBJ l, PLY edge), `info.lone_points` (OBJ p). Leave faces_kept/split/set_aside to the
+//     dispatcher. `attributes->vertex_colors`/`face_colors` must end up empty or exactly one per
+//     soup vertex/face.
+//   - Malformed input: throw ReadError whose message starts with `file.path() + ": "` and names
+//     the line (text) or record (binary) and what was expected. Counts that lie (a header says
+//     more than the file holds) are a ReadError, checked BEFORE reserving memory: reserve at
+//     most what the remaining bytes can hold. Never read outside [file.data(), file.end()).
+//   - Indices may be out of range or coordinates non-finite: store them as they are (index
+//     kNoIndex for negative ones that do not resolve); the dispatcher's validate_soup names them.
+//
+// WRITERS  `void write_FMT(AtomicOutput& out, const IndexedMesh& mesh,
+//                           const MeshAttributes* attributes, const WriteOptions& options)`
+//   - Write the whole file through `out` (or to `out.temporary_path()`); the dispatcher has
+//     already chosen the format and wraps the call in write_atomically (no renaming here).
+//   - `attributes` (may be null) belong to the input soup: map them through
+//     `mesh.vertex_origin` / `mesh.face_origin` (each may be empty: then identity).
+//   - Double precision where the format allows (text: std::to_chars shortest round trip).
+//   - Throw WriteError naming `out.target()` if the mesh cannot be written (e.g. an index that
+//     does not fit the format).
+
+#include "io/atomic_write.h"
+#include "io/mapped_file.h"
+#include "meshbridge/indexed_mesh.h"
+#include "meshbridge/io.h"
+#include "meshbridge/soup.h"
+
+namespace meshbridge::detail {
+
+void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
+void read_off(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
+void read_ply(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
+void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
+
+void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
+               const WriteOptions& options);
+void write_off(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
+               const WriteOptions& options);
+void write_ply(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
+               const WriteOptions& options);
+void write_stl(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
+               const WriteOptions& options);
+
+//! Classifies every soup face as kept, split (pinched) or set aside (< 3 distinct corners) the
+//! way repair's WorkingSoup does, and adds the counts to `info` (faces_without_corners are added
+//! to faces_set_aside too). Called by the dispatcher after every reader.
+void account_faces(const Soup& soup, ReadInfo& info);
+
+//! The vertex of the input soup behind output vertex `v` (identity when the map is empty).
+inline Index input_vertex(const IndexedMesh& mesh, std::size_t v) {
+  return mesh.vertex_origin.empty() ? static_cast<Index>(v) : mesh.vertex_origin[v];
+}
+//! The face of the input soup behind output face `f` (identity when the map is empty).
+inline Index input_face(const IndexedMesh& mesh, std::size_t f) {
+  return mesh.face_origin.empty() ? static_cast<Index>(f) : mesh.face_origin[f];
+}
+
+}  // namespace meshbridge::detail

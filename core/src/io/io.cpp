@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The dispatcher: picks the reader or writer by extension, then checks and accounts for what
+// every reader produced the same way (formats.h states the contract).
+
+#include "meshbridge/io.h"
+
+#include "io/atomic_write.h"
+#include "io/formats.h"
+#include "io/mapped_file.h"
+#include "meshbridge/errors.h"
+#include "meshbridge/validate.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+namespace meshbridge {
+
+namespace {
+
+enum class Format { unknown, obj, off, ply, stl };
+
+Format format_of(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return Format::unknown;
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  if (ext == "obj")
+    return Format::obj;
+  if (ext == "off")
+    return Format::off;
+  if (ext == "ply")
+    return Format::ply;
+  if (ext == "stl")
+    return Format::stl;
+  return Format::unknown;
+}
+
+// Attributes belong to the input soup: every origin the mesh refers to must have its colour.
+void check_attributes(const std::string& path, const IndexedMesh& mesh,
+                      const MeshAttributes* attributes) {
+  if (attributes == nullptr)
+    return;
+  const auto check = [&](std::size_t colours, std::size_t count, const std::vector<Index>& origin,
+                         const char* what) {
+    if (colours == 0)
+      return;
+    std::size_t needed = origin.empty() ? count : 0;
+    for (Index o : origin)
+      needed = std::max<std::size_t>(needed, std::size_t(o) + 1);
+    if (colours < needed) {
+      throw WriteError(path + ": the attributes hold " + std::to_string(colours) + " " + what +
+                       " colour(s) but the mesh needs " + std::to_string(needed) +
+                       " (attributes of another mesh?)");
+    }
+  };
+  check(attributes->vertex_colors.size(), mesh.soup.num_vertices(), mesh.vertex_origin, "vertex");
+  check(attributes->face_colors.size(), mesh.soup.num_faces(), mesh.face_origin, "face");
+}
+
+}  // namespace
+
+bool is_supported_mesh_file(const std::string& path) {
+  return format_of(path) != Format::unknown;
+}
+
+Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attributes) {
+  const detail::MappedFile file(path);  // missing, directory, empty: ReadError
+  const Format format = format_of(path);
+  if (format == Format::unknown)
+    throw ReadError(path + ": unknown format (expected .obj, .off, .ply or .stl)");
+
+  Soup soup;
+  ReadInfo counts;
+  if (attributes != nullptr)
+    *attributes = MeshAttributes();
+  switch (format) {
+    case Format::obj:
+      detail::read_obj(file, soup, counts, attributes);
+      break;
+    case Format::off:
+      detail::read_off(file, soup, counts, attributes);
+      break;
+    case Format::ply:
+      detail::read_ply(file, soup, counts, attributes);
+      break;
+    case Format::stl:
+      detail::read_stl(file, soup, counts, attributes);
+      break;
+    case Format::unknown:
+      break;
+  }
+  if (soup.num_faces() == 0) {
+    throw ReadError(
+        path + ": no polygons in the file (" + std::to_string(soup.num_vertices()) + " vertices" +
+        (counts.dangling_edges > 0 ? ", " + std::to_string(counts.dangling_edges) + " edges"
+                                   : std::string()) +
+        (counts.lone_points > 0 ? ", " + std::to_string(counts.lone_points) + " points"
+                                : std::string()) +
+        ")");
+  }
+  try {
+    validate_soup(soup);
+  } catch (const InvalidSoupError& error) {
+    throw InvalidSoupError(path + ": " + error.what());
+  }
+  detail::account_faces(soup, counts);
+  if (info != nullptr)
+    *info = counts;
+  return soup;
+}
+
+void write_file_atomically(const std::string& path,
+                           const std::function<void(const std::string& temporary_path)>& fill) {
+  detail::write_atomically(path, [&](detail::AtomicOutput& out) { fill(out.temporary_path()); });
+}
+
+void write_bytes_atomically(const std::string& path, std::string_view bytes) {
+  detail::write_atomically(path, [&](detail::AtomicOutput& out) { out.write(bytes); });
+}
+
+void write_mesh(const std::string& path, const IndexedMesh& mesh, const MeshAttributes* attributes,
+                const WriteOptions& options) {
+  const Format format = format_of(path);
+  if (format == Format::unknown)
+    throw WriteError(path + ": unknown format (expected .obj, .off, .ply or .stl)");
+  check_attributes(path, mesh, attributes);
+  detail::write_atomically(path, [&](detail::AtomicOutput& out) {
+    switch (format) {
+      case Format::obj:
+        detail::write_obj(out, mesh, attributes, options);
+        break;
+      case Format::off:
+        detail::write_off(out, mesh, attributes, options);
+        break;
+      case Format::ply:
+        detail::write_ply(out, mesh, attributes, options);
+        break;
+      case Format::stl:
+        detail::write_stl(out, mesh, attributes, options);
+        break;
+      case Format::unknown:
+        break;
+    }
+  });
+}
+
+}  // namespace meshbridge

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "io/mapped_file.h"
+
+#include "meshbridge/errors.h"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <cerrno>
+#include <cstring>
+
+namespace meshbridge::detail {
+
+MappedFile::MappedFile(const std::string& path) : path_(path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0)
+    throw ReadError(path + ": cannot open (" + std::strerror(errno) + ")");
+  struct stat status {};
+  if (::fstat(fd, &status) != 0) {
+    const std::string reason = std::strerror(errno);
+    ::close(fd);
+    throw ReadError(path + ": cannot open (" + reason + ")");
+  }
+  if (S_ISDIR(status.st_mode)) {
+    ::close(fd);
+    throw ReadError(path + ": is a directory, not a mesh file");
+  }
+  if (!S_ISREG(status.st_mode)) {
+    ::close(fd);
+    throw ReadError(path + ": not a regular file (a pipe or device cannot be mapped)");
+  }
+  if (status.st_size == 0) {
+    ::close(fd);
+    throw ReadError(path + ": file is empty");
+  }
+  size_ = static_cast<std::size_t>(status.st_size);
+  void* map = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
+  const int map_errno = errno;
+  ::close(fd);
+  if (map == MAP_FAILED)
+    throw ReadError(path + ": cannot map the file (" + std::strerror(map_errno) + ")");
+  ::madvise(map, size_, MADV_SEQUENTIAL);
+  data_ = static_cast<const char*>(map);
+}
+
+void MappedFile::release_before(const char* upto) const {
+  static const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+  if (upto <= data_ || upto > data_ + size_)
+    return;
+  const std::size_t bytes = static_cast<std::size_t>(upto - data_) / page * page;
+  if (bytes > 0)
+    ::madvise(const_cast<char*>(data_), bytes, MADV_DONTNEED);
+}
+
+MappedFile::~MappedFile() {
+  if (data_ != nullptr)
+    ::munmap(const_cast<char*>(data_), size_);
+}
+
+}  // namespace meshbridge::detail

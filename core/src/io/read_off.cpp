@@ -1,0 +1,348 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// OFF reader: header [ST][C][N][n]OFF [BINARY] (nOFF with dimension 3), '#' comments wherever a
+// word can start, vertex colours (COFF) and face colours kept, counts checked against the file.
+
+#include "io/formats.h"
+#include "io/text_scanner.h"
+#include "meshbridge/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace meshbridge::detail {
+
+namespace {
+
+struct OffHeader {
+  bool texcoords = false, colors = false, normals = false, binary = false;
+};
+
+std::string clip(std::string_view text) {
+  std::string out(text.substr(0, 40));
+  for (char& c : out) {
+    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126)
+      c = '?';
+  }
+  return out;
+}
+
+std::uint8_t color_byte(double value, bool unit_range) {
+  if (!std::isfinite(value))
+    return 0;
+  const double scaled = unit_range ? value * 255.0 : value;
+  return static_cast<std::uint8_t>(std::lround(std::clamp(scaled, 0.0, 255.0)));
+}
+
+// A colour from the numbers left on a vertex or face line: 3 or 4 values, integers 0..255 or
+// floats 0..1 (a single value is a colour-map index, which MeshBridge does not keep).
+bool to_color(const std::vector<double>& values, bool all_integers, Rgba& color) {
+  if (values.size() != 3 && values.size() != 4)
+    return false;
+  const bool unit = !all_integers;
+  color =
+      Rgba{color_byte(values[0], unit), color_byte(values[1], unit), color_byte(values[2], unit),
+           values.size() == 4 ? color_byte(values[3], unit) : std::uint8_t(255)};
+  return true;
+}
+
+class OffReader {
+ public:
+  OffReader(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes)
+      : file_(file),
+        soup_(soup),
+        info_(info),
+        attributes_(attributes),
+        in_(file.data(), file.end(), false, true) {}
+
+  void read() {
+    const OffHeader header = read_header();
+    if (header.binary)
+      read_binary(header);
+    else
+      read_ascii(header);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const {
+    throw ReadError(file_.path() + ": " + what);
+  }
+  // Keeps at most a window of the map resident behind the cursor (see release_before).
+  void release_behind() {
+    if (in_.position() - released_ > (8 << 20)) {
+      released_ = in_.position();
+      file_.release_before(released_);
+    }
+  }
+  std::string at_line() const { return " (line " + std::to_string(in_.line()) + ")"; }
+
+  OffHeader read_header() {
+    in_.skip_space_and_comments();
+    const std::string_view word = in_.word();
+    OffHeader h;
+    std::size_t i = 0;
+    if (word.substr(0, 2) == "ST")
+      h.texcoords = true, i = 2;
+    if (i < word.size() && word[i] == 'C')
+      h.colors = true, ++i;
+    if (i < word.size() && word[i] == 'N')
+      h.normals = true, ++i;
+    bool four = false, n_dimensional = false;
+    if (i < word.size() && word[i] == '4')
+      four = true, ++i;
+    if (i < word.size() && word[i] == 'n')
+      n_dimensional = true, ++i;
+    if (word.substr(i) != "OFF") {
+      fail("not an OFF file: it starts with '" + clip(word) +
+           "', not a header such as OFF, COFF, NOFF, STOFF or nOFF");
+    }
+    if (four) {
+      fail("'" + clip(word) +
+           "': 4-dimensional vertices (4OFF) cannot be read as a 3D mesh; only 3D OFF is read");
+    }
+    in_.skip_blanks();
+    const char* at = in_.position();
+    if (file_.end() - at >= 6 && std::memcmp(at, "BINARY", 6) == 0) {
+      in_.advance(6);
+      h.binary = true;
+    }
+    if (n_dimensional) {
+      if (h.binary)
+        fail("binary nOFF is not supported (only ASCII nOFF with dimension 3)");
+      in_.skip_space_and_comments();
+      std::int64_t dimension = 0;
+      if (!in_.integer(dimension))
+        fail("nOFF: no dimension after the header" + at_line());
+      if (dimension != 3) {
+        fail("nOFF of dimension " + std::to_string(dimension) +
+             ": only 3-dimensional vertices can be read as a mesh");
+      }
+    }
+    if (h.binary) {
+      in_.next_line();  // binary data starts after the header line
+    }
+    return h;
+  }
+
+  // --- ASCII ----------------------------------------------------------------------------------
+
+  std::int64_t count(const char* what) {
+    in_.skip_space_and_comments();
+    std::int64_t value = 0;
+    if (!in_.integer(value)) {
+      fail(std::string("no ") + what + " count after the OFF header" + at_line() +
+           ": expected 'vertices faces edges'");
+    }
+    return value;
+  }
+
+  void read_ascii(const OffHeader& h) {
+    const std::int64_t nv = count("vertex"), nf = count("face");
+    if (!in_.at_line_end()) {
+      std::int64_t edges = 0;  // often present, never used
+      if (!in_.integer(edges))
+        fail("the OFF edge count is not a number" + at_line());
+    }
+    if (nv < 0 || nf < 0) {
+      fail("the OFF header declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+           " faces: a count cannot be negative");
+    }
+    // The shortest vertex is "0 0 0\n" (6 bytes), the shortest face "0\n" (2 bytes).
+    const std::size_t size = file_.size();
+    if (std::uint64_t(nv) > size / 6 || std::uint64_t(nf) > size / 2 ||
+        std::uint64_t(nv) * 6 + std::uint64_t(nf) * 2 > size) {
+      fail("the OFF header declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+           " faces, more than a file of " + std::to_string(size) +
+           " bytes can hold (a false count)");
+    }
+    in_.next_line();
+    info_.declared_vertices = static_cast<std::size_t>(nv);
+    info_.declared_faces = static_cast<std::size_t>(nf);
+    soup_.reserve(static_cast<std::size_t>(nv), static_cast<std::size_t>(nf),
+                  3 * static_cast<std::size_t>(nf));
+    const bool want_colors = attributes_ != nullptr;
+    if (want_colors && h.colors)
+      attributes_->vertex_colors.reserve(static_cast<std::size_t>(nv));
+    std::vector<double> rest;
+    for (std::int64_t v = 0; v < nv; ++v) {
+      release_behind();
+      double xyz[3];
+      for (double& x : xyz) {
+        in_.skip_space_and_comments();
+        if (!in_.number(x)) {
+          fail("OFF vertex " + std::to_string(v) + " of " + std::to_string(nv) +
+               ": expected 3 numbers" + at_line() +
+               (in_.at_end() ? ", the file ends (a truncated file or a false count)"
+                             : ", found '" + clip(in_.word()) + "'"));
+        }
+      }
+      soup_.positions.push_back(Point(xyz[0], xyz[1], xyz[2]));
+      if (want_colors && h.colors) {
+        bool integers = true;
+        numbers_to_line_end(rest, integers);
+        // Rest of the line: [nx ny nz] colour [s t].
+        const std::size_t skip_front = h.normals ? 3 : 0, skip_back = h.texcoords ? 2 : 0;
+        Rgba color{255, 255, 255, 255};
+        if (rest.size() >= skip_front + skip_back) {
+          std::vector<double> values(rest.begin() + skip_front, rest.end() - skip_back);
+          to_color(values, integers, color);
+        }
+        attributes_->vertex_colors.push_back(color);
+      }
+      in_.next_line();
+    }
+    std::vector<Index> corners;
+    for (std::int64_t f = 0; f < nf; ++f) {
+      release_behind();
+      in_.skip_space_and_comments();
+      std::int64_t n = 0;
+      if (in_.at_end() || !in_.integer(n)) {
+        fail("OFF face " + std::to_string(f) + " of " + std::to_string(nf) + " is missing" +
+             at_line() + ": the file ends or has no corner count there");
+      }
+      if (n < 0)
+        fail("OFF face " + std::to_string(f) + " has a negative corner count " + std::to_string(n) +
+             at_line());
+      const std::size_t left = static_cast<std::size_t>(file_.end() - in_.position());
+      if (std::uint64_t(n) > left / 2 + 1) {
+        fail("OFF face " + std::to_string(f) + " claims " + std::to_string(n) +
+             " corners, more than the rest of the file holds" + at_line());
+      }
+      corners.clear();
+      for (std::int64_t c = 0; c < n; ++c) {
+        std::int64_t index = 0;
+        if (in_.at_line_end() || !in_.integer(index)) {
+          fail("OFF face " + std::to_string(f) + ": corner " + std::to_string(c) + " of " +
+               std::to_string(n) + " is missing or not a vertex index" + at_line());
+        }
+        if (index < 0 || index > std::int64_t(kNoIndex) - 1) {
+          fail("OFF face " + std::to_string(f) + " refers to vertex index " +
+               std::to_string(index) + at_line());
+        }
+        corners.push_back(static_cast<Index>(index));
+      }
+      add_face(corners);
+      if (want_colors && !corners.empty()) {
+        bool integers = true;
+        numbers_to_line_end(rest, integers);
+        Rgba color{255, 255, 255, 255};
+        if (to_color(rest, integers, color)) {
+          auto& colors = attributes_->face_colors;
+          colors.resize(soup_.num_faces() - 1, Rgba{255, 255, 255, 255});
+          colors.push_back(color);
+        }
+      }
+      in_.next_line();
+    }
+    if (want_colors && !attributes_->face_colors.empty())
+      attributes_->face_colors.resize(soup_.num_faces(), Rgba{255, 255, 255, 255});
+  }
+
+  // The numbers left on the current line (stops at the first word that is none).
+  void numbers_to_line_end(std::vector<double>& values, bool& all_integers) {
+    values.clear();
+    all_integers = true;
+    while (!in_.at_line_end()) {
+      const char* start = in_.position();
+      double x = 0;
+      if (!in_.number(x))
+        break;
+      const std::string_view text(start, static_cast<std::size_t>(in_.position() - start));
+      if (text.find_first_of(".eEnN") != std::string_view::npos)
+        all_integers = false;
+      values.push_back(x);
+    }
+  }
+
+  void add_face(std::vector<Index>& corners) {
+    if (corners.empty()) {
+      ++info_.faces_without_corners;
+      return;
+    }
+    while (corners.size() < 3)
+      corners.push_back(corners.back());
+    soup_.add_polygon(corners);
+  }
+
+  // --- binary (little-endian, as OpenMesh reads and writes it) --------------------------------
+
+  void read_binary(const OffHeader& h) {
+    const char* p = in_.position();
+    const char* end = file_.end();
+    const auto left = [&] { return static_cast<std::uint64_t>(end - p); };
+    const auto word = [&] {
+      std::uint32_t w = 0;
+      std::memcpy(&w, p, 4);
+      p += 4;
+      return w;
+    };
+    if (left() < 12)
+      fail("binary OFF ends before its vertex, face and edge counts");
+    const std::uint32_t nv = word(), nf = word();
+    word();
+    const std::uint64_t floats =
+        3 + (h.normals ? 3 : 0) + (h.colors ? 3 : 0) + (h.texcoords ? 2 : 0);
+    if (std::uint64_t(nv) * floats * 4 > left()) {
+      fail("binary OFF declares " + std::to_string(nv) + " vertices (" +
+           std::to_string(std::uint64_t(nv) * floats * 4) + " bytes) but only " +
+           std::to_string(left()) + " bytes follow its header (a truncated file or a false count)");
+    }
+    if (std::uint64_t(nf) * 4 > left() - std::uint64_t(nv) * floats * 4) {
+      fail("binary OFF declares " + std::to_string(nf) + " faces but only " +
+           std::to_string(left() - std::uint64_t(nv) * floats * 4) + " bytes follow its vertices");
+    }
+    info_.declared_vertices = nv;
+    info_.declared_faces = nf;
+    soup_.reserve(nv, nf, 3 * std::size_t(nf));
+    const bool colors = attributes_ != nullptr && h.colors;
+    for (std::uint32_t v = 0; v < nv; ++v) {
+      float values[11];
+      std::memcpy(values, p, floats * 4);
+      p += floats * 4;
+      soup_.positions.push_back(Point(values[0], values[1], values[2]));
+      if (colors) {
+        const float* c = values + 3 + (h.normals ? 3 : 0);
+        attributes_->vertex_colors.push_back(
+            Rgba{color_byte(c[0], true), color_byte(c[1], true), color_byte(c[2], true), 255});
+      }
+    }
+    std::vector<Index> corners;
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      if (left() < 4) {
+        fail("binary OFF ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+      }
+      const std::uint32_t n = word();
+      if (std::uint64_t(n) * 4 > left()) {
+        fail("binary OFF face " + std::to_string(f) + " claims " + std::to_string(n) +
+             " corners, more than the rest of the file holds");
+      }
+      corners.clear();
+      for (std::uint32_t c = 0; c < n; ++c) {
+        const std::int32_t index = static_cast<std::int32_t>(word());
+        if (index < 0) {
+          fail("binary OFF face " + std::to_string(f) + " refers to vertex index " +
+               std::to_string(index));
+        }
+        corners.push_back(static_cast<Index>(index));
+      }
+      add_face(corners);
+    }
+  }
+
+  const MappedFile& file_;
+  Soup& soup_;
+  ReadInfo& info_;
+  MeshAttributes* attributes_;
+  TextScanner in_;
+  const char* released_ = file_.data();
+};
+
+}  // namespace
+
+void read_off(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
+  OffReader(file, soup, info, attributes).read();
+}
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,467 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The PLY reader: ascii, binary little and big endian, any scalar types; `vertex`, `face`,
+// `tristrips` and `edge` elements; every other element and property skipped by its declared
+// size. Per-vertex and per-face colours go to MeshAttributes.
+#include "io/formats.h"
+#include "io/ply_header.h"
+#include "io/ply_sources.h"
+
+#include "meshbridge/errors.h"
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace meshbridge::detail {
+
+namespace {
+
+using Format = PlyHeader::Format;
+
+enum class Role : std::uint8_t {
+  skip,
+  x,
+  y,
+  z,
+  red,
+  green,
+  blue,
+  alpha,
+  indices,
+  vertex1,
+  vertex2
+};
+
+Role role_of(const PlyElement& e, const PlyProperty& p) {
+  const std::string& n = p.name;
+  if (p.is_list) {
+    const bool polygons = e.name == "face" || e.name == "tristrips";
+    return polygons && (n == "vertex_indices" || n == "vertex_index") ? Role::indices : Role::skip;
+  }
+  if (e.name == "vertex") {
+    if (n == "x")
+      return Role::x;
+    if (n == "y")
+      return Role::y;
+    if (n == "z")
+      return Role::z;
+  }
+  if (e.name == "vertex" || e.name == "face") {
+    if (n == "red" || n == "diffuse_red")
+      return Role::red;
+    if (n == "green" || n == "diffuse_green")
+      return Role::green;
+    if (n == "blue" || n == "diffuse_blue")
+      return Role::blue;
+    if (n == "alpha")
+      return Role::alpha;
+  }
+  if (e.name == "edge") {
+    if (n == "vertex1")
+      return Role::vertex1;
+    if (n == "vertex2")
+      return Role::vertex2;
+  }
+  return Role::skip;
+}
+
+bool is_color(Role r) {
+  return r == Role::red || r == Role::green || r == Role::blue || r == Role::alpha;
+}
+
+//! A colour channel as 0..255: integer types as they are (clamped), reals in [0, 1] scaled.
+std::uint8_t channel(double value, PlyScalar type) {
+  if (!is_ply_integer(type))
+    value *= 255.0;
+  if (!(value > 0))
+    return 0;
+  return value >= 255 ? 255 : static_cast<std::uint8_t>(std::lround(value));
+}
+
+void set_channel(Rgba& color, Role r, std::uint8_t value) {
+  switch (r) {
+    case Role::red:
+      color.r = value;
+      break;
+    case Role::green:
+      color.g = value;
+      break;
+    case Role::blue:
+      color.b = value;
+      break;
+    default:
+      color.a = value;
+      break;
+  }
+}
+
+std::string plural(const PlyElement& e) {
+  if (e.name == "vertex")
+    return "vertices";
+  if (e.name == "face")
+    return "faces";
+  return "'" + e.name + "' items";
+}
+
+class PlyReader {
+ public:
+  PlyReader(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes)
+      : file_(file), info_(info), soup_(soup), attributes_(attributes) {}
+
+  void read() {
+    header_ = parse_ply_header(file_.view(), file_.path());
+    check_elements();
+    const char* body = file_.data() + header_.body;
+    if (header_.format == Format::ascii) {
+      AsciiSource source(body, file_.end());
+      read_elements(source);
+    } else {
+      BinarySource source(body, file_.end(), header_.format == Format::binary_big_endian);
+      read_elements(source);
+    }
+    if (attributes_ != nullptr && !attributes_->face_colors.empty())
+      attributes_->face_colors.resize(soup_.num_faces());  // strip triangles get no colour
+  }
+
+ private:
+  std::string where() const { return file_.path() + ": "; }
+  std::string item(const PlyElement& e, std::uint64_t i) const {
+    return "PLY " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count);
+  }
+  ReadError unreadable(const PlyElement& e, std::uint64_t i, const PlyProperty& p) const {
+    return ReadError(where() + item(e, i) + ": property '" + p.name +
+                     "' is missing or unreadable (a truncated file, a false count, or a value "
+                     "such as 'nan' or '1.5' where an integer belongs)");
+  }
+
+  void check_elements() {
+    // The vertex element first: without x, y and z nothing else matters.
+    int coordinates = 0;
+    for (const PlyElement& e : header_.elements) {
+      if (e.name != "vertex")
+        continue;
+      for (const PlyProperty& p : e.properties) {
+        const Role r = role_of(e, p);
+        coordinates += r == Role::x || r == Role::y || r == Role::z;
+      }
+    }
+    if (coordinates != 3) {
+      throw ReadError(where() + "the PLY vertex element has " + std::to_string(coordinates) +
+                      " coordinate properties (x, y, z), not 3");
+    }
+    for (const PlyElement& e : header_.elements) {
+      if (e.count > 0 && e.properties.empty()) {
+        throw ReadError(where() + "PLY element '" + e.name + "' declares " +
+                        std::to_string(e.count) + " items without any property");
+      }
+      if ((e.name != "face" && e.name != "tristrips") || e.count == 0)
+        continue;
+      bool has_indices = false;
+      for (const PlyProperty& p : e.properties) {
+        if (role_of(e, p) != Role::indices)
+          continue;
+        if (has_indices) {
+          throw ReadError(where() + "PLY element '" + e.name +
+                          "' has both 'vertex_indices' and 'vertex_index'");
+        }
+        has_indices = true;
+        if (!is_ply_integer(p.type)) {
+          throw ReadError(where() + "PLY " + e.name + " property '" + p.name + "' is a list of '" +
+                          ply_scalar_name(p.type) + "', not of integers");
+        }
+      }
+      if (!has_indices) {
+        throw ReadError(where() + "PLY element '" + e.name +
+                        "' has no 'vertex_indices' (or 'vertex_index') list");
+      }
+    }
+  }
+
+  template <class Source>
+  void read_elements(Source& source) {
+    for (const PlyElement& e : header_.elements) {
+      // A count that no file of this size can hold is refused before anything is reserved.
+      const bool ascii = header_.format == Format::ascii;
+      const std::size_t least = ascii ? 2 * e.properties.size() - 1 : e.min_size();
+      if (e.count > 0 && least > 0 && e.count > source.remaining() / least) {
+        const std::size_t fixed = e.fixed_size();
+        if (!ascii && fixed > 0) {
+          throw ReadError(where() + "binary PLY ends inside element '" + e.name +
+                          "': " + std::to_string(e.count) + " items of " + std::to_string(fixed) +
+                          " bytes need " + std::to_string(e.count * fixed) + " bytes, " +
+                          std::to_string(source.remaining()) +
+                          " remain (a truncated file or a false count)");
+        }
+        throw ReadError(where() + (ascii ? "ascii" : "binary") + " PLY declares " +
+                        std::to_string(e.count) + " " + plural(e) + ", more than the " +
+                        std::to_string(source.remaining()) +
+                        " bytes left can hold (a truncated file or a false count)");
+      }
+      std::vector<Role> roles;
+      for (const PlyProperty& p : e.properties)
+        roles.push_back(role_of(e, p));
+      if (e.name == "vertex")
+        read_vertices(e, roles, source);
+      else
+        read_records(e, roles, source);
+    }
+  }
+
+  bool wants_colors(const std::vector<Role>& roles) const {
+    if (attributes_ == nullptr)
+      return false;
+    for (Role r : roles) {
+      if (is_color(r))
+        return true;
+    }
+    return false;
+  }
+
+  template <class Source>
+  bool skip_property(const PlyProperty& p, Source& source) {
+    if (!p.is_list)
+      return source.skip(p.type);
+    std::int64_t n = 0;
+    if (!source.integer(p.count_type, n) || n < 0)
+      return false;
+    return source.can_hold(p.type, static_cast<std::uint64_t>(n)) &&
+           source.skip(p.type, static_cast<std::uint64_t>(n));
+  }
+
+  template <class Source>
+  void read_vertices(const PlyElement& e, const std::vector<Role>& roles, Source& source) {
+    const std::size_t n = static_cast<std::size_t>(e.count);
+    soup_.positions.resize(n);
+    info_.declared_vertices = n;
+    const bool colors = wants_colors(roles);
+    if (colors)
+      attributes_->vertex_colors.resize(n);
+    for (std::size_t k = 0; k < roles.size(); ++k) {
+      if (roles[k] == Role::x || roles[k] == Role::y || roles[k] == Role::z) {
+        if (e.properties[k].type == PlyScalar::f64 && attributes_ != nullptr)
+          attributes_->double_precision = true;
+      }
+    }
+    if constexpr (std::is_same_v<Source, BinarySource>) {
+      if (!colors && read_vertices_fast(e, roles, source))
+        return;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      Point& point = soup_.positions[i];
+      for (std::size_t k = 0; k < roles.size(); ++k) {
+        const PlyProperty& p = e.properties[k];
+        const Role r = roles[k];
+        double value = 0;
+        if (r == Role::skip || (is_color(r) && !colors)) {
+          if (!skip_property(p, source))
+            throw unreadable(e, i, p);
+          continue;
+        }
+        if (!source.real(p.type, value))
+          throw unreadable(e, i, p);
+        if (r == Role::x)
+          point[0] = value;
+        else if (r == Role::y)
+          point[1] = value;
+        else if (r == Role::z)
+          point[2] = value;
+        else
+          set_channel(attributes_->vertex_colors[i], r, channel(value, p.type));
+      }
+    }
+  }
+
+  //! Binary vertices of fixed size whose x, y, z are all float or all double: one stride.
+  bool read_vertices_fast(const PlyElement& e, const std::vector<Role>& roles,
+                          BinarySource& source) {
+    const std::size_t stride = e.fixed_size();
+    std::size_t offset[3] = {0, 0, 0};
+    PlyScalar type = PlyScalar::u8;
+    std::size_t at = 0;
+    bool first = true;
+    for (std::size_t k = 0; k < roles.size(); ++k) {
+      const Role r = roles[k];
+      if (r == Role::x || r == Role::y || r == Role::z) {
+        if (!first && e.properties[k].type != type)
+          return false;
+        type = e.properties[k].type;
+        first = false;
+        offset[static_cast<int>(r) - static_cast<int>(Role::x)] = at;
+      }
+      at += ply_scalar_size(e.properties[k].type);
+    }
+    if (stride == 0 || (type != PlyScalar::f32 && type != PlyScalar::f64))
+      return false;
+    // read_elements checked that the whole element is in the file.
+    const unsigned char* p = source.position();
+    const bool swap = source.swaps();
+    for (Point& point : soup_.positions) {
+      for (int c = 0; c < 3; ++c) {
+        point[c] = type == PlyScalar::f32 ? double(load<float>(p + offset[c], swap))
+                                          : load<double>(p + offset[c], swap);
+      }
+      p += stride;
+    }
+    source.advance(stride * soup_.positions.size());
+    return true;
+  }
+
+  //! Faces, triangle strips, edges and any other element.
+  template <class Source>
+  void read_records(const PlyElement& e, const std::vector<Role>& roles, Source& source) {
+    const bool faces = e.name == "face", strips = e.name == "tristrips", edges = e.name == "edge";
+    const bool colors = faces && wants_colors(roles);
+    if (faces) {
+      info_.declared_faces += static_cast<std::size_t>(e.count);
+      soup_.face_begin.reserve(soup_.face_begin.size() + e.count);
+      soup_.corner_vertices.reserve(soup_.corner_vertices.size() + 3 * e.count);
+      if (colors)
+        attributes_->face_colors.reserve(e.count);
+    }
+    if constexpr (std::is_same_v<Source, BinarySource>) {
+      if (faces && !colors && read_faces_fast(e, roles, source))
+        return;
+    }
+    Rgba color;
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      color = Rgba();
+      for (std::size_t k = 0; k < roles.size(); ++k) {
+        const PlyProperty& p = e.properties[k];
+        const Role r = roles[k];
+        if (r == Role::indices) {
+          read_list(e, i, p, source);
+        } else if (r == Role::vertex1 || r == Role::vertex2) {
+          std::int64_t v = 0;
+          if (!source.integer(p.type, v))
+            throw unreadable(e, i, p);
+        } else if (is_color(r) && colors) {
+          double value = 0;
+          if (!source.real(p.type, value))
+            throw unreadable(e, i, p);
+          set_channel(color, r, channel(value, p.type));
+        } else if (!skip_property(p, source)) {
+          throw unreadable(e, i, p);
+        }
+      }
+      if (faces) {
+        if (add_face(i) && colors)
+          attributes_->face_colors.push_back(color);
+      } else if (strips) {
+        add_strip(i);
+      } else if (edges) {
+        ++info_.dangling_edges;
+      }
+    }
+  }
+
+  //! Binary faces whose only property is `list uchar int|uint vertex_indices`.
+  bool read_faces_fast(const PlyElement& e, const std::vector<Role>& roles, BinarySource& source) {
+    if (roles.size() != 1 || e.properties[0].count_type != PlyScalar::u8 ||
+        (e.properties[0].type != PlyScalar::i32 && e.properties[0].type != PlyScalar::u32)) {
+      return false;
+    }
+    const bool swap = source.swaps();
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      if (source.remaining() < 1)
+        throw unreadable(e, i, e.properties[0]);
+      const unsigned n = *source.position();
+      source.advance(1);
+      if (source.remaining() / 4 < n) {
+        throw ReadError(where() + item(e, i) + " claims " + std::to_string(n) +
+                        " corners, more than the rest of the file holds");
+      }
+      const unsigned char* p = source.position();
+      corners_.resize(n);
+      for (unsigned c = 0; c < n; ++c) {
+        corners_[c] = e.properties[0].type == PlyScalar::i32 ? load<std::int32_t>(p + 4 * c, swap)
+                                                             : load<std::uint32_t>(p + 4 * c, swap);
+      }
+      source.advance(4 * std::size_t(n));
+      add_face(i);
+    }
+    return true;
+  }
+
+  template <class Source>
+  void read_list(const PlyElement& e, std::uint64_t i, const PlyProperty& p, Source& source) {
+    std::int64_t n = 0;
+    if (!source.integer(p.count_type, n))
+      throw unreadable(e, i, p);
+    if (n < 0) {
+      throw ReadError(where() + item(e, i) + " has a negative corner count (" + std::to_string(n) +
+                      ")");
+    }
+    if (!source.can_hold(p.type, static_cast<std::uint64_t>(n))) {
+      throw ReadError(where() + item(e, i) + " claims " + std::to_string(n) +
+                      " corners, more than the rest of the file holds");
+    }
+    corners_.resize(static_cast<std::size_t>(n));
+    for (std::int64_t& c : corners_) {
+      if (!source.integer(p.type, c))
+        throw unreadable(e, i, p);
+    }
+  }
+
+  Index vertex_index(const char* what, std::uint64_t i, std::int64_t c) const {
+    if (c < 0 || c >= std::int64_t(kNoIndex)) {
+      throw ReadError(where() + what + " " + std::to_string(i) + " refers to vertex index " +
+                      std::to_string(c));
+    }
+    return static_cast<Index>(c);
+  }
+
+  //! Appends face record i from corners_ (formats.h: 1 or 2 corners repeat the last one up to a
+  //! triangle; none: counted, not appended). Returns whether a soup face was appended.
+  bool add_face(std::uint64_t i) {
+    if (corners_.empty()) {
+      ++info_.faces_without_corners;
+      return false;
+    }
+    for (std::int64_t c : corners_)
+      soup_.corner_vertices.push_back(vertex_index("face", i, c));
+    for (std::size_t k = corners_.size(); k < 3; ++k)
+      soup_.corner_vertices.push_back(soup_.corner_vertices.back());
+    soup_.face_begin.push_back(static_cast<Index>(soup_.corner_vertices.size()));
+    return true;
+  }
+
+  //! Strip record i from corners_: -1 restarts; triangle k of a run is (a, b, c) for even k and
+  //! (b, a, c) for odd k, so all share the strip's orientation (as MeshLab reads them).
+  //! Degenerate triangles (strips link runs with them) are appended and set aside later.
+  void add_strip(std::uint64_t i) {
+    std::size_t run = 0;
+    Index a = 0, b = 0;
+    for (std::int64_t c : corners_) {
+      if (c == -1) {
+        run = 0;
+        continue;
+      }
+      const Index v = vertex_index("tristrips", i, c);
+      if (run >= 2) {
+        ++info_.declared_faces;
+        const bool even = run % 2 == 0;
+        soup_.add_polygon({even ? a : b, even ? b : a, v});
+      }
+      a = b;
+      b = v;
+      ++run;
+    }
+  }
+
+  const MappedFile& file_;
+  ReadInfo& info_;
+  Soup& soup_;
+  MeshAttributes* attributes_;
+  PlyHeader header_;
+  std::vector<std::int64_t> corners_;
+};
+
+}  // namespace
+
+void read_ply(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
+  PlyReader(file, soup, info, attributes).read();
+}
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The STL reader: binary (decided by size: 84 + 50 n bytes, whatever the header says) and ascii,
+// corners welded by exact position into shared vertices in order of first appearance.
+#include "io/formats.h"
+#include "io/position_weld.h"
+#include "io/text_scanner.h"
+
+#include "meshbridge/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+
+namespace meshbridge::detail {
+
+namespace {
+
+std::uint32_t little_endian_u32(const unsigned char* b) {
+  return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |
+         std::uint32_t(b[3]) << 24;
+}
+
+float little_endian_float(const unsigned char* b) {
+  const std::uint32_t bits = little_endian_u32(b);
+  float value;
+  std::memcpy(&value, &bits, 4);
+  return value;
+}
+
+bool equals_ignoring_case(std::string_view word, std::string_view lower) {
+  if (word.size() != lower.size())
+    return false;
+  for (std::size_t i = 0; i < word.size(); ++i) {
+    const char c = word[i] >= 'A' && word[i] <= 'Z' ? char(word[i] - 'A' + 'a') : word[i];
+    if (c != lower[i])
+      return false;
+  }
+  return true;
+}
+
+void read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup, ReadInfo& info) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(file.data()) + 84;
+  info.declared_faces = triangles;
+  info.declared_vertices = 3 * std::size_t(triangles);
+  const auto corner = [&file, bytes](std::size_t c) {
+    const unsigned char* p = bytes + 50 * (c / 3) + 12 + 12 * (c % 3);  // after the normal
+    const float x = little_endian_float(p), y = little_endian_float(p + 4),
+                z = little_endian_float(p + 8);
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
+      throw InvalidSoupError(file.path() + ": binary STL triangle " + std::to_string(c / 3) +
+                             ", corner " + std::to_string(c % 3) + " has a non-finite coordinate");
+    }
+    return float_key(x, y, z);
+  };
+  weld_triangle_corners(3 * std::size_t(triangles), corner, soup);
+}
+
+void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
+  TextScanner in(file.data(), file.end());
+  std::vector<float> corners;
+  std::size_t triangles = 0;
+  const auto skip_space = [&] {
+    while (!in.at_end()) {
+      if (!in.at_line_end())
+        return;
+      in.next_line();
+    }
+  };
+  while (true) {
+    skip_space();
+    if (in.at_end())
+      break;
+    const std::string_view word = in.word();
+    if (equals_ignoring_case(word, "solid") || equals_ignoring_case(word, "endsolid")) {
+      in.next_line();  // the solid's name may be any words, "outer" included
+      continue;
+    }
+    if (!equals_ignoring_case(word, "outer"))
+      continue;  // facet normal x y z, loop, endloop, endfacet: nothing to keep
+    for (int c = 0; c < 3; ++c) {
+      skip_space();
+      if (c == 0 &&
+          equals_ignoring_case(
+              std::string_view(in.position(), std::min<std::size_t>(4, file.end() - in.position())),
+              "loop")) {
+        in.word();
+        skip_space();
+      }
+      const std::size_t line = in.line();
+      double x = 0, y = 0, z = 0;
+      const bool ok = equals_ignoring_case(in.word(), "vertex") && in.number(x) && in.number(y) &&
+                      in.number(z) && std::isfinite(float(x)) && std::isfinite(float(y)) &&
+                      std::isfinite(float(z));
+      if (!ok) {
+        throw ReadError(file.path() + ": ASCII STL triangle " + std::to_string(triangles) +
+                        ", corner " + std::to_string(c) + " (line " + std::to_string(line) +
+                        ") is not 'vertex x y z' with three finite numbers (32-bit floats)");
+      }
+      // STL coordinates are 32-bit floats (binary STL stores nothing else): ascii ones too.
+      corners.insert(corners.end(), {float(x), float(y), float(z)});
+    }
+    ++triangles;
+  }
+  info.declared_faces = triangles;
+  info.declared_vertices = 3 * triangles;
+  const auto corner = [&corners](std::size_t c) {
+    return float_key(corners[3 * c], corners[3 * c + 1], corners[3 * c + 2]);
+  };
+  weld_triangle_corners(3 * triangles, corner, soup);
+}
+
+}  // namespace
+
+void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes*) {
+  const auto* head = reinterpret_cast<const unsigned char*>(file.data());
+  const std::size_t size = file.size();
+  const std::uint32_t triangles = size >= 84 ? little_endian_u32(head + 80) : 0;
+  if (size >= 84 && 84 + 50 * std::uint64_t(triangles) == size) {
+    read_binary(file, triangles, soup, info);
+    return;
+  }
+  TextScanner probe(file.data(), file.end());
+  probe.skip_space_and_comments();
+  if (!equals_ignoring_case(probe.word(), "solid")) {
+    throw ReadError(file.path() + ": neither ASCII STL (no 'solid') nor binary STL: a binary STL " +
+                    (size >= 84
+                         ? "whose header counts " + std::to_string(triangles) + " triangles has " +
+                               std::to_string(84 + 50 * std::uint64_t(triangles)) + " bytes"
+                         : std::string("has at least 84 bytes")) +
+                    ", this file has " + std::to_string(size));
+  }
+  read_ascii(file, soup, info);
+}
+
+}  // namespace meshbridge::detail

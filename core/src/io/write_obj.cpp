@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// OBJ writer: "v x y z [r g b]" (shortest exact decimals), "f a b c ..." (1-based), and the
+// input's o/g/usemtl groups before the first face of each.
+
+#include "io/formats.h"
+#include "io/text_output.h"
+
+#include <algorithm>
+
+namespace meshbridge::detail {
+
+void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
+               const WriteOptions&) {
+  const Soup& soup = mesh.soup;
+  TextOutput text(out);
+  text.text("# written by MeshBridge\n");
+  const bool colors = attributes != nullptr && !attributes->vertex_colors.empty();
+  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
+    const Point& p = soup.positions[v];
+    text.text("v ").number(p[0]).ch(' ').number(p[1]).ch(' ').number(p[2]);
+    if (colors) {
+      const Rgba c = attributes->vertex_colors[input_vertex(mesh, v)];
+      text.ch(' ').number(c.r / 255.0).ch(' ').number(c.g / 255.0).ch(' ').number(c.b / 255.0);
+    }
+    text.ch('\n');
+  }
+  const std::vector<FaceGroup>* groups = attributes != nullptr && !attributes->face_groups.empty()
+                                             ? &attributes->face_groups
+                                             : nullptr;
+  std::size_t current_group = static_cast<std::size_t>(-1);
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    if (groups != nullptr) {
+      // The last group starting at or before the input face (none before the first group).
+      const Index origin = input_face(mesh, f);
+      const auto after =
+          std::upper_bound(groups->begin(), groups->end(), origin,
+                           [](Index face, const FaceGroup& g) { return face < g.first_face; });
+      if (after != groups->begin()) {
+        // Every group line that starts at the same face applies (e.g. "g a" then "usemtl m").
+        auto first = after - 1;
+        while (first != groups->begin() && (first - 1)->first_face == first->first_face)
+          --first;
+        const std::size_t index = static_cast<std::size_t>(first - groups->begin());
+        if (index != current_group) {
+          for (auto g = first; g != after; ++g)
+            text.text(g->name).ch('\n');
+          current_group = index;
+        }
+      }
+    }
+    text.ch('f');
+    for (Index v : soup.polygon(f))
+      text.ch(' ').number(static_cast<std::uint64_t>(v) + 1);
+    text.ch('\n');
+  }
+  text.flush();
+}
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The STL writer: binary (default) or ascii triangles; polygons are fanned from their first
+// corner, each facet gets its unit normal (0 0 0 for a zero-area one). STL has no shared vertices
+// and only 32-bit floats in binary: a reader welds by position again.
+#include "io/formats.h"
+#include "io/text_output.h"
+
+#include "meshbridge/errors.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace meshbridge::detail {
+
+namespace {
+
+Point unit_normal(const Point& a, const Point& b, const Point& c) {
+  const Point n = (b - a) % (c - a);  // OpenMesh's cross product
+  const double length = n.norm();
+  return length > 0 && std::isfinite(length) ? n / length : Point(0, 0, 0);
+}
+
+std::uint64_t triangle_count(const Soup& soup) {
+  std::uint64_t triangles = 0;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f)
+    triangles += soup.arity(f) >= 3 ? soup.arity(f) - 2 : 0;
+  return triangles;
+}
+
+//! Calls `triangle(a, b, c)` for every triangle of the fans, in face order.
+template <class Triangle>
+void for_each_triangle(const Soup& soup, Triangle triangle) {
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const PolygonView p = soup.polygon(f);
+    for (std::size_t i = 1; i + 1 < p.size(); ++i)
+      triangle(soup.positions[p[0]], soup.positions[p[i]], soup.positions[p[i + 1]]);
+  }
+}
+
+void put_u32(unsigned char* at, std::uint32_t value) {
+  for (int i = 0; i < 4; ++i)
+    at[i] = static_cast<unsigned char>(value >> (8 * i));
+}
+
+void put_float(unsigned char* at, double value) {
+  const float f = static_cast<float>(value);
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, 4);
+  put_u32(at, bits);
+}
+
+}  // namespace
+
+void write_stl(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*,
+               const WriteOptions& options) {
+  const Soup& soup = mesh.soup;
+  const std::uint64_t triangles = triangle_count(soup);
+  if (options.binary) {
+    if (triangles > 0xFFFFFFFFu) {
+      throw WriteError(out.target() + ": " + std::to_string(triangles) +
+                       " triangles do not fit a binary STL (at most 2^32 - 1)");
+    }
+    unsigned char head[84] = {};
+    const char title[] = "MeshBridge binary STL";  // never "solid...": readers would guess ascii
+    std::memset(head, ' ', 80);
+    std::memcpy(head, title, sizeof title - 1);
+    put_u32(head + 80, static_cast<std::uint32_t>(triangles));
+    out.write(head, sizeof head);
+    constexpr std::size_t kPerBlock = 20000;  // 1 MB
+    std::vector<unsigned char> block(50 * kPerBlock);
+    std::size_t used = 0;
+    for_each_triangle(soup, [&](const Point& a, const Point& b, const Point& c) {
+      unsigned char* r = block.data() + 50 * used;
+      const Point n = unit_normal(a, b, c);
+      const Point* values[4] = {&n, &a, &b, &c};
+      for (int k = 0; k < 4; ++k) {
+        for (int i = 0; i < 3; ++i)
+          put_float(r + 12 * k + 4 * i, (*values[k])[i]);
+      }
+      r[48] = r[49] = 0;
+      if (++used == kPerBlock) {
+        out.write(block.data(), 50 * used);
+        used = 0;
+      }
+    });
+    out.write(block.data(), 50 * used);
+    return;
+  }
+  TextOutput text(out);
+  const auto vector = [&](const Point& p) {
+    text.number(p[0]).ch(' ').number(p[1]).ch(' ').number(p[2]).ch('\n');
+  };
+  text.text("solid meshbridge\n");
+  for_each_triangle(soup, [&](const Point& a, const Point& b, const Point& c) {
+    text.text("facet normal ");
+    vector(unit_normal(a, b, c));
+    text.text(" outer loop\n");
+    for (const Point* p : {&a, &b, &c}) {
+      text.text("  vertex ");
+      vector(*p);
+    }
+    text.text(" endloop\nendfacet\n");
+  });
+  text.text("endsolid meshbridge\n");
+  text.flush();
+}
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,155 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The whole-process benchmark (issue 13, DESIGN.md section 9 "whole process, file to file"):
+# every tool reads (and writes) the same file as its own process, side by side in one run:
+#
+#   floor              mmap + one pass (text: every number through std::from_chars)
+#   MeshBridge parse   read_soup alone (meshbridge-io-bench parse)
+#   OpenMesh read      stock OpenMesh::IO::read_mesh into a PolyMesh
+#   meshbridge check   the CLI: read + detect + print
+#   OpenMesh r+w       read_mesh + write_mesh (binary PLY/STL)
+#   meshbridge repair  the CLI: read + repair + write (binary PLY/STL by default)
+#   meshlabserver      MeshLab 2020.09 load + save (under xvfb-run; only meshlabserver is timed)
+#
+# on a 3D checkerboard of 1.05M triangles, a clean torus of 1.05M and the 5M checkerboard, each
+# as .obj .off .ply .stl. Every row runs ROUNDS times (default 2) interleaved with the others;
+# the table keeps the best wall time, the best CPU time (user + sys) and the largest peak RSS.
+# meshbridge check/repair also run pinned to one core (taskset -c 0): the 1-core figures.
+# Ratios are to OpenMesh read (check, parse) and OpenMesh read + write (repair, meshlabserver).
+# Also prints the in-process split (meshbridge-io-bench split: parse vs floor, detect, repair,
+# write; best of 3).
+#
+# Usage: scripts/bench_io.sh BUILD_DIR OUT.md [--quick]   (BUILD_DIR has cli/meshbridge and
+#        bench/meshbridge-io-bench; --quick: 1M files only, PLY and STL, one round)
+# Environment: ROUNDS, DATA_DIR (default /tmp/meshbridge_bench_io), FORMATS, MODELS.
+set -euo pipefail
+
+build="${1:?usage: scripts/bench_io.sh BUILD_DIR OUT.md [--quick]}"
+out="${2:?usage: scripts/bench_io.sh BUILD_DIR OUT.md [--quick]}"
+quick="${3:-}"
+meshbridge="$build/cli/meshbridge"
+iobench="$build/bench/meshbridge-io-bench"
+data="${DATA_DIR:-/tmp/meshbridge_bench_io}"
+rounds="${ROUNDS:-2}"
+formats="${FORMATS:-obj off ply stl}"
+models="${MODELS:-checkerboard_1m torus_1m checkerboard_5m}"
+if [ "$quick" = "--quick" ]; then
+  rounds=1
+  formats="ply stl"
+  models="checkerboard_1m torus_1m"
+fi
+for tool in "$meshbridge" "$iobench" /usr/bin/time; do
+  [ -x "$tool" ] || { echo "bench_io: missing $tool" >&2; exit 1; }
+done
+have_meshlab=0
+if command -v meshlabserver >/dev/null && command -v xvfb-run >/dev/null; then
+  have_meshlab=1
+fi
+mkdir -p "$data"
+if [ ! -f "$data/checkerboard_5m.stl" ]; then
+  echo "bench_io: writing the benchmark files to $data" >&2
+  "$iobench" make "$data" >&2
+fi
+tmp="$(mktemp -d /tmp/meshbridge_bench_io_run.XXXXXX)"
+trap 'rm -rf "$tmp"' EXIT
+
+# run NAME CMD...: appends "NAME wall cpu rss_kb" to $tmp/raw (a failed run is recorded as such).
+run() {
+  local name="$1"
+  shift
+  local status=0
+  /usr/bin/time -o "$tmp/time" -f "%e %U %S %M" "$@" >/dev/null 2>"$tmp/err" || status=$?
+  # Exit 1 of `meshbridge check` means "defects found", a successful run.
+  if [ "$status" -le 1 ] && [ -s "$tmp/time" ]; then
+    read -r wall user sys rss < <(tail -n 1 "$tmp/time")
+    echo "$name $wall $(awk -v u="$user" -v s="$sys" 'BEGIN { print u + s }') $rss" >>"$tmp/raw"
+  else
+    echo "$name failed" >>"$tmp/raw"
+    echo "bench_io: $name failed: $(tail -n 2 "$tmp/err" | tr '\n' ' ')" >&2
+  fi
+}
+# The X server is started outside the timing: only meshlabserver is measured.
+run_meshlab() {
+  local name="$1" in="$2" target="$3"
+  xvfb-run -a /usr/bin/time -o "$tmp/time" -f "%e %U %S %M" meshlabserver -i "$in" -o "$target" \
+    >"$tmp/err" 2>&1 || { echo "$name failed" >>"$tmp/raw"; return; }
+  read -r wall user sys rss < <(tail -n 1 "$tmp/time")
+  echo "$name $wall $(awk -v u="$user" -v s="$sys" 'BEGIN { print u + s }') $rss" >>"$tmp/raw"
+}
+
+: >"$tmp/raw"
+: >"$tmp/split"
+for model in $models; do
+  for fmt in $formats; do
+    f="$data/$model.$fmt"
+    [ -f "$f" ] || continue
+    echo "bench_io: $model.$fmt" >&2
+    for ((r = 0; r < rounds; ++r)); do
+      run "$model.$fmt floor" "$iobench" floor "$f"
+      run "$model.$fmt parse" "$iobench" parse "$f"
+      run "$model.$fmt openmesh_read" "$iobench" openmesh-read "$f"
+      run "$model.$fmt check" "$meshbridge" check "$f"
+      run "$model.$fmt check_1core" taskset -c 0 "$meshbridge" check "$f"
+      run "$model.$fmt openmesh_rw" "$iobench" openmesh-readwrite "$f" "$tmp/om.$fmt"
+      run "$model.$fmt repair" "$meshbridge" repair "$f" "$tmp/mb.$fmt"
+      run "$model.$fmt repair_1core" taskset -c 0 "$meshbridge" repair "$f" "$tmp/mb.$fmt"
+      if [ "$have_meshlab" = 1 ] && [ "$model" != checkerboard_5m ]; then
+        run_meshlab "$model.$fmt meshlab" "$f" "$tmp/ml.$fmt"
+      fi
+      rm -f "$tmp/om.$fmt" "$tmp/mb.$fmt" "$tmp/ml.$fmt"
+    done
+    "$iobench" split "$f" 3 >>"$tmp/split" 2>&1 || echo "split $f failed" >>"$tmp/split"
+  done
+done
+
+load="$(cut -d' ' -f1-3 /proc/loadavg)"
+{
+  echo "## Whole process, file to file ($(date -u '+%Y-%m-%d %H:%M UTC'))"
+  echo
+  echo "Machine: nproc $(nproc), $(awk '/MemTotal/ {printf "%.1f GiB", $2 / 1048576}' /proc/meminfo);" \
+    "load average at the end $load (other jobs share the machine: compare the ratios, which are" \
+    "measured side by side, not the absolute times). Each row: best of $rounds interleaved" \
+    "runs; CPU = user + sys; peak = largest resident set. *1 core* = pinned with taskset -c 0." \
+    "meshlabserver: MeshLab 2020.09 under xvfb-run (X start not timed; not run on 5M)."
+  echo
+  echo "| file | step | wall s | CPU s | peak MiB | wall / OpenMesh | CPU / OpenMesh | peak / OpenMesh |"
+  echo "|---|---|---:|---:|---:|---:|---:|---:|"
+  awk '
+    $3 != "failed" {
+      key = $1 " " $2
+      if (!(key in wall) || $3 < wall[key]) wall[key] = $3
+      if (!(key in cpu) || $4 < cpu[key]) cpu[key] = $4
+      if (!(key in rss) || $5 > rss[key]) rss[key] = $5
+      if (!(key in seen)) { seen[key] = 1; order[++n] = key }
+    }
+    END {
+      split("floor parse openmesh_read check check_1core openmesh_rw repair repair_1core meshlab", steps, " ")
+      names["floor"] = "mmap + from_chars floor"; names["parse"] = "MeshBridge parse (read_soup)"
+      names["openmesh_read"] = "OpenMesh read_mesh"; names["check"] = "meshbridge check"
+      names["check_1core"] = "meshbridge check, 1 core"; names["openmesh_rw"] = "OpenMesh read + write"
+      names["repair"] = "meshbridge repair IN OUT"; names["repair_1core"] = "meshbridge repair, 1 core"
+      names["meshlab"] = "meshlabserver load + save"
+      base["floor"] = "openmesh_read"; base["parse"] = "openmesh_read"; base["openmesh_read"] = "openmesh_read"
+      base["check"] = "openmesh_read"; base["check_1core"] = "openmesh_read"
+      base["openmesh_rw"] = "openmesh_rw"; base["repair"] = "openmesh_rw"
+      base["repair_1core"] = "openmesh_rw"; base["meshlab"] = "openmesh_rw"
+      for (i = 1; i <= n; ++i) { split(order[i], kf, " "); if (!(kf[1] in files)) { files[kf[1]] = 1; forder[++nf] = kf[1] } }
+      for (j = 1; j <= nf; ++j) {
+        f = forder[j]
+        for (s = 1; s <= 9; ++s) {
+          st = steps[s]; key = f " " st; b = f " " base[st]
+          if (!(key in wall)) continue
+          rw = (b in wall) && wall[b] > 0 ? sprintf("%.2f", wall[key] / wall[b]) : "-"
+          rc = (b in cpu) && cpu[b] > 0 ? sprintf("%.2f", cpu[key] / cpu[b]) : "-"
+          rm = (b in rss) && rss[b] > 0 ? sprintf("%.2f", rss[key] / rss[b]) : "-"
+          printf "| %s | %s | %.2f | %.2f | %.0f | %s | %s | %s |\n", f, names[st], wall[key], cpu[key], rss[key] / 1024, rw, rc, rm
+        }
+      }
+    }' "$tmp/raw"
+  echo
+  echo "In one process, best of 3 (meshbridge-io-bench split): parse next to its floor, and the"
+  echo "parse / compute / write split of \`repair\` (detect is the report \`check\` prints)."
+  echo
+  sed 's/^/    /' "$tmp/split"
+} >"$out"
+cat "$out"
