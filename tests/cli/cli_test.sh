@@ -507,12 +507,13 @@ messages)
     full_run() {  # full_run COMMAND...: runs COMMAND with an 8 KiB tmpfs mounted on $work/full
       unshare -rm sh -c 'mount -t tmpfs -o size=8k tmpfs "$0" && exec "$@"' "$work/full" "$@"
     }
-    expect_exit 2 full_run "$mb" repair "$models/prisms24.obj" "$work/full/a.obj"
+    expect_exit 2 full_run sh -c 'head -c 6000 /dev/zero >"$0/fill" 2>/dev/null; exec "$@"' \
+      "$work/full" "$mb" repair "$models/prisms24.obj" "$work/full/a.obj"
     expect_in "$work/err" "$work/full/a.obj"
     expect_in "$work/err" "No space left on device"
     expect_exit 2 full_run sh -c 'head -c 9000 /dev/zero >"$0/fill" 2>/dev/null; exec "$@"' \
       "$work/full" "$mb" repair "$models/prisms24.obj" "$work/b.obj" --report "$work/full/r.json"
-    expect_in "$work/err" "$work/full/r.json: cannot write the report (No space left on device)"
+    expect_in "$work/err" "$work/full/r.json: write failed (No space left on device)"
     expect_exit 2 full_run sh -c 'head -c 9000 /dev/zero >"$0/fill" 2>/dev/null; exec "$@"' \
       "$work/full" "$mb" snapshot "$models/prisms24.obj" "$work/full/a.png"
     expect_in "$work/err" "$work/full/a.png: cannot write the PNG (No space left on device)"
