@@ -1,0 +1,219 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""MeshBridge: load, check and repair non-manifold polygon meshes without losing a face.
+
+The same C++ core as the ``meshbridge`` command line and the MeshLab plugin, on numpy arrays.
+
+Arrays
+------
+vertices
+    ``(n, 3)`` array of coordinates, float64 or float32 (read in place, any strides; other
+    real dtypes and nested lists are converted once).
+faces
+    ``(m, k)`` integer array (any integer dtype, k >= 3: triangles, quads, ...), or a sequence
+    of index sequences for polygons of mixed arity. Indices are 0-based vertex rows.
+
+Results come back as numpy arrays that own the repaired mesh (no copy): vertices ``(n', 3)``
+float64; faces ``(m', k)`` int32 when every polygon has k corners, else a list of lists of
+ints; provenance ``vertex_origin (n',)``, ``face_origin (m',)``, ``corner_origin (c',)``
+int32, the input row each output element came from (-1: none). Index arrays are int64 instead
+for meshes of 2^31 vertices or more.
+
+Reports are dicts of the same JSON the command line writes (``meshbridge check --json``,
+``meshbridge repair --report``): counts by default, element lists with ``elements=True``.
+
+Errors: :class:`InvalidMeshError` (a ``ValueError``) names the face, corner or vertex at fault;
+:class:`ReadError` and :class:`WriteError` (``OSError``) name the file.
+
+The GIL is released while a file is read or written and while a mesh is checked or repaired,
+so threads run those in parallel (file reading and writing take turns within one process).
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _core
+from ._core import Error, InvalidMeshError, ReadError, Soup, WriteError
+
+__all__ = [
+    "Error",
+    "InvalidMeshError",
+    "ReadError",
+    "RepairResult",
+    "Soup",
+    "WriteError",
+    "check",
+    "read",
+    "repair",
+    "write",
+    "REPAIR_OPTIONS",
+]
+
+__version__ = "0.1.0"
+
+#: The options of :func:`repair` with their defaults (those of ``meshbridge repair``).
+REPAIR_OPTIONS: Dict[str, Any] = {
+    "pairing": "geometric",
+    "orient": True,
+    "cut_nonorientable": False,
+    "stitch": True,
+    "remove_duplicate_faces": False,
+    "remove_degenerate_faces": False,
+    "remove_isolated_vertices": False,
+    "detect_before_after": True,
+}
+
+Faces = Union[np.ndarray, Sequence[Sequence[int]]]
+
+
+class RepairResult(tuple):
+    """``(vertices, faces, report)`` of :func:`repair`, with the provenance as attributes.
+
+    Unpacks as a 3-tuple: ``vertices, faces, report = meshbridge.repair(v, f)``.
+
+    Attributes
+    ----------
+    vertices : ndarray, (n', 3) float64
+    faces : ndarray (m', k) int32, or list of lists of int for mixed arities
+    report : dict, the repair report (schema of ``meshbridge repair --report``)
+    vertex_origin : ndarray, (n',) int32, input vertex of each output vertex
+    face_origin : ndarray, (m',) int32, input face of each output face (order preserved)
+    corner_origin : ndarray, (c',) int32, input corner (position in the input's flattened
+        faces) of each output corner, in output order
+    """
+
+    vertex_origin: np.ndarray
+    face_origin: np.ndarray
+    corner_origin: np.ndarray
+
+    def __new__(cls, vertices, faces, report, vertex_origin, face_origin, corner_origin):
+        self = super().__new__(cls, (vertices, faces, report))
+        self.vertex_origin = vertex_origin
+        self.face_origin = face_origin
+        self.corner_origin = corner_origin
+        return self
+
+    @property
+    def vertices(self) -> np.ndarray:
+        return self[0]
+
+    @property
+    def faces(self) -> Faces:
+        return self[1]
+
+    @property
+    def report(self) -> Dict[str, Any]:
+        return self[2]
+
+
+def _soup(vertices: Union[Soup, np.ndarray, Sequence], faces: Optional[Faces]) -> Soup:
+    if isinstance(vertices, Soup):
+        if faces is not None:
+            raise TypeError("pass either a Soup or vertices and faces, not a Soup and faces")
+        return vertices
+    if isinstance(vertices, RepairResult):
+        if faces is not None:
+            raise TypeError("pass either a RepairResult or vertices and faces, not both")
+        return Soup(vertices[0], vertices[1])
+    if faces is None:
+        raise TypeError("faces are missing: pass vertices and faces, or a Soup")
+    return Soup(vertices, faces)
+
+
+def read(path: Union[str, "os.PathLike[str]"]) -> Soup:
+    """Reads a mesh file (OBJ, OFF, PLY, STL) as a soup: every vertex and polygon as the file has
+    them, nothing refused or merged (STL is welded by exact position).
+
+    Returns a :class:`Soup` with ``vertices`` (n, 3) float64, ``faces`` ((m, k) int32 or a list
+    of lists), ``corner_vertices``/``face_begin`` (the polygons as flat arrays), ``path`` and
+    ``read_info`` (what the file declared). Its arrays are read-only views.
+
+    Raises :class:`ReadError` (missing, unreadable, empty, malformed file) or
+    :class:`InvalidMeshError` (an index out of range, a non-finite coordinate), naming the file.
+    """
+    return _core.read(_path(path))
+
+
+def write(path: Union[str, "os.PathLike[str]"], mesh: Any, faces: Optional[Faces] = None) -> None:
+    """Writes a manifold mesh to OBJ, OFF, PLY or STL (chosen by the extension).
+
+    ``mesh`` is a :class:`Soup`, a :class:`RepairResult`, or vertices with ``faces``. The file is
+    written under a temporary name and renamed, so on error the previous file is untouched.
+    STL gets triangles and cannot keep split vertices (every reader welds them again).
+
+    Raises :class:`WriteError` naming the file (also for non-manifold input: repair first).
+    """
+    _core.write(_path(path), _soup(mesh, faces))
+
+
+def check(
+    vertices: Union[Soup, np.ndarray, Sequence],
+    faces: Optional[Faces] = None,
+    *,
+    elements: bool = False,
+) -> Dict[str, Any]:
+    """Detects every defect without changing anything.
+
+    ``vertices`` (n, 3) and ``faces`` (m, k) or polygons, or a :class:`Soup` alone. Returns the
+    report of ``meshbridge check --json`` as a dict: counts (singular edges and vertices,
+    boundary edges and loops, components, ...) and, with ``elements=True``, the element lists.
+
+    Raises :class:`InvalidMeshError` naming the offending face, corner or vertex.
+    """
+    return json.loads(_core.check(_soup(vertices, faces), elements))
+
+
+def repair(
+    vertices: Union[Soup, np.ndarray, Sequence],
+    faces: Optional[Faces] = None,
+    *,
+    elements: bool = False,
+    **options: Any,
+) -> RepairResult:
+    """Lossless manifold repair: every face kept, every output edge manifold.
+
+    ``vertices`` (n, 3) and ``faces`` (m, k) or polygons, or a :class:`Soup` alone.
+    Options (defaults as ``meshbridge repair``; see ``REPAIR_OPTIONS``): ``pairing``
+    ('geometric' or 'combinatorial'), ``orient``, ``cut_nonorientable``, ``stitch``,
+    ``remove_duplicate_faces``, ``remove_degenerate_faces``, ``remove_isolated_vertices``,
+    ``detect_before_after`` (False skips the before/after detection: faster, fewer counts).
+
+    Returns a :class:`RepairResult`: ``(vertices (n', 3) float64, faces (m', k) int32 or
+    polygons, report dict)`` with ``vertex_origin (n',)``, ``face_origin (m',)`` and
+    ``corner_origin`` as attributes.
+
+    Raises :class:`InvalidMeshError` naming the offending face, corner or vertex, and
+    ``TypeError`` for an unknown option.
+    """
+    soup = _soup(vertices, faces)
+    native = _repair_options(options)
+    v, f, report, vertex_origin, face_origin, corner_origin = _core.repair(soup, native, elements)
+    return RepairResult(v, f, json.loads(report), vertex_origin, face_origin, corner_origin)
+
+
+def _repair_options(options: Dict[str, Any]) -> "_core.RepairOptions":
+    native = _core.RepairOptions()
+    for name, value in options.items():
+        if name not in REPAIR_OPTIONS:
+            raise TypeError(
+                f"repair() got an unknown option {name!r}; options are: "
+                + ", ".join(REPAIR_OPTIONS)
+            )
+        if name == "pairing":
+            if isinstance(value, str) and value.lower() in ("geometric", "combinatorial"):
+                value = getattr(_core.PairingPolicy, value.lower())
+            elif not isinstance(value, _core.PairingPolicy):
+                raise ValueError(f"pairing must be 'geometric' or 'combinatorial', got {value!r}")
+        elif not isinstance(value, (bool, np.bool_)):
+            raise TypeError(f"repair() option {name} must be True or False, got {value!r}")
+        setattr(native, name, value if name == "pairing" else bool(value))
+    return native
+
+
+def _path(path: Any) -> str:
+    import os
+
+    return os.fsdecode(os.fspath(path))

@@ -1,0 +1,77 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Type stubs of the compiled module meshbridge._core (use the meshbridge package's functions)."""
+
+from typing import Any, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+_Faces = Union[npt.NDArray[np.int32], List[List[int]]]
+
+class Error(Exception): ...
+class InvalidMeshError(Error, ValueError): ...
+class ReadError(Error, OSError): ...
+class WriteError(Error, OSError): ...
+
+class PairingPolicy:
+    geometric: PairingPolicy
+    combinatorial: PairingPolicy
+    name: str
+    value: int
+    def __init__(self, value: int) -> None: ...
+
+class RepairOptions:
+    pairing: PairingPolicy
+    orient: bool
+    cut_nonorientable: bool
+    stitch: bool
+    remove_duplicate_faces: bool
+    remove_degenerate_faces: bool
+    remove_isolated_vertices: bool
+    detect_before_after: bool
+    def __init__(self) -> None: ...
+
+class Soup:
+    """Positions and polygons exactly as given or read; arrays are read-only views."""
+
+    def __init__(
+        self,
+        vertices: Union[npt.ArrayLike, Sequence[Sequence[float]]],
+        faces: Union[npt.ArrayLike, Sequence[Sequence[int]]],
+    ) -> None: ...
+    @property
+    def vertices(self) -> npt.NDArray[np.float64]:
+        """(n, 3) float64, read-only."""
+    @property
+    def faces(self) -> _Faces:
+        """(m, k) int32 when every polygon has k corners, else a list of m lists of int."""
+    @property
+    def corner_vertices(self) -> npt.NDArray[np.int32]:
+        """(c,) int32: the polygons' vertex indices back to back."""
+    @property
+    def face_begin(self) -> npt.NDArray[np.int32]:
+        """(m + 1,) int32: polygon f is corner_vertices[face_begin[f]:face_begin[f + 1]]."""
+    @property
+    def num_vertices(self) -> int: ...
+    @property
+    def num_faces(self) -> int: ...
+    @property
+    def path(self) -> Optional[str]:
+        """The file it was read from, None when built from arrays."""
+    @property
+    def read_info(self) -> Optional[dict[str, Any]]:
+        """What the file declared next to what was read; None when built from arrays."""
+
+def read(path: str) -> Soup: ...
+def write(path: str, soup: Soup) -> None: ...
+def check(soup: Soup, elements: bool = False) -> str: ...
+def repair(
+    soup: Soup, options: RepairOptions, elements: bool = False
+) -> Tuple[
+    npt.NDArray[np.float64],
+    _Faces,
+    str,
+    npt.NDArray[np.int32],
+    npt.NDArray[np.int32],
+    npt.NDArray[np.int32],
+]: ...

@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//! \file module.cpp
+//! `meshbridge._core`: the compiled half of the Python package. The public, documented API is the
+//! pure-Python layer in python/meshbridge/__init__.py; this module is its thin adapter to the
+//! core. Every call that reads, repairs, checks or writes releases the GIL.
+
+#include "numpy_soup.h"
+#include "py_results.h"
+
+#include "meshbridge/detect_defects.h"
+#include "meshbridge/errors.h"
+#include "meshbridge/io.h"
+#include "meshbridge/repair.h"
+#include "meshbridge/validate.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <mutex>
+#include <string>
+
+namespace py = pybind11;
+using namespace meshbridge;
+using namespace meshbridge::python;
+
+namespace {
+
+//! A soup read from a file or built from arrays, with what its file declared.
+struct PySoup {
+  Soup soup;
+  std::string path;  //!< the file it was read from; empty when built from arrays
+  ReadInfo info;
+};
+
+//! OpenMesh's readers and writers keep state in process-wide singletons: one file at a time.
+std::mutex& io_lock() {
+  static std::mutex lock;
+  return lock;
+}
+
+PyObject* new_exception(py::module_& m, const char* name, py::handle base1, py::handle base2,
+                        const char* doc) {
+  const std::string qualified = std::string("meshbridge.") + name;
+  py::tuple bases = py::make_tuple(base1, base2);
+  PyObject* type = PyErr_NewExceptionWithDoc(qualified.c_str(), doc, bases.ptr(), nullptr);
+  if (type == nullptr)
+    throw py::error_already_set();
+  m.add_object(name, py::handle(type));
+  return type;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "Compiled core of meshbridge (use the functions of the meshbridge package).";
+
+  // Exceptions: every message names the offending file, face, corner or vertex.
+  PyObject* base = PyErr_NewExceptionWithDoc(
+      "meshbridge.Error", "Base class of MeshBridge's errors.", PyExc_Exception, nullptr);
+  m.add_object("Error", py::handle(base));
+  static PyObject* invalid =
+      new_exception(m, "InvalidMeshError", base, PyExc_ValueError,
+                    "Vertices or faces that violate a precondition: a wrong shape or dtype, an "
+                    "index out of range or negative, a polygon with fewer than 3 corners, a "
+                    "non-finite coordinate. The message names the face, corner or vertex.");
+  static PyObject* read_error = new_exception(
+      m, "ReadError", base, PyExc_OSError,
+      "A mesh file that cannot be read: missing, unreadable, empty, unknown format, malformed.");
+  static PyObject* write_error =
+      new_exception(m, "WriteError", base, PyExc_OSError,
+                    "A mesh file that cannot be written; the previous file is left untouched.");
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p)
+        std::rethrow_exception(p);
+    } catch (const InvalidSoupError& e) {
+      PyErr_SetString(invalid, e.what());
+    } catch (const ReadError& e) {
+      PyErr_SetString(read_error, e.what());
+    } catch (const WriteError& e) {
+      PyErr_SetString(write_error, e.what());
+    }
+  });
+
+  py::enum_<PairingPolicy>(m, "PairingPolicy")
+      .value("geometric", PairingPolicy::geometric)
+      .value("combinatorial", PairingPolicy::combinatorial);
+
+  py::class_<RepairOptions>(m, "RepairOptions")
+      .def(py::init<>())
+      .def_readwrite("pairing", &RepairOptions::pairing)
+      .def_readwrite("orient", &RepairOptions::orient)
+      .def_readwrite("cut_nonorientable", &RepairOptions::cut_nonorientable)
+      .def_readwrite("stitch", &RepairOptions::stitch)
+      .def_readwrite("remove_duplicate_faces", &RepairOptions::remove_duplicate_faces)
+      .def_readwrite("remove_degenerate_faces", &RepairOptions::remove_degenerate_faces)
+      .def_readwrite("remove_isolated_vertices", &RepairOptions::remove_isolated_vertices)
+      .def_readwrite("detect_before_after", &RepairOptions::detect_before_after);
+
+  py::class_<PySoup, std::shared_ptr<PySoup>>(m, "Soup")
+      .def(py::init([](py::handle vertices, py::handle faces) {
+             auto soup = std::make_shared<PySoup>();
+             soup->soup = soup_from_python(vertices, faces);
+             return soup;
+           }),
+           py::arg("vertices"), py::arg("faces"))
+      .def_property_readonly("vertices",
+                             [](py::object self) {
+                               return positions_array(self.cast<PySoup&>().soup.positions, self,
+                                                      false);
+                             })
+      .def_property_readonly(
+          "faces",
+          [](py::object self) { return faces_object(self.cast<PySoup&>().soup, self, false); })
+      .def_property_readonly("corner_vertices",
+                             [](py::object self) {
+                               const Soup& s = self.cast<PySoup&>().soup;
+                               return index_array(s.corner_vertices, s.num_vertices(), self, false);
+                             })
+      .def_property_readonly("face_begin",
+                             [](py::object self) {
+                               const Soup& s = self.cast<PySoup&>().soup;
+                               return index_array(s.face_begin, s.num_corners() + 1, self, false);
+                             })
+      .def_property_readonly("num_vertices", [](const PySoup& s) { return s.soup.num_vertices(); })
+      .def_property_readonly("num_faces", [](const PySoup& s) { return s.soup.num_faces(); })
+      .def_property_readonly("path",
+                             [](const PySoup& s) -> py::object {
+                               return s.path.empty() ? py::object(py::none())
+                                                     : py::object(py::str(s.path));
+                             })
+      .def_property_readonly("read_info", [](const PySoup& s) -> py::object {
+        if (s.path.empty())
+          return py::none();
+        py::dict info;
+        info["declared_vertices"] = s.info.declared_vertices;
+        info["declared_faces"] = s.info.declared_faces;
+        info["faces_dropped_by_reader"] = s.info.faces_dropped_by_reader;
+        return std::move(info);
+      });
+
+  m.def(
+      "read",
+      [](const std::string& path) {
+        auto soup = std::make_shared<PySoup>();
+        {
+          py::gil_scoped_release release;
+          const std::lock_guard<std::mutex> lock(io_lock());
+          soup->soup = read_soup(path, &soup->info);
+          soup->path = path;
+        }
+        return soup;
+      },
+      py::arg("path"));
+
+  m.def(
+      "write",
+      [](const std::string& path, const PySoup& soup) {
+        py::gil_scoped_release release;
+        IndexedMesh mesh;
+        mesh.soup = soup.soup;
+        const std::lock_guard<std::mutex> lock(io_lock());
+        write_mesh(path, mesh);
+      },
+      py::arg("path"), py::arg("soup"));
+
+  m.def(
+      "check",
+      [](const PySoup& soup, bool elements) {
+        py::gil_scoped_release release;
+        validate_soup(soup.soup);
+        return check_json(soup.path, detect_defects(soup.soup),
+                          soup.path.empty() ? nullptr : &soup.info, elements);
+      },
+      py::arg("soup"), py::arg("elements") = false);
+
+  m.def(
+      "repair",
+      [](const PySoup& soup, const RepairOptions& options, bool elements) {
+        std::unique_ptr<RepairResult> result;
+        std::string json;
+        {
+          py::gil_scoped_release release;
+          result = std::make_unique<RepairResult>(repair(soup.soup, options));
+          json = repair_json(soup.path, result->report, soup.path.empty() ? nullptr : &soup.info,
+                             elements);
+        }
+        return repair_result_tuple(std::move(result), soup.soup, std::move(json));
+      },
+      py::arg("soup"), py::arg("options"), py::arg("elements") = false);
+}

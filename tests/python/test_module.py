@@ -1,0 +1,263 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""meshbridge on numpy arrays: read/write/check/repair, dtypes, provenance, errors, the GIL."""
+
+import os
+import sys
+import threading
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import meshbridge
+import mesh_models
+
+MODELS = Path(os.environ.get("MESHBRIDGE_SOURCE_DIR", Path(__file__).parents[2])) / "resources" / "models"
+
+
+def manifold_edges(faces):
+    """Every undirected edge of `faces` (list of polygons) -> number of sides on it."""
+    counts = {}
+    for polygon in faces:
+        polygon = [int(v) for v in polygon]
+        for a, b in zip(polygon, polygon[1:] + polygon[:1]):
+            key = (min(a, b), max(a, b))
+            counts[key] = counts.get(key, 0) + 1
+    return counts
+
+
+def assert_repair_invariants(result, faces_in):
+    """Every face kept, every edge on at most 2 sides, no singular element left."""
+    assert len(result.faces) == faces_in
+    assert max(manifold_edges(result.faces).values()) <= 2
+    after = meshbridge.check(result.vertices, result.faces)
+    assert after["singular_edge_count"] == 0
+    assert after["singular_vertex_count"] == 0
+    assert len(result.face_origin) == len(result.faces)
+    assert len(result.vertex_origin) == len(result.vertices)
+
+
+# (model, vertices in, faces in, vertices out, components after, boundary edges after)
+CANONICAL = [
+    ("twocubes", 14, 24, 16, 2, 0),
+    ("hourglass", 7, 8, 8, 2, 0),
+    ("bowtie", 5, 2, 6, 2, 6),
+    ("book_of_three", 5, 3, 7, 2, 7),
+    ("plate_box_rib", 36, 72, 40, 2, 0),
+    ("prisms24", 38, 120, 144, 24, 0),
+]
+
+
+@pytest.mark.parametrize("name,v_in,f_in,v_out,components,boundary", CANONICAL)
+def test_repair_canonical_models_exact_counts(name, v_in, f_in, v_out, components, boundary):
+    soup = meshbridge.read(MODELS / f"{name}.obj")
+    assert (soup.num_vertices, soup.num_faces) == (v_in, f_in)
+    result = meshbridge.repair(soup)
+    report = result.report
+    assert (report["vertices_in"], report["faces_in"]) == (v_in, f_in)
+    assert (report["vertices_out"], report["faces_out"]) == (v_out, f_in)
+    assert report["components_after"] == components
+    assert report["boundary_edges_after"] == boundary
+    assert len(result.vertices) == v_out
+    assert_repair_invariants(result, f_in)
+
+
+def test_two_cubes_provenance_splits_exactly_the_shared_edge():
+    vertices, faces = mesh_models.two_cubes_sharing_an_edge()
+    report = meshbridge.check(vertices, faces)
+    assert report["singular_edge_count"] == 1 and report["singular_vertex_count"] == 2
+    result = meshbridge.repair(vertices, faces)
+    out_v, out_f, rep = result  # unpacks as a 3-tuple
+    assert out_v.shape == (16, 3) and out_v.dtype == np.float64
+    assert out_f.shape == (24, 3) and out_f.dtype == np.int32
+    assert rep["faces_out"] == 24 and rep["components_after"] == 2
+    # Order preserved: face i of the output is face i of the input.
+    np.testing.assert_array_equal(result.face_origin, np.arange(24))
+    # 14 originals + one copy of each of the two shared vertices.
+    assert result.vertex_origin.shape == (16,)
+    np.testing.assert_array_equal(np.sort(result.vertex_origin[14:]), np.sort(
+        np.array(sorted({int(a) for a in np.flatnonzero(np.bincount(faces[:12].ravel(), minlength=14) * np.bincount(faces[12:].ravel(), minlength=14))}))))
+    # Every output vertex sits where its origin was, and every output face is its origin face
+    # up to the vertex copies (and a flip, which repair counts).
+    np.testing.assert_array_equal(out_v, vertices[result.vertex_origin])
+    mapped = result.vertex_origin[out_f]
+    for f in range(24):
+        assert sorted(mapped[f]) == sorted(faces[f])
+    assert result.corner_origin.shape == (72,)
+
+
+@pytest.mark.parametrize("vdtype", [np.float64, np.float32, np.int32])
+@pytest.mark.parametrize("fdtype", [np.int32, np.int64, np.uint32, np.uint64, np.int16])
+def test_dtypes_give_identical_results(vdtype, fdtype):
+    vertices, faces = mesh_models.two_cubes_sharing_an_edge()
+    reference = meshbridge.repair(vertices, faces)
+    result = meshbridge.repair(vertices.astype(vdtype), faces.astype(fdtype))
+    np.testing.assert_array_equal(result.vertices, reference.vertices)
+    np.testing.assert_array_equal(result.faces, reference.faces)
+    assert result.report == reference.report
+
+
+def test_strided_and_fortran_arrays_are_read_in_place():
+    vertices, faces = mesh_models.two_cubes_sharing_an_edge()
+    reference = meshbridge.repair(vertices, faces)
+    wide = np.zeros((14, 6))
+    wide[:, ::2] = vertices  # non-contiguous rows
+    fortran = np.asfortranarray(faces.astype(np.int32))
+    result = meshbridge.repair(wide[:, ::2], fortran)
+    np.testing.assert_array_equal(result.faces, reference.faces)
+    np.testing.assert_array_equal(result.vertices, reference.vertices)
+    lists = meshbridge.repair(vertices.tolist(), faces.tolist())
+    np.testing.assert_array_equal(lists.faces, reference.faces)
+
+
+def test_polygons_of_mixed_arity():
+    # A cube of 6 quads with one quad split into two triangles: 7 faces, 8 vertices.
+    v = mesh_models.CUBE_CORNERS
+    polygons = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7], [1, 7, 5]]
+    report = meshbridge.check(v, polygons)
+    assert report["faces"] == 7 and report["watertight"] is True
+    result = meshbridge.repair(v, polygons)
+    assert isinstance(result.faces, list)
+    assert [len(p) for p in result.faces] == [4, 4, 4, 4, 4, 3, 3]
+    quads = meshbridge.repair(v, np.array(polygons[:5], dtype=np.int64))
+    assert quads.faces.shape == (5, 4)
+    soup = meshbridge.Soup(v, polygons)
+    np.testing.assert_array_equal(soup.face_begin, [0, 4, 8, 12, 16, 20, 23, 26])
+    assert soup.corner_vertices.shape == (26,)
+
+
+def test_read_write_round_trip(tmp_path):
+    soup = meshbridge.read(MODELS / "twocubes.obj")
+    assert soup.path.endswith("twocubes.obj")
+    assert soup.read_info["declared_faces"] == 24
+    assert soup.vertices.flags.writeable is False
+    result = meshbridge.repair(soup)
+    for ext in ("obj", "off", "ply"):
+        out = tmp_path / f"out.{ext}"
+        meshbridge.write(out, result)
+        back = meshbridge.read(out)
+        assert (back.num_vertices, back.num_faces) == (16, 24)
+        assert meshbridge.check(back)["watertight"] is True
+    meshbridge.write(str(tmp_path / "plain.off"), result.vertices, result.faces)
+    assert meshbridge.read(tmp_path / "plain.off").num_faces == 24
+
+
+def test_report_lists_on_request():
+    vertices, faces = mesh_models.two_cubes_sharing_an_edge()
+    counts = meshbridge.check(vertices, faces)
+    full = meshbridge.check(vertices, faces, elements=True)
+    singular = full["elements"]["singular_edges"] if "elements" in full else full["singular_edges"]
+    assert len(singular) == 1
+
+
+@pytest.mark.parametrize(
+    "faces,message",
+    [
+        (np.array([[0, 1, 99]]), "face 0, corner 2: vertex index 99 is out of range"),
+        ([[0, 1, 2], [0, -1, 2]], "face 1, corner 1: vertex index -1 is negative"),
+        (np.array([[0, 1, 2], [2, 1, -5]], dtype=np.int32), "face 1, corner 2: vertex index -5 is negative"),
+        ([[0, 1, 2], [0, 1]], "face 1 has 2 corner(s)"),
+        ([[0, 1, 2], [0, 1.5, 2]], "face 1, corner 1: expected an integer vertex index, got float"),
+        ([[0, 1, 2], 7], "face 1: expected a sequence of vertex indices, got int"),
+        (np.array([[0.0, 1.0, 2.0]]), "faces: expected integer vertex indices, got dtype float64"),
+        (np.array([[0, 1]]), "faces must have shape (m, k) with k >= 3"),
+        (np.array([0, 1, 2]), "got shape (3,)"),
+    ],
+)
+def test_bad_faces_raise_naming_the_element(faces, message):
+    vertices = np.zeros((4, 3))
+    with pytest.raises(meshbridge.InvalidMeshError) as error:
+        meshbridge.repair(vertices, faces)
+    assert message in str(error.value)
+    assert isinstance(error.value, ValueError)
+
+
+def test_bad_vertices_raise_naming_the_element():
+    faces = [[0, 1, 2]]
+    with pytest.raises(meshbridge.InvalidMeshError, match=r"vertices must have shape \(n, 3\), got shape \(3, 2\)"):
+        meshbridge.check(np.zeros((3, 2)), faces)
+    bad = np.zeros((3, 3))
+    bad[1, 2] = np.nan
+    with pytest.raises(meshbridge.InvalidMeshError, match="vertex 1 has a non-finite coordinate"):
+        meshbridge.repair(bad, faces)
+    with pytest.raises(meshbridge.InvalidMeshError, match="got dtype <U1"):
+        meshbridge.check(np.array([["a", "b", "c"]] * 3), faces)
+
+
+def test_bad_options_and_files():
+    vertices, faces = mesh_models.two_cubes_sharing_an_edge()
+    with pytest.raises(TypeError, match="unknown option 'orientt'"):
+        meshbridge.repair(vertices, faces, orientt=False)
+    with pytest.raises(ValueError, match="pairing must be"):
+        meshbridge.repair(vertices, faces, pairing="random")
+    combinatorial = meshbridge.repair(vertices, faces, pairing="combinatorial", stitch=False)
+    assert combinatorial.report["faces_out"] == 24
+    with pytest.raises(meshbridge.ReadError, match="missing.obj: cannot open"):
+        meshbridge.read("missing.obj")
+    with pytest.raises(TypeError, match="faces are missing"):
+        meshbridge.check(vertices)
+
+
+def test_write_refuses_non_manifold_and_leaves_old_file(tmp_path):
+    out = tmp_path / "keep.obj"
+    out.write_text("previous")
+    vertices, faces = mesh_models.two_cubes_sharing_an_edge()
+    with pytest.raises(meshbridge.WriteError, match="keep.obj"):
+        meshbridge.write(out, vertices, faces)
+    assert out.read_text() == "previous"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["keep.obj"]
+
+
+def test_checkerboard_every_cube_closed_and_separate():
+    vertices, faces = mesh_models.checkerboard(6)
+    cubes = len(faces) // 12
+    assert cubes == 108
+    result = meshbridge.repair(vertices, faces)
+    assert result.report["vertices_out"] == 8 * cubes
+    assert result.report["components_after"] == cubes
+    assert result.report["boundary_edges_after"] == 0
+    assert_repair_invariants(result, len(faces))
+
+
+def test_results_outlive_their_inputs():
+    vertices, faces = mesh_models.checkerboard(4)
+    result = meshbridge.repair(vertices, faces)
+    out = result.vertices
+    del result, vertices, faces
+    import gc
+
+    gc.collect()
+    assert out.shape == (8 * 32, 3) and np.isfinite(out).all()
+    soup_faces = meshbridge.read(MODELS / "twocubes.obj").faces  # the soup itself is gone
+    assert soup_faces.shape == (24, 3) and soup_faces.max() == 13
+
+
+def test_gil_is_released_during_repair():
+    """With a huge switch interval, the GIL changes hands only when its holder lets it go, so
+    the main thread runs while the worker thread is inside repair exactly when repair releases
+    it. (Up to 3 tries, in case the machine is too loaded to wake the main thread in time.)"""
+    vertices, faces = mesh_models.checkerboard(24)
+    soup = meshbridge.Soup(vertices, faces)
+    old = sys.getswitchinterval()
+    seen = []
+    try:
+        sys.setswitchinterval(1000.0)
+        for _ in range(3):
+            state = {"done": False}
+            started = threading.Event()
+
+            def work():
+                started.set()
+                meshbridge.repair(soup)
+                state["done"] = True
+
+            worker = threading.Thread(target=work)
+            worker.start()
+            started.wait()
+            seen.append(state["done"])  # False: we ran while repair was running
+            worker.join()
+            if not seen[-1]:
+                break
+    finally:
+        sys.setswitchinterval(old)
+    assert seen[-1] is False, f"the main thread never ran during repair: {seen}"
