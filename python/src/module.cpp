@@ -5,6 +5,7 @@
 //! core. Every call that reads, repairs, checks or writes releases the GIL.
 
 #include "numpy_soup.h"
+#include "py_file_job.h"
 #include "py_results.h"
 
 #include "meshbridge/detect_defects.h"
@@ -134,10 +135,14 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("read_info", [](const PySoup& s) -> py::object {
         if (s.path.empty())
           return py::none();
-        py::dict info;
+        py::dict info;  // the keys of the reports' "read" object (report_json.h)
         info["declared_vertices"] = s.info.declared_vertices;
         info["declared_faces"] = s.info.declared_faces;
-        info["faces_dropped_by_reader"] = s.info.faces_dropped_by_reader;
+        info["faces_kept"] = s.info.faces_kept;
+        info["faces_split"] = s.info.faces_split;
+        info["faces_set_aside"] = s.info.faces_set_aside;
+        info["dangling_edges"] = s.info.dangling_edges;
+        info["lone_points"] = s.info.lone_points;
         return std::move(info);
       });
 
@@ -190,4 +195,6 @@ PYBIND11_MODULE(_core, m) {
         return repair_result_tuple(std::move(result), soup.soup, std::move(json));
       },
       py::arg("soup"), py::arg("options"), py::arg("elements") = false);
+
+  bind_file_job(m);
 }

@@ -3,16 +3,22 @@
 
 #include "numpy_soup.h"
 
+#include "meshbridge/report_json.h"
+
 namespace meshbridge::python {
 
-std::string check_json(const std::string& /*file*/, const DefectReport& report,
-                       const ReadInfo* /*read*/, bool /*elements*/) {
-  return to_json(report);
+std::string check_json(const std::string& file, const DefectReport& report, const ReadInfo* read,
+                       bool elements) {
+  ReportJsonOptions options;
+  options.elements = elements;
+  return check_report_json(file, report, read, options);
 }
 
-std::string repair_json(const std::string& /*file*/, const RepairReport& report,
-                        const ReadInfo* /*read*/, bool /*elements*/) {
-  return to_json(report);
+std::string repair_json(const std::string& file, const RepairReport& report, const ReadInfo* read,
+                        bool elements) {
+  ReportJsonOptions options;
+  options.elements = elements;
+  return repair_report_json(file, "", report, read, options);
 }
 
 py::tuple repair_result_tuple(std::unique_ptr<RepairResult> result, const Soup& input,

@@ -17,8 +17,9 @@ namespace meshbridge::python {
 
 namespace py = pybind11;
 
-//! The check report of `meshbridge check --json` for `report`; `file` empty for arrays, `read`
-//! null when the soup did not come from a file. Element lists only with `elements`.
+//! The check report of `meshbridge check --json` (report_json.h, one line) for `report`; `file`
+//! empty for arrays, `read` null when the soup did not come from a file. Element lists only with
+//! `elements`.
 std::string check_json(const std::string& file, const DefectReport& report, const ReadInfo* read,
                        bool elements);
 

@@ -31,8 +31,8 @@ def assert_repair_invariants(result, faces_in):
     assert len(result.faces) == faces_in
     assert max(manifold_edges(result.faces).values()) <= 2
     after = meshbridge.check(result.vertices, result.faces)
-    assert after["singular_edge_count"] == 0
-    assert after["singular_vertex_count"] == 0
+    assert after["singular_edges"] == 0
+    assert after["singular_vertices"] == 0
     assert len(result.face_origin) == len(result.faces)
     assert len(result.vertex_origin) == len(result.vertices)
 
@@ -56,8 +56,12 @@ def test_repair_canonical_models_exact_counts(name, v_in, f_in, v_out, component
     report = result.report
     assert (report["vertices_in"], report["faces_in"]) == (v_in, f_in)
     assert (report["vertices_out"], report["faces_out"]) == (v_out, f_in)
-    assert report["components_after"] == components
-    assert report["boundary_edges_after"] == boundary
+    assert report["after"]["components"] == components
+    assert report["after"]["boundary_edges"] == boundary
+    assert report["after"]["singular_edges"] == report["after"]["singular_vertices"] == 0
+    assert report["schema_version"] == 1 and report["kind"] == "repair"
+    assert report["file"] == str(MODELS / f"{name}.obj")
+    assert report["read"] == soup.read_info
     assert len(result.vertices) == v_out
     assert_repair_invariants(result, f_in)
 
@@ -65,12 +69,13 @@ def test_repair_canonical_models_exact_counts(name, v_in, f_in, v_out, component
 def test_two_cubes_provenance_splits_exactly_the_shared_edge():
     vertices, faces = mesh_models.two_cubes_sharing_an_edge()
     report = meshbridge.check(vertices, faces)
-    assert report["singular_edge_count"] == 1 and report["singular_vertex_count"] == 2
+    assert report["singular_edges"] == 1 and report["singular_vertices"] == 2
+    assert report["file"] == "" and "read" not in report and "elements" not in report
     result = meshbridge.repair(vertices, faces)
     out_v, out_f, rep = result  # unpacks as a 3-tuple
     assert out_v.shape == (16, 3) and out_v.dtype == np.float64
     assert out_f.shape == (24, 3) and out_f.dtype == np.int32
-    assert rep["faces_out"] == 24 and rep["components_after"] == 2
+    assert rep["faces_out"] == 24 and rep["after"]["components"] == 2
     # Order preserved: face i of the output is face i of the input.
     np.testing.assert_array_equal(result.face_origin, np.arange(24))
     # 14 originals + one copy of each of the two shared vertices.
@@ -146,8 +151,13 @@ def test_report_lists_on_request():
     vertices, faces = mesh_models.two_cubes_sharing_an_edge()
     counts = meshbridge.check(vertices, faces)
     full = meshbridge.check(vertices, faces, elements=True)
-    singular = full["elements"]["singular_edges"] if "elements" in full else full["singular_edges"]
-    assert len(singular) == 1
+    assert "elements" not in counts
+    (shared,) = [edge for edge, sides in manifold_edges(faces).items() if sides == 4]
+    assert full["elements"]["singular_edges"] == [{"vertices": list(shared), "contenders": 4}]
+    assert {k: v for k, v in full.items() if k != "elements"} == counts
+    repaired = meshbridge.repair(vertices, faces, elements=True).report
+    assert repaired["before"]["elements"]["singular_edges"] == full["elements"]["singular_edges"]
+    assert repaired["after"]["elements"]["singular_edges"] == []
 
 
 @pytest.mark.parametrize(
@@ -214,8 +224,8 @@ def test_checkerboard_every_cube_closed_and_separate():
     assert cubes == 108
     result = meshbridge.repair(vertices, faces)
     assert result.report["vertices_out"] == 8 * cubes
-    assert result.report["components_after"] == cubes
-    assert result.report["boundary_edges_after"] == 0
+    assert result.report["after"]["components"] == cubes
+    assert result.report["after"]["boundary_edges"] == 0
     assert_repair_invariants(result, len(faces))
 
 

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "py_file_job.h"
+
+#include "meshbridge/file_job.h"
+
+#include <pybind11/stl.h>
+
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace meshbridge::python {
+
+namespace py = pybind11;
+
+void bind_file_job(py::module_& m) {
+  py::class_<FileJobOptions>(m, "FileJobOptions")
+      .def(py::init<>())
+      .def_readwrite("repair", &FileJobOptions::repair)
+      .def_readwrite("format", &FileJobOptions::format)
+      .def_readwrite("resume", &FileJobOptions::resume)
+      .def_readwrite("elements", &FileJobOptions::elements);
+
+  // (jobs, unreadable): jobs as (input, output, name, output_name) sorted by name, unreadable
+  // entries as (name, reason). std::invalid_argument (bad folders, format) becomes ValueError.
+  m.def(
+      "plan_batch",
+      [](const std::string& in_dir, const std::string& out_dir, const FileJobOptions& options,
+         bool in_place) {
+        BatchPlan plan;
+        {
+          py::gil_scoped_release release;
+          plan = plan_batch(in_dir, out_dir, options, in_place);
+        }
+        std::vector<std::tuple<std::string, std::string, std::string, std::string>> jobs;
+        jobs.reserve(plan.jobs.size());
+        for (FileJob& job : plan.jobs) {
+          jobs.emplace_back(std::move(job.input), std::move(job.output), std::move(job.name),
+                            std::move(job.output_name));
+        }
+        std::vector<std::pair<std::string, std::string>> unreadable;
+        for (BatchPlan::Unreadable& entry : plan.unreadable)
+          unreadable.emplace_back(std::move(entry.name), std::move(entry.reason));
+        return std::make_pair(std::move(jobs), std::move(unreadable));
+      },
+      py::arg("in_dir"), py::arg("out_dir"), py::arg("options"), py::arg("in_place") = false);
+
+  // (status, reason, record): never raises for a bad file (its record says `failed`).
+  m.def(
+      "run_file_job",
+      [](const std::string& input, const std::string& output, const std::string& name,
+         const std::string& output_name, const FileJobOptions& options) {
+        FileJobResult result;
+        {
+          py::gil_scoped_release release;
+          result = run_file_job(FileJob{input, output, name, output_name}, options);
+        }
+        return std::make_tuple(std::string(to_string(result.status)), std::move(result.reason),
+                               std::move(result.record));
+      },
+      py::arg("input"), py::arg("output"), py::arg("name"), py::arg("output_name"),
+      py::arg("options"));
+
+  m.def(
+      "skipped_record",
+      [](const std::string& name, const std::string& reason) {
+        return skipped_record(BatchPlan::Unreadable{name, reason});
+      },
+      py::arg("name"), py::arg("reason"));
+}
+
+}  // namespace meshbridge::python
