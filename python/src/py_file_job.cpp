@@ -67,6 +67,14 @@ void bind_file_job(py::module_& m) {
         return skipped_record(BatchPlan::Unreadable{name, reason});
       },
       py::arg("name"), py::arg("reason"));
+
+  // The `failed` record of a job that ended without a result of its own (its worker died).
+  m.def(
+      "failed_record",
+      [](const std::string& name, const std::string& output_name, const std::string& reason) {
+        return batch_record_json(name, output_name, to_string(FileStatus::failed), reason, nullptr);
+      },
+      py::arg("name"), py::arg("output_name"), py::arg("reason"));
 }
 
 }  // namespace meshbridge::python

@@ -8,7 +8,7 @@
 
 namespace meshbridge::python {
 
-//! Adds FileJobOptions, plan_batch, run_file_job and skipped_record to `m`.
+//! Adds FileJobOptions, plan_batch, run_file_job, skipped_record and failed_record to `m`.
 void bind_file_job(pybind11::module_& m);
 
 }  // namespace meshbridge::python

@@ -39,3 +39,10 @@ def checkerboard(n):
     i, j, k = np.meshgrid(np.arange(n), np.arange(n), np.arange(n), indexing="ij")
     cells = np.stack([i.ravel(), j.ravel(), k.ravel()], axis=1)
     return cubes(cells[cells.sum(axis=1) % 2 == 0])
+
+
+def write_obj(path, vertices, faces):
+    """A plain OBJ with coordinates that read back bit-identical."""
+    with open(path, "w") as out:
+        out.write("".join("v %.17g %.17g %.17g\n" % tuple(p) for p in vertices))
+        out.write("".join("f " + " ".join(str(int(i) + 1) for i in face) + "\n" for face in faces))

@@ -1,0 +1,301 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Bulk repair of a folder of meshes on Dask distributed.
+
+    python3 -m meshbridge.batch INDIR OUTDIR [--scheduler ADDRESS] [--workers N] [--json] ...
+
+Every mesh file below INDIR (.obj .off .ply .stl, recursively) is read, repaired and written to
+the same relative path below OUTDIR by the core's per-file job (``file_job.h``), the very code
+``meshbridge batch`` runs, so the output files and the JSON Lines records are byte-identical to
+it. One file is one Dask task; without ``--scheduler`` a LocalCluster on this machine runs them.
+
+Resumable: every finished file (clean, repaired, failed or skipped) appends its record to a JSON
+Lines log (default ``OUTDIR/.meshbridge-batch.jsonl``) once its output is in place; a rerun
+skips the files the log holds, so after a kill every file ends up done exactly once. A bad file
+gives one ``failed`` record and the run goes on; so does a file whose worker died on it.
+
+Memory: tasks carry paths, not meshes; a worker reads its file itself, so a worker holds at most
+``--threads-per-worker`` meshes (default 1), and the client keeps at most ``--in-flight`` tasks
+submitted (default 2 per worker thread), so a folder of any size is never loaded at once.
+``--memory-limit`` bounds each local worker (Dask restarts one that goes over, and its file is
+recorded as failed after Dask's retries).
+
+Exit status: 0 every file read and written, 2 some failed or were skipped, or bad arguments.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+from dataclasses import dataclass, field
+from typing import Any, Callable, Dict, Iterable, List, Optional, Tuple
+
+from . import _core
+
+__all__ = ["BatchSummary", "main", "run_batch"]
+
+#: Default log name inside OUTDIR.
+LOG_NAME = ".meshbridge-batch.jsonl"
+
+
+@dataclass
+class BatchSummary:
+    """What run_batch did. ``records`` maps each planned file name to its JSON Lines record."""
+
+    records: Dict[str, str] = field(default_factory=dict)
+    statuses: Dict[str, int] = field(default_factory=dict)
+    done_before: int = 0  #: files the log already held (skipped by this run)
+    done_now: int = 0  #: files finished by this run
+    seconds: float = 0.0  #: wall time of this run's Dask part
+
+    @property
+    def ok(self) -> bool:
+        return self.statuses.get("failed", 0) == 0 and self.statuses.get("skipped", 0) == 0
+
+    def json_lines(self) -> str:
+        """The records sorted by file name, one per line: ``meshbridge batch --json``'s output."""
+        return "".join(self.records[name] + "\n" for name in sorted(self.records))
+
+
+def _job_options(options: Dict[str, Any]) -> "_core.FileJobOptions":
+    from . import _repair_options
+
+    native = _core.FileJobOptions()
+    native.format = options.get("format", "")
+    native.elements = bool(options.get("elements", False))
+    native.repair = _repair_options(options.get("repair", {}))
+    return native
+
+
+def run_file(job: Tuple[str, str, str, str], options: Dict[str, Any]) -> Tuple[str, str, str]:
+    """One task: read -> repair -> write ``job`` = (input, output, name, output_name) with the
+    core's run_file_job; returns (status, reason, record). Runs on a Dask worker; the GIL is
+    released while the core works."""
+    return _core.run_file_job(*job, _job_options(options))
+
+
+def read_log(path: str) -> Dict[str, str]:
+    """The records of a JSON Lines log by file name. A last line without its newline (the run
+    was killed while writing it) is cut off the file, so appending goes on cleanly."""
+    records: Dict[str, str] = {}
+    if not os.path.exists(path):
+        return records
+    with open(path, "rb+") as log:
+        data = log.read()
+        end = data.rfind(b"\n") + 1
+        if end < len(data):
+            log.truncate(end)
+    for number, line in enumerate(data[:end].decode("utf-8").splitlines(), start=1):
+        if not line.strip():
+            continue
+        try:
+            name = json.loads(line)["file"]
+        except (ValueError, KeyError, TypeError) as error:
+            raise ValueError(f"{path}, line {number}: not a batch record ({error})") from None
+        records[name] = line
+    return records
+
+
+def run_batch(
+    in_dir: str,
+    out_dir: str,
+    *,
+    client: Any = None,
+    scheduler: Optional[str] = None,
+    workers: Optional[int] = None,
+    threads_per_worker: int = 1,
+    memory_limit: Any = "auto",
+    log_path: Optional[str] = None,
+    format: str = "",
+    elements: bool = False,
+    repair: Optional[Dict[str, Any]] = None,
+    in_flight: Optional[int] = None,
+    progress: Optional[Callable[[int, int, str, str], None]] = None,
+) -> BatchSummary:
+    """Repairs every mesh below ``in_dir`` into ``out_dir`` on the Dask ``client``.
+
+    Dask: ``client`` (a distributed.Client, e.g. of a dask-jobqueue cluster), else a running
+    ``scheduler`` address, else a LocalCluster of ``workers`` processes (default: one per core)
+    with ``threads_per_worker`` threads and ``memory_limit`` each, started only when there is
+    work left and closed at the end.
+    ``log_path`` (default ``out_dir/.meshbridge-batch.jsonl``) makes the run resumable.
+    ``repair``: options of :func:`meshbridge.repair`. ``in_flight``: tasks submitted at once
+    (default 2 per worker thread). ``progress(done, total, name, status)`` is called per file.
+    Raises ValueError for a missing INDIR, OUTDIR inside INDIR, a bad format or a corrupt log.
+    """
+    from distributed import as_completed
+
+    options = {"format": format, "elements": elements, "repair": dict(repair or {})}
+    jobs, unreadable = _core.plan_batch(in_dir, out_dir, _job_options(options), False)
+    log_path = log_path or os.path.join(out_dir, LOG_NAME)
+    os.makedirs(os.path.dirname(os.path.abspath(log_path)), exist_ok=True)
+    summary = BatchSummary(records=read_log(log_path))
+    planned = {job[2] for job in jobs} | {name for name, _ in unreadable}
+    summary.records = {name: record for name, record in summary.records.items() if name in planned}
+    summary.done_before = len(summary.records)
+    total = len(planned)
+
+    start = time.perf_counter()
+    own_client = None
+    own_cluster = None
+    with open(log_path, "a", encoding="utf-8") as log:
+
+        def finish(name: str, status: str, record: str) -> None:
+            log.write(record + "\n")
+            log.flush()
+            summary.records[name] = record
+            summary.done_now += 1
+            if progress:
+                progress(len(summary.records), total, name, status)
+
+        for name, reason in unreadable:
+            if name not in summary.records:
+                finish(name, "skipped", _core.skipped_record(name, reason))
+
+        todo = [job for job in jobs if job[2] not in summary.records]
+        if not todo:
+            summary.seconds = time.perf_counter() - start
+            return _count(summary)
+        if client is None:
+            from distributed import Client, LocalCluster
+
+            if scheduler:
+                client = own_client = Client(scheduler)
+            else:
+                import logging
+
+                own_cluster = LocalCluster(
+                    n_workers=workers or os.cpu_count() or 1,
+                    threads_per_worker=threads_per_worker,
+                    memory_limit=memory_limit,
+                    processes=True,
+                    dashboard_address=None,
+                    silence_logs=logging.ERROR,
+                )
+                client = own_client = Client(own_cluster)
+        if in_flight is None:
+            in_flight = 2 * max(1, sum(client.nthreads().values()))
+        pending = iter(todo)
+        futures = as_completed()
+        by_key: Dict[str, Tuple[str, str, str, str]] = {}
+
+        def submit_next() -> bool:
+            job = next(pending, None)
+            if job is None:
+                return False
+            future = client.submit(run_file, job, options, pure=False)
+            by_key[future.key] = job
+            futures.add(future)
+            return True
+
+        for _ in range(max(1, in_flight)):
+            if not submit_next():
+                break
+        try:
+            for future in futures:
+                job = by_key.pop(future.key)
+                try:
+                    status, _reason, record = future.result()
+                except Exception as error:  # the worker died on it (e.g. memory limit), etc.
+                    status = "failed"
+                    record = _core.failed_record(
+                        job[2], job[3], f"{job[0]}: the Dask task failed ({type(error).__name__}: {error})"
+                    )
+                future.release()
+                finish(job[2], status, record)
+                submit_next()
+        finally:
+            if own_client is not None:
+                own_client.close()
+            if own_cluster is not None:
+                own_cluster.close()
+    summary.seconds = time.perf_counter() - start
+    return _count(summary)
+
+
+def _count(summary: BatchSummary) -> BatchSummary:
+    for record in summary.records.values():
+        status = json.loads(record)["status"]
+        summary.statuses[status] = summary.statuses.get(status, 0) + 1
+    return summary
+
+
+def _parse(argv: Optional[List[str]]) -> argparse.Namespace:
+    parser = argparse.ArgumentParser(
+        prog="python3 -m meshbridge.batch",
+        description="Repair every mesh below INDIR into OUTDIR (same relative paths) on Dask "
+        "distributed; resumable through a JSON Lines log. Output files and --json records are "
+        "byte-identical to `meshbridge batch`.",
+    )
+    parser.add_argument("in_dir", metavar="INDIR", help="folder searched recursively for meshes")
+    parser.add_argument("out_dir", metavar="OUTDIR", help="folder the repaired meshes go to")
+    parser.add_argument("--scheduler", metavar="ADDRESS",
+                        help="a running Dask scheduler (tcp://host:8786); default: a LocalCluster")
+    parser.add_argument("--workers", type=int, default=None,
+                        help="LocalCluster worker processes (default: one per core)")
+    parser.add_argument("--threads-per-worker", type=int, default=1,
+                        help="files each local worker repairs at once (default 1)")
+    parser.add_argument("--memory-limit", default="auto",
+                        help="memory limit of each local worker, e.g. 4GiB (default: RAM / workers)")
+    parser.add_argument("--in-flight", type=int, default=None,
+                        help="tasks submitted at once (default: 2 per worker thread)")
+    parser.add_argument("--log", default=None,
+                        help=f"JSON Lines log of finished files (default: OUTDIR/{LOG_NAME})")
+    parser.add_argument("--format", choices=["obj", "off", "ply", "stl"], default="",
+                        type=str.lower, help="write every result in this format")
+    parser.add_argument("--json", action="store_true",
+                        help="print every file's record (JSON Lines, sorted by file) on stdout")
+    parser.add_argument("--elements", action="store_true", help="element lists in the records")
+    parser.add_argument("--quiet", action="store_true", help="no progress on stderr")
+    arguments = parser.parse_args(argv)
+    for name in ("workers", "threads_per_worker", "in_flight"):
+        value = getattr(arguments, name)
+        if value is not None and value < 1:
+            parser.error(f"--{name.replace('_', '-')} must be at least 1, got {value}")
+    return arguments
+
+
+def main(argv: Optional[List[str]] = None) -> int:
+    arguments = _parse(argv)
+    started = time.perf_counter()
+    finished_here = [0]
+
+    def progress(done: int, total: int, name: str, status: str) -> None:
+        finished_here[0] += 1
+        if arguments.quiet:
+            return
+        rate = finished_here[0] / max(time.perf_counter() - started, 1e-9)
+        print(f"[{done}/{total}] {name}: {status} ({rate:.1f} files/s)", file=sys.stderr, flush=True)
+
+    try:
+        summary = run_batch(
+            arguments.in_dir,
+            arguments.out_dir,
+            scheduler=arguments.scheduler,
+            workers=arguments.workers,
+            threads_per_worker=arguments.threads_per_worker,
+            memory_limit=arguments.memory_limit,
+            log_path=arguments.log,
+            format=arguments.format,
+            elements=arguments.elements,
+            in_flight=arguments.in_flight,
+            progress=progress,
+        )
+    except (ValueError, OSError, TimeoutError) as error:
+        print(f"meshbridge.batch: {error}", file=sys.stderr)
+        return 2
+
+    if arguments.json:
+        sys.stdout.write(summary.json_lines())
+    else:
+        counts = ", ".join(f"{summary.statuses.get(s, 0)} {s}" for s in ("clean", "repaired", "failed", "skipped"))
+        rate = summary.done_now / summary.seconds if summary.seconds > 0 else 0.0
+        print(f"{len(summary.records)} file(s): {counts}; {summary.done_before} done before, "
+              f"{summary.done_now} now in {summary.seconds:.1f} s ({rate:.2f} files/s)")
+    return 0 if summary.ok else 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())
