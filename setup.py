@@ -4,7 +4,8 @@
 
 Needs cmake, a C++17 compiler, libopenmesh-dev, pybind11-dev, python3-dev (Debian packages;
 scripts/install_deps.sh installs them). ccache is used when it is installed.
-MESHBRIDGE_CMAKE_ARGS adds arguments to the CMake configure step.
+MESHBRIDGE_CMAKE_ARGS adds arguments to the CMake configure step; MESHBRIDGE_BUILD_TEMP moves
+the CMake build folder (default: setuptools' build_temp, below ./build).
 """
 
 import os
@@ -27,7 +28,7 @@ class CMakeExtension(Extension):
 
 class CMakeBuild(build_ext):
     def build_extension(self, ext: Extension) -> None:
-        build_dir = Path(self.build_temp).resolve() / "cmake"
+        build_dir = Path(os.environ.get("MESHBRIDGE_BUILD_TEMP") or self.build_temp).resolve() / "cmake"
         args = [
             "-S", str(ROOT), "-B", str(build_dir),
             "-DCMAKE_BUILD_TYPE=Release",

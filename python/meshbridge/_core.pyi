@@ -75,3 +75,23 @@ def repair(
     npt.NDArray[np.int32],
     npt.NDArray[np.int32],
 ]: ...
+
+class FileJobOptions:
+    repair: RepairOptions
+    format: str
+    resume: bool
+    elements: bool
+    def __init__(self) -> None: ...
+
+def plan_batch(
+    in_dir: str, out_dir: str, options: FileJobOptions, in_place: bool = False
+) -> Tuple[List[Tuple[str, str, str, str]], List[Tuple[str, str]]]:
+    """(jobs as (input, output, name, output_name) sorted by name, unreadable as (name, reason))."""
+
+def run_file_job(
+    input: str, output: str, name: str, output_name: str, options: FileJobOptions
+) -> Tuple[str, str, str]:
+    """(status, reason, JSON Lines record) of read -> repair -> write one file."""
+
+def skipped_record(name: str, reason: str) -> str: ...
+def failed_record(name: str, output_name: str, reason: str) -> str: ...
