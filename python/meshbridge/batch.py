@@ -52,11 +52,43 @@ class BatchSummary:
 
     @property
     def ok(self) -> bool:
+        """True when every file was read and written (exit status 0)."""
         return self.statuses.get("failed", 0) == 0 and self.statuses.get("skipped", 0) == 0
 
+    def sorted_records(self) -> List[str]:
+        """The records in file name order (byte order, as the CLI sorts)."""
+        return [self.records[name] for name in sorted(self.records, key=lambda n: n.encode())]
+
     def json_lines(self) -> str:
-        """The records sorted by file name, one per line: ``meshbridge batch --json``'s output."""
-        return "".join(self.records[name] + "\n" for name in sorted(self.records))
+        """``meshbridge batch --json``'s stdout: the records one per line, by file name."""
+        return "".join(record + "\n" for record in self.sorted_records())
+
+    def table(self) -> str:
+        """``meshbridge batch``'s stdout without --json: a Markdown table and the summary line."""
+        rows = [
+            "| file | status | faces | singular edges | singular vertices | faces out | "
+            "components after | watertight after |",
+            "|---|---|---:|---:|---:|---:|---:|---|",
+        ]
+        for line in self.sorted_records():
+            r = json.loads(line)
+            if r["status"] in ("clean", "repaired"):
+                rows.append(
+                    f"| {r['file']} | {r['status']} | {r['faces_in']} | "
+                    f"{r['before']['singular_edges']} | {r['before']['singular_vertices']} | "
+                    f"{r['faces_out']} | {r['after']['components']} | "
+                    f"{'yes' if r['after']['watertight'] else 'no'} |"
+                )
+            else:
+                rows.append(f"| {r['file']} | {r['status']} | {r.get('reason', '')} | | | | | |")
+        return "\n".join(rows) + "\n" + self.summary_line() + "\n"
+
+    def summary_line(self) -> str:
+        """``N file(s): c clean, r repaired, f failed, s skipped``, as the CLI prints it."""
+        counts = ", ".join(
+            f"{self.statuses.get(s, 0)} {s}" for s in ("clean", "repaired", "failed", "skipped")
+        )
+        return f"{len(self.records)} file(s): {counts}"
 
 
 def _job_options(options: Dict[str, Any]) -> "_core.FileJobOptions":
@@ -112,6 +144,7 @@ def run_batch(
     elements: bool = False,
     repair: Optional[Dict[str, Any]] = None,
     in_flight: Optional[int] = None,
+    in_place: bool = False,
     progress: Optional[Callable[[int, int, str, str], None]] = None,
 ) -> BatchSummary:
     """Repairs every mesh below ``in_dir`` into ``out_dir`` on the Dask ``client``.
@@ -121,6 +154,7 @@ def run_batch(
     with ``threads_per_worker`` threads and ``memory_limit`` each, started only when there is
     work left and closed at the end.
     ``log_path`` (default ``out_dir/.meshbridge-batch.jsonl``) makes the run resumable.
+    ``in_place``: as ``meshbridge batch --in-place`` (OUTDIR may be INDIR or inside it).
     ``repair``: options of :func:`meshbridge.repair`. ``in_flight``: tasks submitted at once
     (default 2 per worker thread). ``progress(done, total, name, status)`` is called per file.
     Raises ValueError for a missing INDIR, OUTDIR inside INDIR, a bad format or a corrupt log.
@@ -128,7 +162,7 @@ def run_batch(
     from distributed import as_completed
 
     options = {"format": format, "elements": elements, "repair": dict(repair or {})}
-    jobs, unreadable = _core.plan_batch(in_dir, out_dir, _job_options(options), False)
+    jobs, unreadable = _core.plan_batch(in_dir, out_dir, _job_options(options), in_place)
     log_path = log_path or os.path.join(out_dir, LOG_NAME)
     os.makedirs(os.path.dirname(os.path.abspath(log_path)), exist_ok=True)
     summary = BatchSummary(records=read_log(log_path))
@@ -245,10 +279,15 @@ def _parse(argv: Optional[List[str]]) -> argparse.Namespace:
                         help=f"JSON Lines log of finished files (default: OUTDIR/{LOG_NAME})")
     parser.add_argument("--format", choices=["obj", "off", "ply", "stl"], default="",
                         type=str.lower, help="write every result in this format")
+    parser.add_argument("--pairing", choices=["geometric", "combinatorial"], default="geometric",
+                        type=str.lower, help="as in `meshbridge repair` (default geometric)")
+    parser.add_argument("--in-place", action="store_true",
+                        help="allow OUTDIR to be INDIR or inside it (originals are replaced)")
     parser.add_argument("--json", action="store_true",
-                        help="print every file's record (JSON Lines, sorted by file) on stdout")
+                        help="print every file's record (JSON Lines, sorted by file) on stdout "
+                        "instead of the table; the summary goes to stderr")
     parser.add_argument("--elements", action="store_true", help="element lists in the records")
-    parser.add_argument("--quiet", action="store_true", help="no progress on stderr")
+    parser.add_argument("--quiet", action="store_true", help="no progress and no summary on stderr")
     arguments = parser.parse_args(argv)
     for name in ("workers", "threads_per_worker", "in_flight"):
         value = getattr(arguments, name)
@@ -281,19 +320,20 @@ def main(argv: Optional[List[str]] = None) -> int:
             format=arguments.format,
             elements=arguments.elements,
             in_flight=arguments.in_flight,
+            in_place=arguments.in_place,
+            repair={"pairing": arguments.pairing},
             progress=progress,
         )
     except (ValueError, OSError, TimeoutError) as error:
         print(f"meshbridge.batch: {error}", file=sys.stderr)
         return 2
 
-    if arguments.json:
-        sys.stdout.write(summary.json_lines())
-    else:
-        counts = ", ".join(f"{summary.statuses.get(s, 0)} {s}" for s in ("clean", "repaired", "failed", "skipped"))
+    sys.stdout.write(summary.json_lines() if arguments.json else summary.table())
+    if not arguments.quiet:
         rate = summary.done_now / summary.seconds if summary.seconds > 0 else 0.0
-        print(f"{len(summary.records)} file(s): {counts}; {summary.done_before} done before, "
-              f"{summary.done_now} now in {summary.seconds:.1f} s ({rate:.2f} files/s)")
+        print(f"meshbridge.batch: {summary.done_before} file(s) done before (in the log), "
+              f"{summary.done_now} now in {summary.seconds:.1f} s ({rate:.2f} files/s)"
+              + ("; " + summary.summary_line() if arguments.json else ""), file=sys.stderr)
     return 0 if summary.ok else 2
 
 

@@ -91,7 +91,7 @@ def test_killed_half_way_and_resumed_every_file_done_once(tmp_path):
 
     again = batch(indir, outdir, "--log", log)
     assert again.returncode == 2
-    assert f"{total} file(s):" in again.stdout and f"{total} done before, 0 now" in again.stdout
+    assert f"{total} file(s) done before (in the log), 0 now" in again.stderr
     assert len(log_records(log)) == total
 
     if not CLI:
@@ -101,6 +101,9 @@ def test_killed_half_way_and_resumed_every_file_done_once(tmp_path):
                          capture_output=True, text=True, timeout=600)
     assert cli.returncode == 2, cli.stderr
     assert resumed.stdout == cli.stdout  # the same records, byte for byte
+    table = subprocess.run([CLI, "batch", indir, tmp_path / "cli_table", "--quiet"],
+                           capture_output=True, text=True, timeout=600)
+    assert again.stdout == table.stdout  # and the same table
     ours = sorted(p.relative_to(outdir) for p in outdir.rglob("*") if p.is_file())
     theirs = sorted(p.relative_to(cli_out) for p in cli_out.rglob("*") if p.is_file())
     assert ours == theirs
