@@ -3,7 +3,11 @@
 # Usage: scripts/install_deps.sh [extra-package ...]
 set -euo pipefail
 
-packages=(build-essential cmake pkg-config libopenmesh-dev libgtest-dev googletest qtbase5-dev libcli11-dev nlohmann-json3-dev "$@")
+packages=(build-essential cmake pkg-config libopenmesh-dev libgtest-dev googletest qtbase5-dev libcli11-dev nlohmann-json3-dev
+  # the Python module and its tests (python/, tests/python/): pybind11, numpy, Dask, Open3D, pytest
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-dask python3-distributed
+  python3-open3d python3-venv python3-pip python3-setuptools python3-wheel
+  "$@")
 
 missing=()
 for p in "${packages[@]}"; do

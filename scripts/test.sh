@@ -14,7 +14,7 @@ sdk="$(bash scripts/setup_meshlab_sdk.sh | tail -n 1)"
 build=build/test
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMESHBRIDGE_BUILD_TESTS=ON \
   -DMESHBRIDGE_BUILD_CLI=ON -DMESHBRIDGE_BUILD_BENCH=ON -DMESHBRIDGE_BUILD_PLUGIN=ON \
-  -DMESHLAB_SDK_DIR="$sdk"
+  -DMESHBRIDGE_BUILD_PYTHON=ON -DMESHLAB_SDK_DIR="$sdk"
 cmake --build "$build" --parallel "$jobs"
 ctest --test-dir "$build" --output-on-failure --parallel "$jobs"
 

@@ -48,7 +48,8 @@ class BatchSummary:
     statuses: Dict[str, int] = field(default_factory=dict)
     done_before: int = 0  #: files the log already held (skipped by this run)
     done_now: int = 0  #: files finished by this run
-    seconds: float = 0.0  #: wall time of this run's Dask part
+    seconds: float = 0.0  #: wall time of this run, Dask's start included
+    startup_seconds: float = 0.0  #: of which starting the LocalCluster or connecting to Dask
 
     @property
     def ok(self) -> bool:
@@ -209,6 +210,7 @@ def run_batch(
                     silence_logs=logging.ERROR,
                 )
                 client = own_client = Client(own_cluster)
+            summary.startup_seconds = time.perf_counter() - start
         if in_flight is None:
             in_flight = 2 * max(1, sum(client.nthreads().values()))
         pending = iter(todo)
@@ -332,7 +334,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     if not arguments.quiet:
         rate = summary.done_now / summary.seconds if summary.seconds > 0 else 0.0
         print(f"meshbridge.batch: {summary.done_before} file(s) done before (in the log), "
-              f"{summary.done_now} now in {summary.seconds:.1f} s ({rate:.2f} files/s)"
+              f"{summary.done_now} now in {summary.seconds:.1f} s ({rate:.2f} files/s; "
+              f"{summary.startup_seconds:.1f} s of it starting Dask)"
               + ("; " + summary.summary_line() if arguments.json else ""), file=sys.stderr)
     return 0 if summary.ok else 2
 

@@ -3,6 +3,7 @@
 
 #include "meshbridge/errors.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -87,6 +88,22 @@ Index checked_index(T value, std::size_t face, std::size_t corner) {
   return static_cast<Index>(value);
 }
 
+//! C-contiguous fast path: one vectorisable pass for the range, one for the copy. False (nothing
+//! written) if some index is negative or too large, so the caller finds it element by element.
+template <class T>
+bool copy_contiguous_indices(const T* data, std::size_t n, Index* corners) {
+  T low = 0, high = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    low = std::min(low, data[i]);
+    high = std::max(high, data[i]);
+  }
+  if (low < 0 || static_cast<unsigned long long>(high) >= kNoIndex)
+    return false;
+  for (std::size_t i = 0; i < n; ++i)
+    corners[i] = static_cast<Index>(data[i]);
+  return true;
+}
+
 template <class T>
 bool read_face_array(const py::array& array, Soup& soup) {
   if (!py::isinstance<py::array_t<T>>(array))
@@ -96,15 +113,19 @@ bool read_face_array(const py::array& array, Soup& soup) {
   const auto k = static_cast<std::size_t>(f.shape(1));
   soup.corner_vertices.resize(m * k);
   soup.face_begin.resize(m + 1);
-  Index* corners = soup.corner_vertices.data();
-  for (std::size_t i = 0; i < m; ++i) {
+  for (std::size_t i = 0; i <= m; ++i)
     soup.face_begin[i] = static_cast<Index>(i * k);
+  Index* corners = soup.corner_vertices.data();
+  if ((array.flags() & py::array::c_style) != 0 && m * k > 0 &&
+      copy_contiguous_indices(static_cast<const T*>(array.data()), m * k, corners)) {
+    return true;
+  }
+  for (std::size_t i = 0; i < m; ++i) {
     for (std::size_t j = 0; j < k; ++j) {
       corners[i * k + j] =
           checked_index(f(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j)), i, j);
     }
   }
-  soup.face_begin[m] = static_cast<Index>(m * k);
   return true;
 }
 
