@@ -96,6 +96,9 @@ class RepairResult(tuple):
         self.corner_origin = corner_origin
         return self
 
+    def __reduce__(self):
+        return (RepairResult, (*self, self.vertex_origin, self.face_origin, self.corner_origin))
+
     @property
     def vertices(self) -> np.ndarray:
         return self[0]

@@ -19,6 +19,7 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <cstring>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -133,19 +134,69 @@ PYBIND11_MODULE(_core, m) {
                                return s.path.empty() ? py::object(py::none())
                                                      : py::object(py::str(s.path));
                              })
-      .def_property_readonly("read_info", [](const PySoup& s) -> py::object {
-        if (s.path.empty())
-          return py::none();
-        py::dict info;  // the keys of the reports' "read" object (report_json.h)
-        info["declared_vertices"] = s.info.declared_vertices;
-        info["declared_faces"] = s.info.declared_faces;
-        info["faces_kept"] = s.info.faces_kept;
-        info["faces_split"] = s.info.faces_split;
-        info["faces_set_aside"] = s.info.faces_set_aside;
-        info["dangling_edges"] = s.info.dangling_edges;
-        info["lone_points"] = s.info.lone_points;
-        return std::move(info);
-      });
+      .def_property_readonly(
+          "read_info",
+          [](const PySoup& s) -> py::object {
+            if (s.path.empty())
+              return py::none();
+            py::dict info;  // the keys of the reports' "read" object (report_json.h)
+            info["declared_vertices"] = s.info.declared_vertices;
+            info["declared_faces"] = s.info.declared_faces;
+            info["faces_kept"] = s.info.faces_kept;
+            info["faces_split"] = s.info.faces_split;
+            info["faces_set_aside"] = s.info.faces_set_aside;
+            info["dangling_edges"] = s.info.dangling_edges;
+            info["lone_points"] = s.info.lone_points;
+            return std::move(info);
+          })
+      .def("__repr__",
+           [](const PySoup& s) {
+             return "<meshbridge.Soup: " + std::to_string(s.soup.num_vertices()) + " vertices, " +
+                    std::to_string(s.soup.num_faces()) + " faces" +
+                    (s.path.empty() ? std::string() : " from " + s.path) + ">";
+           })
+      // Pickling (Dask sends soups between processes): the arrays as raw bytes, exactly.
+      .def(py::pickle(
+          [](const PySoup& s) {
+            const ReadInfo& i = s.info;
+            return py::make_tuple(
+                py::bytes(reinterpret_cast<const char*>(s.soup.positions.data()),
+                          s.soup.positions.size() * sizeof(Point)),
+                py::bytes(reinterpret_cast<const char*>(s.soup.corner_vertices.data()),
+                          s.soup.corner_vertices.size() * sizeof(Index)),
+                py::bytes(reinterpret_cast<const char*>(s.soup.face_begin.data()),
+                          s.soup.face_begin.size() * sizeof(Index)),
+                s.path,
+                py::make_tuple(i.declared_vertices, i.declared_faces, i.faces_dropped_by_reader,
+                               i.faces_kept, i.faces_split, i.faces_set_aside, i.dangling_edges,
+                               i.lone_points));
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 5)
+              throw InvalidSoupError("Soup: bad pickle state");
+            auto soup = std::make_shared<PySoup>();
+            const auto unpack = [&state](std::size_t item, auto& vector) {
+              const std::string bytes = state[item].cast<std::string>();
+              using T = typename std::decay_t<decltype(vector)>::value_type;
+              if (bytes.size() % sizeof(T) != 0)
+                throw InvalidSoupError("Soup: bad pickle state");
+              vector.resize(bytes.size() / sizeof(T));
+              std::memcpy(static_cast<void*>(vector.data()), bytes.data(), bytes.size());
+            };
+            unpack(0, soup->soup.positions);
+            unpack(1, soup->soup.corner_vertices);
+            unpack(2, soup->soup.face_begin);
+            soup->path = state[3].cast<std::string>();
+            const auto i = state[4].cast<std::vector<std::size_t>>();
+            if (i.size() != 8)
+              throw InvalidSoupError("Soup: bad pickle state");
+            ReadInfo& info = soup->info;
+            info.declared_vertices = i[0], info.declared_faces = i[1];
+            info.faces_dropped_by_reader = i[2], info.faces_kept = i[3], info.faces_split = i[4];
+            info.faces_set_aside = i[5], info.dangling_edges = i[6], info.lone_points = i[7];
+            validate_soup(soup->soup);
+            return soup;
+          }));
 
   m.def(
       "read",

@@ -271,3 +271,18 @@ def test_gil_is_released_during_repair():
     finally:
         sys.setswitchinterval(old)
     assert seen[-1] is False, f"the main thread never ran during repair: {seen}"
+
+
+def test_soup_and_result_pickle_exactly():
+    import pickle
+
+    soup = meshbridge.read(MODELS / "prisms24.obj")
+    back = pickle.loads(pickle.dumps(soup))
+    assert repr(back) == repr(soup) and back.read_info == soup.read_info
+    np.testing.assert_array_equal(back.vertices, soup.vertices)
+    assert back.faces == soup.faces  # mixed arity: lists
+    result = meshbridge.repair(soup)
+    again = pickle.loads(pickle.dumps(result))
+    assert again.report == result.report
+    np.testing.assert_array_equal(again.vertex_origin, result.vertex_origin)
+    np.testing.assert_array_equal(again.vertices, result.vertices)
