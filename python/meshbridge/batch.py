@@ -15,7 +15,7 @@ gives one ``failed`` record and the run goes on; so does a file whose worker die
 
 Memory: tasks carry paths, not meshes; a worker reads its file itself, so a worker holds at most
 ``--threads-per-worker`` meshes (default 1), and the client keeps at most ``--in-flight`` tasks
-submitted (default 2 per worker thread), so a folder of any size is never loaded at once.
+submitted (default 4 per worker thread), so a folder of any size is never loaded at once.
 ``--memory-limit`` bounds each local worker (Dask restarts one that goes over, and its file is
 recorded as failed after Dask's retries).
 
@@ -157,7 +157,7 @@ def run_batch(
     ``log_path`` (default ``out_dir/.meshbridge-batch.jsonl``) makes the run resumable.
     ``in_place``: as ``meshbridge batch --in-place`` (OUTDIR may be INDIR or inside it).
     ``repair``: options of :func:`meshbridge.repair`. ``in_flight``: tasks submitted at once
-    (default 2 per worker thread). ``progress(done, total, name, status)`` is called per file.
+    (default 4 per worker thread). ``progress(done, total, name, status)`` is called per file.
     Raises ValueError for a missing INDIR, OUTDIR inside INDIR, a bad format or a corrupt log.
     """
     from distributed import as_completed
@@ -212,7 +212,7 @@ def run_batch(
                 client = own_client = Client(own_cluster)
             summary.startup_seconds = time.perf_counter() - start
         if in_flight is None:
-            in_flight = 2 * max(1, sum(client.nthreads().values()))
+            in_flight = 4 * max(1, sum(client.nthreads().values()))
         pending = iter(todo)
         futures = as_completed()
         by_key: Dict[str, Tuple[str, str, str, str]] = {}
@@ -276,7 +276,7 @@ def _parse(argv: Optional[List[str]]) -> argparse.Namespace:
     parser.add_argument("--memory-limit", default="auto",
                         help="memory limit of each local worker, e.g. 4GiB (default: RAM / workers)")
     parser.add_argument("--in-flight", type=int, default=None,
-                        help="tasks submitted at once (default: 2 per worker thread)")
+                        help="tasks submitted at once (default: 4 per worker thread)")
     parser.add_argument("--log", default=None,
                         help=f"JSON Lines log of finished files (default: OUTDIR/{LOG_NAME})")
     parser.add_argument("--format", choices=["obj", "off", "ply", "stl"], default="",
