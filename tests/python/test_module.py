@@ -208,12 +208,25 @@ def test_bad_options_and_files():
         meshbridge.check(vertices)
 
 
-def test_write_refuses_non_manifold_and_leaves_old_file(tmp_path):
+def test_write_keeps_a_non_manifold_mesh_as_it_is(tmp_path):
+    # MeshBridge's own writers hold any soup (OpenMesh's refused the singular edge).
+    out = tmp_path / "two_cubes.obj"
+    vertices, faces = mesh_models.two_cubes_sharing_an_edge()
+    meshbridge.write(out, vertices, faces)
+    back = meshbridge.read(out)
+    np.testing.assert_array_equal(back.vertices, np.asarray(vertices, dtype=np.float64))
+    np.testing.assert_array_equal(np.asarray(back.faces), np.asarray(faces))
+    assert meshbridge.check(back.vertices, back.faces)["singular_edges"] == 1
+
+
+def test_failed_write_names_the_file_and_leaves_the_old_one(tmp_path):
     out = tmp_path / "keep.obj"
     out.write_text("previous")
     vertices, faces = mesh_models.two_cubes_sharing_an_edge()
-    with pytest.raises(meshbridge.WriteError, match="keep.obj"):
-        meshbridge.write(out, vertices, faces)
+    with pytest.raises(meshbridge.WriteError, match="missing"):
+        meshbridge.write(tmp_path / "missing" / "a.obj", vertices, faces)
+    with pytest.raises(meshbridge.WriteError, match="keep.xyz"):
+        meshbridge.write(tmp_path / "keep.xyz", vertices, faces)
     assert out.read_text() == "previous"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["keep.obj"]
 
