@@ -4,6 +4,7 @@
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/validate.h"
 
+#include "close_gaps_detail.h"
 #include "detection.h"
 #include "pipeline/run_pipeline.h"
 #include "release_memory.h"
@@ -70,22 +71,27 @@ void tell(const RepairOptions& options, Stage stage, double fraction) {
 
 }  // namespace
 
-RepairResult repair(const Soup& soup, const RepairOptions& options) {
-  validate_soup(soup);
+RepairResult repair(const Soup& input, const RepairOptions& options) {
+  validate_soup(input);
   tell(options, Stage::group, 0);
   RepairResult result;
   RepairReport& report = result.report;
-  // Pre-passes on the soup (closing gaps: welding, T-junction cracks) go here, before the
-  // polygons are made simple: everything below, the pipeline included, works on their result.
+  // Gap closing runs on the soup before everything else; when it changed nothing the input is
+  // used as it is (no copy), otherwise the rest runs on the closed soup and origins are composed
+  // at the end.
+  ClosedGaps gaps;
+  const bool gaps_closed = detail::close_gaps_if_any(input, options.close_gaps, gaps);
+  report.gaps = gaps.report;
+  const Soup& soup = gaps_closed ? gaps.soup : input;
   // The simple polygons actually built; their grouping is reused below when nothing is removed.
   const detail::WorkingSoup simple(soup);
   detail::GroupedSides grouped = detail::group_sides(simple.soup());
   const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
   const bool detecting = options.detect_before_after || filtering;
   if (detecting)
-    report.before = detail::detect(simple, grouped);
-  report.faces_in = soup.num_faces();
-  report.vertices_in = soup.num_vertices();
+    report.before = gaps_closed ? detect_defects(input) : detail::detect(simple, grouped);
+  report.faces_in = input.num_faces();
+  report.vertices_in = input.num_vertices();
 
   // Cleanup removals, on the simple polygons (a collapsed polygon can duplicate another one), so
   // that a second repair finds nothing more to remove.
@@ -138,6 +144,12 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
     for (Index& c : mesh.corner_origin)
       c = filtered.corner_origin[c];
   }
+  if (gaps_closed) {
+    for (Index& v : mesh.vertex_origin)
+      v = gaps.vertex_origin[v];
+    for (Index& c : mesh.corner_origin)
+      c = gaps.corner_origin[c];
+  }
   if (options.remove_isolated_vertices) {
     report.isolated_vertices_removed = remove_unused_vertices(mesh);
   }
@@ -164,8 +176,9 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
   tell(options, Stage::detect, 0);
   // The output is the input itself when nothing was split, flipped, removed or rewritten: its
   // detection is then the input's. Otherwise detect again, independently of the pipeline.
-  const bool unchanged = !filtering && simple.is_identity() && report.vertices_split == 0 &&
-                         report.faces_flipped == 0 && report.isolated_vertices_removed == 0;
+  const bool unchanged = !gaps_closed && !filtering && simple.is_identity() &&
+                         report.vertices_split == 0 && report.faces_flipped == 0 &&
+                         report.isolated_vertices_removed == 0;
   if (detecting)
     report.after = unchanged ? report.before : detect_defects(mesh.soup);
   tell(options, Stage::detect, 1);
@@ -179,6 +192,15 @@ RepairResult repair(const Soup& soup, const RepairOptions& options) {
 
 std::string to_text(const RepairReport& r) {
   std::ostringstream out;
+  const CloseGapsReport& g = r.gaps;
+  if (g.tolerance > 0) {
+    out << "gaps (tolerance " << g.tolerance << "): " << g.vertices_welded
+        << " vertices welded (largest move " << g.largest_weld_distance << ", " << g.welds_refused
+        << " refused: same polygon), " << g.t_junctions_closed << " T-junctions closed ("
+        << g.sides_split << " sides split)\n";
+  } else {
+    out << "gaps: not closed (tolerance 0)\n";
+  }
   out << "faces: " << r.faces_in << " in, " << r.faces_out << " out (" << r.faces_set_aside
       << " set aside, " << r.faces_split << " split into " << r.faces_added_by_split << " more, "
       << r.duplicate_faces_removed << " duplicates and " << r.degenerate_faces_removed

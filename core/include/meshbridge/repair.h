@@ -3,6 +3,7 @@
 //! \file repair.h
 //! Lossless manifold repair: every input face is kept, every output edge is manifold.
 
+#include "meshbridge/close_gaps.h"
 #include "meshbridge/defect_report.h"
 #include "meshbridge/indexed_mesh.h"
 #include "meshbridge/pairing.h"
@@ -15,6 +16,9 @@ namespace meshbridge {
 
 //! What repair may do. Defaults give the full repair; the cleanup options are off by default.
 struct RepairOptions {
+  //! Gap closing before pairing (welding near vertices, splitting T-junction cracks). Default on,
+  //! with the automatic tolerance of default_weld_tolerance(); `close_gaps.tolerance = 0` is off.
+  CloseGapsOptions close_gaps;
   PairingPolicy pairing = PairingPolicy::geometric;  //!< how contenders of a singular edge pair up
   bool orient = true;  //!< orient orientable components consistently, closed ones outward
   //! Also orient non-orientable components, cutting the fewest conflicting edges a spanning
@@ -62,8 +66,9 @@ struct RepairReport {
   std::size_t boundary_edges_before = 0;
   std::size_t boundary_edges_after = 0;
   std::size_t nonorientable_components = 0;
-  DefectReport before;  //!< detection on the input
-  DefectReport after;   //!< detection on the result: no singular edge or vertex, ever
+  CloseGapsReport gaps;  //!< what gap closing did before pairing
+  DefectReport before;   //!< detection on the input (before gap closing)
+  DefectReport after;    //!< detection on the result: no singular edge or vertex, ever
 };
 
 struct RepairResult {
