@@ -34,21 +34,122 @@ std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
              mix(static_cast<std::uint64_t>(y) ^ mix(static_cast<std::uint64_t>(z))));
 }
 
-// A static hash grid over a set of points: points sorted by cell key, looked up by binary search.
-// Different cells may share a key; callers check distances exactly, so that only adds candidates.
-class PointGrid {
+// A static kd-tree over a set of points (leaves of up to 8), for "points near a segment"
+// queries whose cost follows the number of boxes the segment passes near, not the side lengths.
+class PointTree {
  public:
-  PointGrid(const std::vector<Point>& positions, std::vector<Index> points, double cell)
-      : positions_(positions), cell_(cell) {
-    entries_.reserve(points.size());
-    for (Index v : points)
-      entries_.push_back({key_of(positions[v]), v});
-    std::sort(entries_.begin(), entries_.end());
+  PointTree(const std::vector<Point>& positions, std::vector<Index> points)
+      : positions_(positions), points_(std::move(points)) {
+    if (!points_.empty()) {
+      nodes_.reserve(points_.size() / 2 + 1);
+      nodes_.resize(1);
+      build(0, 0, points_.size());
+    }
   }
 
-  double cell() const { return cell_; }
+  // Calls visit(v) for every point whose node box, grown by r, the segment a-b meets (a superset
+  // of the points within r of the segment; callers check distances exactly).
+  template <class Visit>
+  void for_each_near_segment(const Point& a, const Point& b, double r, Visit&& visit) const {
+    if (nodes_.empty())
+      return;
+    std::vector<std::size_t> stack{0};
+    while (!stack.empty()) {
+      const Node& node = nodes_[stack.back()];
+      stack.pop_back();
+      if (!segment_meets_box(a, b, node.lo - Point(r, r, r), node.hi + Point(r, r, r)))
+        continue;
+      if (node.left == 0) {
+        for (std::size_t i = node.first; i < node.last; ++i)
+          visit(points_[i]);
+      } else {
+        stack.push_back(node.left);
+        stack.push_back(node.left + 1);
+      }
+    }
+  }
 
-  // Calls visit(v) for every point in the cells that the box [p - r, p + r] touches.
+ private:
+  struct Node {
+    Point lo, hi;
+    std::size_t first = 0, last = 0;
+    std::size_t left = 0;  // children left and left + 1; 0 for a leaf
+  };
+
+  // Fills node `slot` (already allocated) for points_[first, last) and its subtree.
+  void build(std::size_t slot, std::size_t first, std::size_t last) {
+    Point lo = positions_[points_[first]], hi = lo;
+    for (std::size_t i = first; i < last; ++i) {
+      lo.minimize(positions_[points_[i]]);
+      hi.maximize(positions_[points_[i]]);
+    }
+    nodes_[slot].lo = lo;
+    nodes_[slot].hi = hi;
+    nodes_[slot].first = first;
+    nodes_[slot].last = last;
+    if (last - first <= 8)
+      return;
+    const Point extent = hi - lo;
+    const int axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0
+                     : extent[1] >= extent[2]                         ? 1
+                                                                      : 2;
+    const std::size_t middle = first + (last - first) / 2;
+    std::nth_element(points_.begin() + first, points_.begin() + middle, points_.begin() + last,
+                     [&](Index x, Index y) { return positions_[x][axis] < positions_[y][axis]; });
+    const std::size_t children = nodes_.size();
+    nodes_.resize(children + 2);
+    nodes_[slot].left = children;
+    build(children, first, middle);
+    build(children + 1, middle, last);
+  }
+
+  // Slab test: does the segment a-b meet the box [lo, hi]?
+  static bool segment_meets_box(const Point& a, const Point& b, const Point& lo, const Point& hi) {
+    double t0 = 0, t1 = 1;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double d = b[axis] - a[axis];
+      if (d == 0) {
+        if (a[axis] < lo[axis] || a[axis] > hi[axis])
+          return false;
+        continue;
+      }
+      double u0 = (lo[axis] - a[axis]) / d, u1 = (hi[axis] - a[axis]) / d;
+      if (u0 > u1)
+        std::swap(u0, u1);
+      t0 = std::max(t0, u0);
+      t1 = std::min(t1, u1);
+      if (t0 > t1)
+        return false;
+    }
+    return true;
+  }
+
+  const std::vector<Point>& positions_;
+  std::vector<Index> points_;
+  std::vector<Node> nodes_;
+};
+
+// A growing hash grid of points (open addressing over cell keys, one chain of points per cell):
+// welding inserts only surviving vertices, so many copies of one position cost one entry.
+class SurvivorGrid {
+ public:
+  // Room for `points` points, numbered below `vertices`.
+  SurvivorGrid(std::size_t points, std::size_t vertices, double cell)
+      : cell_(cell), next_(vertices, kNoIndex) {
+    std::size_t capacity = 16;
+    while (capacity < 2 * points)
+      capacity *= 2;
+    keys_.assign(capacity, 0);
+    heads_.assign(capacity, kNoIndex);
+  }
+
+  void insert(const Point& p, Index v) {
+    const std::size_t slot = find_slot(key_of(p));
+    keys_[slot] = key_of(p) | 1;
+    next_[v] = heads_[slot];
+    heads_[slot] = v;
+  }
+
   template <class Visit>
   void for_each_near(const Point& p, double r, Visit&& visit) const {
     std::int64_t lo[3], hi[3];
@@ -58,8 +159,13 @@ class PointGrid {
     }
     for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
       for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
-        for (std::int64_t z = lo[2]; z <= hi[2]; ++z)
-          visit_cell(cell_key(x, y, z), visit);
+        for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+          const std::size_t slot = find_slot(cell_key(x, y, z));
+          if (keys_[slot] == 0)
+            continue;  // empty cell
+          for (Index v = heads_[slot]; v != kNoIndex; v = next_[v])
+            visit(v);
+        }
   }
 
  private:
@@ -67,17 +173,21 @@ class PointGrid {
     return cell_key(cell_coordinate(p[0], cell_), cell_coordinate(p[1], cell_),
                     cell_coordinate(p[2], cell_));
   }
-  template <class Visit>
-  void visit_cell(std::uint64_t key, Visit& visit) const {
-    auto it =
-        std::lower_bound(entries_.begin(), entries_.end(), std::pair<std::uint64_t, Index>(key, 0));
-    for (; it != entries_.end() && it->first == key; ++it)
-      visit(it->second);
+  // The slot holding `key`, or the empty slot where it would go (key 0 marks empty slots; keys
+  // are made odd, and cells that share a key share a chain, which distance checks sort out).
+  std::size_t find_slot(std::uint64_t key) const {
+    key |= 1;
+    const std::size_t mask = keys_.size() - 1;
+    std::size_t slot = key & mask;
+    while (keys_[slot] != 0 && keys_[slot] != key)
+      slot = (slot + 1) & mask;
+    return slot;
   }
 
-  const std::vector<Point>& positions_;
   double cell_;
-  std::vector<std::pair<std::uint64_t, Index>> entries_;
+  std::vector<std::uint64_t> keys_;
+  std::vector<Index> heads_;
+  std::vector<Index> next_;
 };
 
 // Polygons around each vertex (CSR).
@@ -104,33 +214,52 @@ struct Weld {
   double largest = 0;
 };
 
+std::vector<Index> boundary_sides(const Soup& soup);
+
+// Endpoints of boundary sides, sorted.
+std::vector<Index> boundary_vertices(const Soup& soup, const std::vector<Index>& sides) {
+  std::vector<Index> vertices;
+  for (Index c : sides) {
+    const Index f =
+        static_cast<Index>(std::upper_bound(soup.face_begin.begin(), soup.face_begin.end(), c) -
+                           soup.face_begin.begin() - 1);
+    vertices.push_back(soup.corner_vertices[c]);
+    vertices.push_back(soup.corner_vertices[soup.next_corner(c, f)]);
+  }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  return vertices;
+}
+
+// Welds boundary vertices only: a crack is where sides are open, and an edge that already has
+// two sides needs nothing (a closed mesh with near vertices stays exactly as it is).
 Weld weld_vertices(const Soup& soup, double tolerance) {
   Weld weld;
   const std::size_t n = soup.num_vertices();
   weld.survivor.resize(n);
   for (std::size_t v = 0; v < n; ++v)
     weld.survivor[v] = static_cast<Index>(v);
-  std::vector<Index> all(n);
-  for (std::size_t v = 0; v < n; ++v)
-    all[v] = static_cast<Index>(v);
+  const std::vector<Index> open = boundary_vertices(soup, boundary_sides(soup));
+  if (open.empty())
+    return weld;
   // Large cells: a tolerance box rarely straddles a cell face, and cells still hold about one
   // vertex because the tolerance is far below the spacing of distinct vertices.
-  const PointGrid grid(soup.positions, std::move(all), 64 * tolerance);
+  SurvivorGrid grid(open.size(), n, 64 * tolerance);
   std::unique_ptr<VertexFaces> around;
   std::vector<std::pair<double, Index>> candidates;
   const double tolerance2 = tolerance * tolerance;
-  for (std::size_t v = 0; v < n; ++v) {
+  for (const Index v : open) {
     const Point& p = soup.positions[v];
     candidates.clear();
     grid.for_each_near(p, tolerance, [&](Index u) {
-      if (u >= v || weld.survivor[u] != u)
-        return;
       const double d2 = (soup.positions[u] - p).sqrnorm();
-      if (d2 <= tolerance2)
+      if (d2 > 0 && d2 <= tolerance2)
         candidates.push_back({d2, u});
     });
-    if (candidates.empty())
+    if (candidates.empty()) {
+      grid.insert(p, static_cast<Index>(v));
       continue;
+    }
     if (!around)
       around = std::make_unique<VertexFaces>(soup);
     std::sort(candidates.begin(), candidates.end());
@@ -154,8 +283,10 @@ Weld weld_vertices(const Soup& soup, double tolerance) {
       merged = true;
       break;
     }
-    if (!merged)
+    if (!merged) {
       ++weld.refused;
+      grid.insert(p, static_cast<Index>(v));
+    }
   }
   return weld;
 }
@@ -213,21 +344,7 @@ std::vector<Insertion> find_t_junctions(const Soup& soup, double tolerance) {
     return static_cast<Index>(std::upper_bound(soup.face_begin.begin(), soup.face_begin.end(), c) -
                               soup.face_begin.begin() - 1);
   };
-  std::vector<Index> vertices;
-  std::vector<double> lengths;
-  for (Index c : sides) {
-    const Index f = face_of_corner(c);
-    const Index a = soup.corner_vertices[c];
-    const Index b = soup.corner_vertices[soup.next_corner(c, f)];
-    vertices.push_back(a);
-    vertices.push_back(b);
-    lengths.push_back((soup.positions[b] - soup.positions[a]).norm());
-  }
-  std::sort(vertices.begin(), vertices.end());
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-  const double cell = std::max(4 * tolerance, lengths[lengths.size() / 2]);
-  const PointGrid grid(soup.positions, vertices, cell);
+  const PointTree tree(soup.positions, boundary_vertices(soup, sides));
 
   std::vector<Insertion> insertions;
   std::vector<Index> seen;
@@ -240,35 +357,28 @@ std::vector<Insertion> find_t_junctions(const Soup& soup, double tolerance) {
     const double length2 = ab.sqrnorm();
     if (!(length2 > 4 * tolerance * tolerance))
       continue;
-    // Samples every half cell along the side; with the tolerance at most a quarter cell, every
-    // point within the tolerance of the side is in a cell next to a sample's cell.
-    const std::size_t steps =
-        static_cast<std::size_t>(std::ceil(std::sqrt(length2) / (0.5 * cell)));
     seen.clear();
-    for (std::size_t k = 0; k <= steps; ++k) {
-      const Point sample = pa + ab * (static_cast<double>(k) / static_cast<double>(steps));
-      grid.for_each_near(sample, cell, [&](Index w) {
-        if (w == a || w == b)
-          return;
-        const Point aw = soup.positions[w] - pa;
-        const double t = (aw | ab) / length2;
-        if (!(t > 0 && t < 1))
-          return;
-        if ((aw - ab * t).sqrnorm() > tolerance * tolerance)
-          return;
-        // Within the tolerance of an end, the gap is a weld's business, not a T-junction's.
-        if (aw.sqrnorm() <= tolerance * tolerance ||
-            (soup.positions[w] - soup.positions[b]).sqrnorm() <= tolerance * tolerance)
-          return;
-        if (std::find(seen.begin(), seen.end(), w) != seen.end())
-          return;
-        seen.push_back(w);
-        for (Index u : soup.polygon(f))
-          if (u == w)
-            return;  // would repeat a corner of the polygon
-        insertions.push_back({c, t, w});
-      });
-    }
+    tree.for_each_near_segment(pa, soup.positions[b], tolerance, [&](Index w) {
+      if (w == a || w == b)
+        return;
+      const Point aw = soup.positions[w] - pa;
+      const double t = (aw | ab) / length2;
+      if (!(t > 0 && t < 1))
+        return;
+      if ((aw - ab * t).sqrnorm() > tolerance * tolerance)
+        return;
+      // Within the tolerance of an end, the gap is a weld's business, not a T-junction's.
+      if (aw.sqrnorm() <= tolerance * tolerance ||
+          (soup.positions[w] - soup.positions[b]).sqrnorm() <= tolerance * tolerance)
+        return;
+      if (std::find(seen.begin(), seen.end(), w) != seen.end())
+        return;
+      seen.push_back(w);
+      for (Index u : soup.polygon(f))
+        if (u == w)
+          return;  // would repeat a corner of the polygon
+      insertions.push_back({c, t, w});
+    });
   }
   std::sort(insertions.begin(), insertions.end(), [](const Insertion& x, const Insertion& y) {
     return x.corner != y.corner ? x.corner < y.corner : x.t < y.t;

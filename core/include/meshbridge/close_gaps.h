@@ -58,15 +58,19 @@ struct ClosedGaps {
 //! origin.
 double default_weld_tolerance(const Soup& soup);
 
-//! Welds vertices closer than the tolerance, then (if enabled) splits every boundary side on
-//! which another boundary vertex lies within the tolerance.
+//! Welds boundary vertices (ends of edges with one side) closer than the tolerance, then (if
+//! enabled) splits every boundary side on which another boundary vertex lies within the tolerance.
 //!
-//! Welding visits vertices in index order; each one merges into the nearest earlier surviving
-//! vertex within the tolerance that shares no polygon with it (so no polygon loses a corner; such
-//! refusals are counted), and takes its position. Near-linear: a hash grid of cell size 4x the
-//! tolerance. A gap wider than the tolerance stays open (its sides stay boundary).
-//! \pre `soup` passes validate_soup(); `options.tolerance` is finite or negative
-//! \throw std::invalid_argument if `options.tolerance` is NaN or +infinite
+//! Only boundary vertices weld: a crack is where sides are open, so a closed mesh, however near
+//! its vertices, is left exactly as it is. Vertices at exactly the same position are never welded:
+//! a file that lists a position twice (an OBJ seam, a repaired mesh's split vertex copies) keeps
+//! them apart on purpose, and STL readers already merged identical positions; so repairing a
+//! repaired mesh changes nothing. Welding visits vertices in index order; each one merges into the
+//! nearest earlier surviving vertex within the tolerance that shares no polygon with it (so no
+//! polygon loses a corner; such refusals are counted), and takes its position. Near-linear: a hash
+//! grid of cell size 4x the tolerance. A gap wider than the tolerance stays open (its sides stay
+//! boundary). \pre `soup` passes validate_soup(); `options.tolerance` is finite or negative \throw
+//! std::invalid_argument if `options.tolerance` is NaN or +infinite
 ClosedGaps close_gaps(const Soup& soup, const CloseGapsOptions& options = {});
 
 }  // namespace meshbridge

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "printer_options.h"
+
+#include "arguments.h"
+
+#include "meshbridge/detect_defects.h"
+#include "meshbridge/io.h"
+#include "meshbridge/separate_copies.h"
+#include "meshbridge/stl_round_trip.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <ostream>
+#include <sstream>
+
+namespace meshbridge::cli {
+
+namespace {
+
+double parse_distance(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || value < 0) {
+    throw UsageError("--" + option + " expects 'auto' or a distance >= 0, got '" + text + "'");
+  }
+  return value;
+}
+
+}  // namespace
+
+CloseGapsOptions parse_weld(const std::string& text) {
+  CloseGapsOptions options;
+  if (text != "auto")
+    options.tolerance = parse_distance("weld", text);
+  return options;
+}
+
+std::string gaps_line(const CloseGapsReport& g, bool would) {
+  std::ostringstream out;
+  if (!(g.tolerance > 0)) {
+    out << "gaps: not closed (--weld 0)\n";
+    return out.str();
+  }
+  out << "gaps (weld tolerance " << g.tolerance << "): " << (would ? "would weld " : "welded ")
+      << g.vertices_welded << " vertices (largest move " << g.largest_weld_distance << ", "
+      << g.welds_refused << " refused in one polygon), " << (would ? "would close " : "closed ")
+      << g.t_junctions_closed << " T-junction cracks\n";
+  return out.str();
+}
+
+bool is_stl_path(const std::string& path) {
+  std::string lower = path;
+  for (auto& ch : lower)
+    ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return lower.size() >= 4 && lower.compare(lower.size() - 4, 4, ".stl") == 0;
+}
+
+double apply_separate(const std::string& text, IndexedMesh& mesh, std::size_t vertices_split,
+                      const std::string& out, std::ostream& summary) {
+  const bool automatic = text == "auto";
+  double distance = automatic ? 0 : parse_distance("separate", text);
+  if (vertices_split == 0 || (!automatic && distance == 0))
+    return 0;
+  if (is_stl_path(out)) {
+    const double smallest = smallest_stl_separation(mesh);
+    if (automatic) {
+      distance = smallest;
+    } else {
+      IndexedMesh trial = mesh;
+      separate_split_vertices(trial, distance);
+      if (singular_elements_after_stl_round_trip(trial.soup) != 0) {
+        std::ostringstream message;
+        message << "--separate " << text << " is too small for float32 (STL) at this model's "
+                << "coordinates: the copies would weld again; the smallest EPS that works is "
+                << smallest << " (or use --separate auto)";
+        throw UsageError(message.str());
+      }
+    }
+  } else if (automatic) {
+    summary << "separate: not needed for " << out << " (the format keeps shared vertices)\n";
+    return 0;
+  }
+  const std::size_t moved = separate_split_vertices(mesh, distance);
+  summary << "separated the " << vertices_split << " split vertex copies: moved " << moved
+          << " vertices (every copy of a split vertex) by " << distance
+          << (automatic ? " (auto)" : "") << "\n";
+  return distance;
+}
+
+DefectReport detect_as_reread(const std::string& path) {
+  return detect_defects(read_soup(path));
+}
+
+}  // namespace meshbridge::cli

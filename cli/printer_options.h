@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The printer-route options shared by check, repair and batch: --weld, --separate, and what an
+// STL file re-reads as.
+
+#include "meshbridge/close_gaps.h"
+#include "meshbridge/defect_report.h"
+#include "meshbridge/indexed_mesh.h"
+
+#include <iosfwd>
+#include <string>
+
+namespace meshbridge::cli {
+
+//! `--weld TOL`: "auto" (the default) or a distance >= 0 (0 = off). Throws UsageError otherwise.
+CloseGapsOptions parse_weld(const std::string& text);
+
+//! One line describing what gap closing did (or would do, for check).
+std::string gaps_line(const CloseGapsReport& report, bool would);
+
+bool is_stl_path(const std::string& path);
+
+//! `--separate auto|EPS` applied to a repaired mesh about to be written to `out`. For STL, an
+//! explicit EPS that float32 cannot hold is a UsageError naming the smallest EPS that works.
+//! Returns the distance used (0: nothing moved); prints the summary line to `summary`.
+double apply_separate(const std::string& text, IndexedMesh& mesh, std::size_t vertices_split,
+                      const std::string& out, std::ostream& summary);
+
+//! Detection on the file at `path` as a reader gets it back (read_soup, no repair).
+DefectReport detect_as_reread(const std::string& path);
+
+}  // namespace meshbridge::cli

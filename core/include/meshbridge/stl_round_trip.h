@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+//! \file stl_round_trip.h
+//! What a mesh becomes when written as STL and read back: the truth every STL route reports.
+
+#include "meshbridge/indexed_mesh.h"
+
+#include <cstddef>
+
+namespace meshbridge {
+
+//! The soup any STL reader gets back from `soup` written as STL: polygons fanned into triangles
+//! from their first corner (as write_mesh() writes them), positions rounded to float32, vertices
+//! welded by exact position in order of first use (as read_soup() and every STL reader weld).
+//! #V' <= #V, #F' = number of triangles.
+Soup stl_round_trip(const Soup& soup);
+
+//! Singular edges plus singular vertices that detection finds in stl_round_trip(soup): what a
+//! reader of the STL file sees of the split vertices' repair undone (0 when the repair survives).
+std::size_t singular_elements_after_stl_round_trip(const Soup& soup);
+
+//! The smallest `distance` for separate_split_vertices() after which the repaired `mesh` survives
+//! STL: `u * 2^k` (k = 0, 1, ..., 60) where u is the float32 spacing (one unit in the last place)
+//! at the largest absolute coordinate of a split vertex's copies, the first for which
+//! singular_elements_after_stl_round_trip() is 0. 0 when `mesh` has no split vertex.
+//! \pre `mesh.vertex_origin` has one entry per vertex
+//! \throw std::invalid_argument when no such distance exists (float32 merges vertices that are
+//!        not copies of one split vertex, or the copies cannot be separated)
+double smallest_stl_separation(const IndexedMesh& mesh);
+
+}  // namespace meshbridge

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "meshbridge/stl_round_trip.h"
+
+#include "meshbridge/detect_defects.h"
+#include "meshbridge/separate_copies.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+
+namespace meshbridge {
+
+namespace {
+
+struct FloatPointHash {
+  std::size_t operator()(const std::array<float, 3>& p) const {
+    std::size_t h = 0;
+    for (float x : p)
+      h = h * 0x9e3779b97f4a7c15ULL + std::hash<float>()(x);
+    return h;
+  }
+};
+
+}  // namespace
+
+Soup stl_round_trip(const Soup& soup) {
+  Soup out;
+  std::unordered_map<std::array<float, 3>, Index, FloatPointHash> index;
+  index.reserve(soup.num_vertices());
+  const auto weld = [&](Index v) {
+    const Point& p = soup.positions[v];
+    const std::array<float, 3> key{static_cast<float>(p[0]), static_cast<float>(p[1]),
+                                   static_cast<float>(p[2])};
+    const auto [it, inserted] = index.try_emplace(key, static_cast<Index>(out.num_vertices()));
+    if (inserted)
+      out.add_vertex(Point(key[0], key[1], key[2]));
+    return it->second;
+  };
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const PolygonView p = soup.polygon(f);
+    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+      const Index a = weld(p[0]), b = weld(p[i]), c = weld(p[i + 1]);
+      out.add_polygon({a, b, c});
+    }
+  }
+  return out;
+}
+
+std::size_t singular_elements_after_stl_round_trip(const Soup& soup) {
+  const DefectReport report = detect_defects(stl_round_trip(soup));
+  return report.singular_edges.size() + report.num_singular_vertices();
+}
+
+double smallest_stl_separation(const IndexedMesh& mesh) {
+  if (mesh.vertex_origin.size() != mesh.soup.num_vertices()) {
+    throw std::invalid_argument("smallest_stl_separation: vertex_origin has " +
+                                std::to_string(mesh.vertex_origin.size()) + " entries for " +
+                                std::to_string(mesh.soup.num_vertices()) + " vertices");
+  }
+  std::map<Index, Index> copies;
+  for (Index o : mesh.vertex_origin)
+    ++copies[o];
+  double largest = 0;
+  bool any = false;
+  for (std::size_t v = 0; v < mesh.soup.num_vertices(); ++v) {
+    if (copies[mesh.vertex_origin[v]] < 2)
+      continue;
+    any = true;
+    for (int a = 0; a < 3; ++a)
+      largest = std::max(largest, std::abs(mesh.soup.positions[v][a]));
+  }
+  if (!any)
+    return 0;
+  const float at = static_cast<float>(largest);
+  const double ulp = static_cast<double>(std::nextafter(at, 2 * at + 1.0f)) - at;
+  for (int k = 0; k <= 60; ++k) {
+    const double distance = std::ldexp(ulp, k);
+    IndexedMesh moved = mesh;
+    separate_split_vertices(moved, distance);
+    if (singular_elements_after_stl_round_trip(moved.soup) == 0)
+      return distance;
+  }
+  throw std::invalid_argument(
+      "no separation distance makes this mesh survive STL: float32 coordinates merge vertices "
+      "that are not copies of one split vertex; write OBJ, OFF, PLY or 3MF instead");
+}
+
+}  // namespace meshbridge
