@@ -56,7 +56,7 @@ int run_repair(RepairArguments& arguments) {
   options.stitch = !arguments.no_stitch;
   const double separate = arguments.separate;
   if (!is_supported_mesh_file(out)) {
-    throw UsageError(out + ": unknown output format (expected .obj, .off, .ply or .stl)");
+    throw UsageError(out + ": unknown output format (expected .obj, .off, .ply, .stl or .3mf)");
   }
   check_readable_file(in);
   check_writable_file(out);

@@ -45,6 +45,10 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
 void read_off(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 void read_ply(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
+//! 3MF through lib3mf 1.8 (the v1 C API; it reads `file.path()` itself): every mesh object of the
+//! model in resource order, one after another (vertex indices offset); build items and their
+//! transforms are not applied; no colours.
+void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 
 void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
                const WriteOptions& options);
@@ -53,6 +57,10 @@ void write_off(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
 void write_ply(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
                const WriteOptions& options);
 void write_stl(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
+               const WriteOptions& options);
+//! 3MF through lib3mf 1.8 into `out.temporary_path()`: one mesh object with every polygon fanned
+//! from its first corner, positions as float32 (3MF's precision), one build item; no colours.
+void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
                const WriteOptions& options);
 
 //! Classifies every soup face as kept, split (pinched) or set aside (< 3 distinct corners) the

@@ -18,7 +18,7 @@ namespace meshbridge {
 
 namespace {
 
-enum class Format { unknown, obj, off, ply, stl };
+enum class Format { unknown, obj, off, ply, stl, threemf };
 
 Format format_of(const std::string& path) {
   const auto dot = path.find_last_of('.');
@@ -36,6 +36,8 @@ Format format_of(const std::string& path) {
     return Format::ply;
   if (ext == "stl")
     return Format::stl;
+  if (ext == "3mf")
+    return Format::threemf;
   return Format::unknown;
 }
 
@@ -71,7 +73,7 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
   const detail::MappedFile file(path);  // missing, directory, empty: ReadError
   const Format format = format_of(path);
   if (format == Format::unknown)
-    throw ReadError(path + ": unknown format (expected .obj, .off, .ply or .stl)");
+    throw ReadError(path + ": unknown format (expected .obj, .off, .ply, .stl or .3mf)");
 
   Soup soup;
   ReadInfo counts;
@@ -89,6 +91,9 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
       break;
     case Format::stl:
       detail::read_stl(file, soup, counts, attributes);
+      break;
+    case Format::threemf:
+      detail::read_3mf(file, soup, counts, attributes);
       break;
     case Format::unknown:
       break;
@@ -126,7 +131,7 @@ void write_mesh(const std::string& path, const IndexedMesh& mesh, const MeshAttr
                 const WriteOptions& options) {
   const Format format = format_of(path);
   if (format == Format::unknown)
-    throw WriteError(path + ": unknown format (expected .obj, .off, .ply or .stl)");
+    throw WriteError(path + ": unknown format (expected .obj, .off, .ply, .stl or .3mf)");
   check_attributes(path, mesh, attributes);
   detail::write_atomically(path, [&](detail::AtomicOutput& out) {
     switch (format) {
@@ -141,6 +146,9 @@ void write_mesh(const std::string& path, const IndexedMesh& mesh, const MeshAttr
         break;
       case Format::stl:
         detail::write_stl(out, mesh, attributes, options);
+        break;
+      case Format::threemf:
+        detail::write_3mf(out, mesh, attributes, options);
         break;
       case Format::unknown:
         break;

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "io/formats.h"
+
+#include "meshbridge/errors.h"
+
+#include <Model/COM/NMR_DLLInterfaces.h>
+
+#include <vector>
+
+namespace meshbridge::detail {
+
+namespace {
+
+struct Released {
+  NMR::PLib3MFBase* instance = nullptr;
+  ~Released() {
+    if (instance != nullptr)
+      NMR::lib3mf_release(instance);
+  }
+};
+
+void check(HRESULT result, const std::string& path, const char* what) {
+  if (result != LIB3MF_OK)
+    throw WriteError(path + ": lib3mf cannot " + what + " (error " + std::to_string(result) + ")");
+}
+
+}  // namespace
+
+void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* /*attributes*/,
+               const WriteOptions& /*options*/) {
+  const Soup& soup = mesh.soup;
+  const std::string& path = out.target();  // for error messages
+  std::vector<NMR::MODELMESHVERTEX> vertices(soup.num_vertices());
+  for (std::size_t v = 0; v < soup.num_vertices(); ++v)
+    for (int a = 0; a < 3; ++a)
+      vertices[v].m_fPosition[a] = static_cast<float>(soup.positions[v][a]);
+  std::vector<NMR::MODELMESHTRIANGLE> triangles;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const PolygonView p = soup.polygon(f);
+    for (std::size_t i = 1; i + 1 < p.size(); ++i)
+      triangles.push_back({{p[0], p[i], p[i + 1]}});
+  }
+  Released model, object, item, writer;
+  check(NMR::lib3mf_createmodel(&model.instance), path, "create a model");
+  check(NMR::lib3mf_model_addmeshobject(model.instance, &object.instance), path,
+        "add a mesh object");
+  check(NMR::lib3mf_meshobject_setgeometry(object.instance, vertices.data(),
+                                           static_cast<DWORD>(vertices.size()), triangles.data(),
+                                           static_cast<DWORD>(triangles.size())),
+        path, "store the mesh");
+  check(NMR::lib3mf_model_addbuilditem(model.instance, object.instance, nullptr, &item.instance),
+        path, "add the build item");
+  check(NMR::lib3mf_model_querywriter(model.instance, "3mf", &writer.instance), path,
+        "create a writer");
+  check(NMR::lib3mf_writer_writetofileutf8(writer.instance, out.temporary_path().c_str()), path,
+        "write the file");
+}
+
+}  // namespace meshbridge::detail
