@@ -151,9 +151,14 @@ stl_warning)
   expect_exit 1 "$mb" check "$work/c.stl"   # welded back: the singular edge returns
   expect_in "$work/out" "singular edges: 1"
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/s.stl" --separate 1e-4
-  expect_in "$work/out" "separated 4 split vertex copies"
+  expect_in "$work/out" "separated the 2 split vertex copies: moved 4 vertices"
+  expect_in "$work/out" "as re-read from $work/s.stl: singular edges 0, singular vertices 0"
   expect_exit 0 "$mb" check "$work/s.stl"
   expect_in "$work/out" "watertight yes"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/a.stl" --separate auto
+  expect_in "$work/out" "as re-read from $work/a.stl: singular edges 0, singular vertices 0"
+  expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/t.stl" --separate 1e-9
+  expect_in "$work/err" "the smallest EPS that works is"
   ;;
 bad_input)
   : >"$work/empty.obj"

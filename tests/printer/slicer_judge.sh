@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# A slicer as the judge: PrusaSlicer's `--info` (which runs admesh's repair on load) on every real
+# file, original next to MeshBridge's repaired 3MF. Asserts, per file: never more open edges after
+# than before; "manifold = yes" after whenever MeshBridge closed every boundary; volume within
+# 1e-6 relative of the original's where the slicer found the original closed with nothing fixed.
+# Prints the table (file, open edges before/after, parts, volume).
+# Usage: slicer_judge.sh MESHBRIDGE SOURCE_DIR WORK_DIR
+set -euo pipefail
+meshbridge=$1 source_dir=$2 work=$3
+command -v prusa-slicer >/dev/null || { echo "prusa-slicer is not installed (scripts/install_deps.sh)"; exit 1; }
+rm -rf "$work" && mkdir -p "$work"
+
+files=()
+for f in "$source_dir"/tests/data/realworld/*.{stl,STL,obj}; do [[ -e $f ]] && files+=("$f"); done
+while IFS=$'\t' read -r package path license; do
+  [[ $package == package ]] && continue
+  [[ -e $path ]] || { echo "missing $path: install the Debian package $package"; exit 1; }
+  files+=("$path")
+done <"$source_dir/tests/printer/debian_models.tsv"
+
+# key = value lines of prusa-slicer --info
+info() { prusa-slicer --info "$1" 2>/dev/null | sed -n 's/^\([a-z_]*\) = *\(.*\)$/\1=\2/p'; }
+field() { sed -n "s/^$2=//p" <<<"$1" | head -1; }
+
+failures=0
+printf '| file | open edges before | after | parts before | after | volume before | after | manifold after |\n'
+printf '|---|---:|---:|---:|---:|---:|---:|---|\n'
+total_before=0 total_after=0 manifold_now=0 n=0
+for f in "${files[@]}"; do
+  name=$(basename "$f")
+  out="$work/${name%.*}.3mf"
+  report="$work/${name%.*}.json"
+  "$meshbridge" repair "$f" "$out" --report "$report" >/dev/null 2>&1 || { echo "FAIL $name: repair failed"; failures=$((failures + 1)); continue; }
+  before=$(info "$f") after=$(info "$out")
+  ob=$(field "$before" open_edges); ob=${ob:-0}
+  oa=$(field "$after" open_edges); oa=${oa:-0}
+  fixed_before=$(field "$before" edges_fixed); fixed_before=${fixed_before:-0}
+  mb=$(field "$before" manifold) ma=$(field "$after" manifold)
+  pb=$(field "$before" number_of_parts) pa=$(field "$after" number_of_parts)
+  vb=$(field "$before" volume) va=$(field "$after" volume)
+  boundary_after=$(grep -o '"boundary_edges_after":[0-9]*' "$report" | cut -d: -f2)
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "$name" "$ob" "$oa" "$pb" "$pa" "$vb" "$va" "$ma"
+  n=$((n + 1)) total_before=$((total_before + ob)) total_after=$((total_after + oa))
+  [[ $ma == yes ]] && manifold_now=$((manifold_now + 1))
+  if ((oa > ob)); then echo "FAIL $name: $oa open edges after, $ob before"; failures=$((failures + 1)); fi
+  if [[ $boundary_after == 0 && $ma != yes ]]; then echo "FAIL $name: closed by MeshBridge but the slicer says manifold = $ma"; failures=$((failures + 1)); fi
+  if [[ $mb == yes && $fixed_before == 0 ]]; then
+    if ! awk -v a="$va" -v b="$vb" 'BEGIN { d = a - b; if (d < 0) d = -d; m = b < 0 ? -b : b; exit !(d <= 1e-6 * m) }'; then
+      echo "FAIL $name: volume $va after, $vb before"; failures=$((failures + 1))
+    fi
+  fi
+done
+echo "$n files; open edges $total_before -> $total_after; $manifold_now manifold for the slicer after repair"
+((failures == 0))
