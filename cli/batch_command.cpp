@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
+#include "printer_options.h"
 #include "validators.h"
 
 #include "meshbridge/file_job.h"
@@ -38,6 +39,7 @@ struct BatchArguments {
   bool progress = false;
   bool in_place = false;
   bool resume = false;
+  std::string weld = "auto";  //!< as repair --weld
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
 };
 
@@ -63,8 +65,10 @@ void take_result(Entry& entry, const FileJobResult& result) {
   entry.reason = result.reason;
   entry.record = result.record;
   const RepairReport& p = result.report;
+  // An STL output counts as it will be re-read (split vertex copies weld again).
+  const DefectReport& after = result.reread ? *result.reread : p.after;
   entry.row = {p.faces_in,  p.before.singular_edges.size(), p.before.num_singular_vertices(),
-               p.faces_out, p.after.num_components,         p.after.watertight};
+               p.faces_out, after.num_components,           after.watertight};
 }
 
 // With --jobs > 1 every file is repaired in a child process of its own: OpenMesh's readers and
@@ -195,6 +199,7 @@ void print_table_row(const Entry& e) {
 int run_batch(const BatchArguments& arguments) {
   FileJobOptions options;
   options.format = arguments.format;
+  options.repair.close_gaps = parse_weld(arguments.weld);
   options.resume = arguments.resume;
   options.elements = arguments.elements;
   options.repair.pairing = arguments.pairing == "combinatorial" ? PairingPolicy::combinatorial
@@ -384,7 +389,10 @@ void add_batch_command(CLI::App& app, int& exit_code) {
   command
       ->add_option("--format", arguments->format,
                    "write every result in this format (default: each file's own)")
-      ->transform(CLI::IsMember({"obj", "off", "ply", "stl"}, CLI::ignore_case));
+      ->transform(CLI::IsMember({"obj", "off", "ply", "stl", "3mf"}, CLI::ignore_case));
+  command->add_option("--weld", arguments->weld, "TOL|auto, as in repair")
+      ->capture_default_str()
+      ->check(distance_or_auto());
   command->add_option("--pairing", arguments->pairing, "as in repair")
       ->capture_default_str()
       ->transform(CLI::IsMember({"geometric", "combinatorial"}, CLI::ignore_case));

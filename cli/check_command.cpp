@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
 #include "paths.h"
+#include "printer_options.h"
 #include "progress.h"
+#include "validators.h"
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
@@ -21,13 +23,16 @@ struct CheckArguments {
   bool json = false;
   bool elements = false;
   bool progress = false;
+  std::string weld = "auto";  //!< tolerance of the gap closing repair would do ("auto", 0 = off)
 };
 
 int run_check(const CheckArguments& arguments) {
   const std::string& path = arguments.file;
   check_readable_file(path);
+  const CloseGapsOptions weld = parse_weld(arguments.weld);
   ReadInfo info;
   DefectReport report;
+  CloseGapsReport gaps;
   {
     ProgressDisplay progress(path, progress_wanted(arguments.progress), progress_wanted(false),
                              check_plan());
@@ -35,6 +40,8 @@ int run_check(const CheckArguments& arguments) {
     const Soup soup = read_soup(path, &info);
     progress.stage(Stage::detect, 0);
     report = detect_defects(soup);
+    if (!arguments.json)  // what repair's gap closing would do (the report is of the file as read)
+      gaps = close_gaps(soup, weld).report;
   }
   warn_about_reader(path, info);
   if (arguments.json) {
@@ -44,7 +51,7 @@ int run_check(const CheckArguments& arguments) {
   } else {
     std::cout << path << "\n"
               << "  read: " << describe_reading(info) << "\n"
-              << to_text(report);
+              << to_text(report) << gaps_line(gaps, true);
     if (report.has_defects())
       std::cout << "(`meshbridge explain` tells what these terms mean)\n";
   }
@@ -61,13 +68,19 @@ void add_check_command(CLI::App& app, int& exit_code) {
       "check",
       "Report singular edges and vertices, boundaries and other defects of FILE.\n"
       "Exit 0 = no defect, 1 = defects found, 2 = error.");
-  command->add_option("FILE", arguments->file, "mesh to check (.obj, .off, .ply, .stl)")
+  command->add_option("FILE", arguments->file, "mesh to check (.obj, .off, .ply, .stl, .3mf)")
       ->required();
   command->add_flag("--json", arguments->json,
                     "print the report as JSON instead of text (docs/report-schema.md)");
   command->add_flag("--elements", arguments->elements,
                     "with --json: also list the defective elements (vertex indices, edges); "
                     "default counts only");
+  command
+      ->add_option("--weld", arguments->weld,
+                   "TOL|auto: also say what repair's gap closing would weld and close with this "
+                   "tolerance (as in repair; 0 = off)")
+      ->capture_default_str()
+      ->check(distance_or_auto());
   command->add_flag("--progress", arguments->progress,
                     "show the stage and a progress bar on stderr even when it is not a terminal "
                     "(on a terminal it shows anyway once the work takes over a second)");

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "printer_options.h"
 
-#include "arguments.h"
+#include "commands.h"
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"

@@ -3,9 +3,11 @@
 #include "defect_snapshot.h"
 #include "paths.h"
 #include "png_output.h"
+#include "printer_options.h"
 #include "progress.h"
 #include "validators.h"
 
+#include "meshbridge/detect_defects.h"
 #include "meshbridge/errors.h"
 #include "meshbridge/io.h"
 #include "meshbridge/repair.h"
@@ -20,16 +22,12 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 namespace meshbridge::cli {
 
 namespace {
-
-bool ends_with_stl(std::string path) {
-  for (auto& ch : path)
-    ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".stl") == 0;
-}
 
 void write_text_atomically(const std::string& path, const std::string& text) {
   write_bytes_atomically(path, text);  // unique temporary beside `path`, renamed on success
@@ -43,7 +41,8 @@ struct RepairArguments {
   bool progress = false;
   std::string before_after;
   RepairOptions options;
-  double separate = 0.0;
+  std::string separate = "0";  //!< "auto" or a distance >= 0 (0 = off)
+  std::string weld = "auto";   //!< "auto" or a distance >= 0 (0 = off)
 };
 
 int run_repair(RepairArguments& arguments) {
@@ -54,7 +53,7 @@ int run_repair(RepairArguments& arguments) {
                                                          : PairingPolicy::geometric;
   options.orient = !arguments.no_orient;
   options.stitch = !arguments.no_stitch;
-  const double separate = arguments.separate;
+  options.close_gaps = parse_weld(arguments.weld);
   if (!is_supported_mesh_file(out)) {
     throw UsageError(out + ": unknown output format (expected .obj, .off, .ply, .stl or .3mf)");
   }
@@ -71,7 +70,8 @@ int run_repair(RepairArguments& arguments) {
 
   ReadInfo info;
   RepairResult result;
-  std::size_t moved = 0;
+  std::ostringstream separate_summary;
+  std::optional<DefectReport> reread;  // STL output as a reader gets it back
   {
     ProgressDisplay progress(in, progress_wanted(arguments.progress), progress_wanted(false),
                              repair_plan());
@@ -80,14 +80,18 @@ int run_repair(RepairArguments& arguments) {
     options.progress = progress.callback();
     result = repair(soup, options);
     progress.stage(Stage::write, 0);
-    if (separate > 0)
-      moved = separate_split_vertices(result.mesh, separate);
+    apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
+                   separate_summary);
     write_mesh(out, result.mesh);
+    if (is_stl_path(out))
+      reread = detect_as_reread(out);
     if (!arguments.report.empty()) {
       ReportJsonOptions json;
       json.elements = arguments.elements;
-      write_text_atomically(arguments.report,
-                            repair_report_json(in, out, result.report, &info, json) + "\n");
+      write_text_atomically(
+          arguments.report,
+          repair_report_json(in, out, result.report, &info, json, reread ? &*reread : nullptr) +
+              "\n");
     }
     if (!arguments.before_after.empty()) {
       const OffscreenQt qt;  // fonts for the legends
@@ -102,15 +106,20 @@ int run_repair(RepairArguments& arguments) {
   }
   warn_about_reader(in, info);
 
-  std::cout << in << " -> " << out << "\n" << to_text(result.report);
-  if (separate > 0)
-    std::cout << "separated " << moved << " split vertex copies by " << separate << "\n";
-  if (ends_with_stl(out) && result.report.vertices_split > 0 && separate == 0) {
-    std::cerr << "meshbridge: warning: STL has no shared vertices; a reader that welds by position "
-                 "will merge the "
-              << result.report.vertices_split
-              << " split vertex copies again and re-create the singular vertices. Use "
-                 "--separate EPS or another format (OBJ, OFF, PLY).\n";
+  std::cout << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
+  if (reread) {
+    // STL keeps no shared vertices: say what a reader gets back from the written file.
+    const std::size_t left = reread->singular_edges.size() + reread->num_singular_vertices();
+    std::cout << "as re-read from " << out << ": singular edges " << reread->singular_edges.size()
+              << ", singular vertices " << reread->num_singular_vertices() << ", closed "
+              << (reread->watertight ? "yes" : "no") << "\n";
+    if (left > 0) {
+      std::cerr << "meshbridge: warning: STL has no shared vertices; reading " << out
+                << " welds the " << result.report.vertices_split
+                << " split vertex copies again and re-creates " << reread->singular_edges.size()
+                << " singular edges and " << reread->num_singular_vertices()
+                << " singular vertices. Use --separate auto, or write 3MF, PLY, OBJ or OFF.\n";
+    }
   }
   return kOk;
 }
@@ -124,11 +133,12 @@ void add_repair_command(CLI::App& app, int& exit_code) {
       "repair",
       "Lossless manifold repair of IN into OUT: every face is kept, every edge of the result is\n"
       "manifold. Exit 0 = written, 2 = error.");
-  command->add_option("IN", arguments->in, "mesh to repair (.obj, .off, .ply, .stl)")->required();
+  command->add_option("IN", arguments->in, "mesh to repair (.obj, .off, .ply, .stl, .3mf)")
+      ->required();
   command
       ->add_option("OUT", arguments->out,
                    "where to write the result; the extension picks the format (.obj, .off, .ply, "
-                   ".stl); replaced atomically")
+                   ".stl, .3mf); replaced atomically")
       ->required();
   command->add_option("--report", arguments->report,
                       "also write the repair report as JSON to this file "
@@ -156,10 +166,20 @@ void add_repair_command(CLI::App& app, int& exit_code) {
   command->add_flag("--remove-isolated", options.remove_isolated_vertices,
                     "drop vertices that no kept face uses");
   command
+      ->add_option("--weld", arguments->weld,
+                   "TOL|auto: before pairing, weld boundary vertices closer than TOL (model units) "
+                   "and split boundary sides at T-junction cracks; auto = 2^-21 x the largest "
+                   "coordinate; 0 = off")
+      ->capture_default_str()
+      ->check(distance_or_auto());
+  command
       ->add_option("--separate", arguments->separate,
-                   "move each split vertex copy this distance (model units) into its own fan, "
-                   "so the repair survives STL readers that weld by position; 0 = off")
-      ->check(finite_at_least(0.0));
+                   "EPS|auto: move each split vertex copy EPS (model units) into its own fan, so "
+                   "the repair survives STL readers that weld by position; auto = the smallest "
+                   "EPS float32 keeps at the model's coordinates; an STL output is read back and "
+                   "what a reader gets is reported; 0 = off")
+      ->capture_default_str()
+      ->check(distance_or_auto());
   command->add_option("--before-after", arguments->before_after,
                       "also draw the input and the result side by side into this PNG (as "
                       "`snapshot` draws them, same framing)");

@@ -29,6 +29,23 @@ inline CLI::Validator finite_at_least(double minimum) {
       "NUMBER>=" + minimum_text);
 }
 
+//! Accepts "auto" or a finite number >= 0 (a distance in model units; --weld, --separate).
+inline CLI::Validator distance_or_auto() {
+  return CLI::Validator(
+      [](std::string& text) {
+        if (text == "auto")
+          return std::string();
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) ||
+            value < 0) {
+          return "expects auto or a finite number >= 0, got '" + text + "'";
+        }
+        return std::string();
+      },
+      "NUMBER>=0|auto");
+}
+
 //! Accepts a whole number from `low` to `high`.
 inline CLI::Validator whole_number_in(long low, long high) {
   return CLI::Validator(

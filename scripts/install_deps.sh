@@ -7,7 +7,7 @@ packages=(build-essential cmake pkg-config libopenmesh-dev libgtest-dev googlete
   # the Python module and its tests (python/, tests/python/): pybind11, numpy, Dask, Open3D, pytest
   python3-dev pybind11-dev python3-numpy python3-pytest python3-dask python3-distributed
   python3-open3d python3-venv python3-pip python3-setuptools python3-wheel
-  prusa-slicer admesh  # the slicer judge (tests/printer)
+  prusa-slicer admesh jq  # the slicer judge (tests/printer)
   lib3mf-dev  # 3MF read and write (core)
   "$@")
 

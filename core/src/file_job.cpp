@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/file_job.h"
 
+#include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
 
 #include <unistd.h>
@@ -108,7 +109,7 @@ BatchPlan plan_batch(const std::string& in_dir, const std::string& out_dir,
     throw std::invalid_argument(in_dir + ": not a folder");
   const std::string format = lower(options.format);
   if (!format.empty() && !is_supported_mesh_file("x." + format))
-    throw std::invalid_argument("format must be obj, off, ply or stl, got '" + options.format +
+    throw std::invalid_argument("format must be obj, off, ply, stl or 3mf, got '" + options.format +
                                 "'");
   const fs::path in_abs = normalised(in_dir), out_abs = normalised(out_dir);
   if (!in_place && is_within(out_abs, in_abs)) {
@@ -168,7 +169,8 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     result.status = status;
     result.reason = reason;
     result.record =
-        batch_record_json(job.name, job.output_name, to_string(status), reason, report, read, json);
+        batch_record_json(job.name, job.output_name, to_string(status), reason, report, read, json,
+                          report != nullptr && result.reread ? &*result.reread : nullptr);
     return result;
   };
 
@@ -214,6 +216,15 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
       write_mesh(job.output, repaired.mesh);
     }
     result.report = std::move(repaired.report);
+    if (lower(fs::path(job.output).extension().string()) == ".stl") {
+      // STL keeps no shared vertices: report the file as a reader will get it back.
+      Soup again;
+      {
+        const std::lock_guard<std::mutex> guard(openmesh_io_lock());
+        again = read_soup(job.output);
+      }
+      result.reread = detect_defects(again);
+    }
     const RepairReport& r = result.report;
     const bool clean =
         !r.before.has_defects() && r.faces_flipped == 0 && info.faces_dropped_by_reader == 0;

@@ -72,7 +72,16 @@ void add_defects(Json& out, const DefectReport& r, bool elements) {
                          {"duplicate_faces", r.duplicate_faces}};
 }
 
-void add_repair(Json& out, const RepairReport& r, bool elements) {
+Json gaps_json(const CloseGapsReport& g) {
+  return Json{{"tolerance", g.tolerance},
+              {"vertices_welded", g.vertices_welded},
+              {"largest_weld_distance", g.largest_weld_distance},
+              {"welds_refused", g.welds_refused},
+              {"t_junctions_closed", g.t_junctions_closed},
+              {"sides_split", g.sides_split}};
+}
+
+void add_repair(Json& out, const RepairReport& r, bool elements, const DefectReport* reread) {
   out["faces_in"] = r.faces_in;
   out["faces_out"] = r.faces_out;
   out["faces_set_aside"] = r.faces_set_aside;
@@ -90,11 +99,17 @@ void add_repair(Json& out, const RepairReport& r, bool elements) {
   out["sides_cut_for_orientation"] = r.sides_cut_for_orientation;
   out["sides_cut_to_stay_manifold"] = r.sides_cut_to_stay_manifold;
   out["sides_stitched"] = r.sides_stitched;
+  out["gaps"] = gaps_json(r.gaps);
   Json before = Json::object(), after = Json::object();
   add_defects(before, r.before, elements);
   add_defects(after, r.after, elements);
   out["before"] = std::move(before);
   out["after"] = std::move(after);
+  if (reread) {
+    Json again = Json::object();
+    add_defects(again, *reread, elements);
+    out["reread"] = std::move(again);
+  }
 }
 
 Json header(const char* kind, const std::string& file) {
@@ -127,13 +142,13 @@ std::string check_report_json(const std::string& file, const DefectReport& repor
 
 std::string repair_report_json(const std::string& file, const std::string& output,
                                const RepairReport& report, const ReadInfo* read,
-                               const ReportJsonOptions& options) {
+                               const ReportJsonOptions& options, const DefectReport* reread) {
   Json out = header("repair", file);
   if (!output.empty())
     out["output"] = output;
   if (read)
     out["read"] = read_json(*read);
-  add_repair(out, report, options.elements);
+  add_repair(out, report, options.elements, reread);
   return dump(out, options.indent);
 }
 
@@ -151,7 +166,7 @@ std::string compare_report_json(const std::string& file, std::size_t soup_vertic
 std::string batch_record_json(const std::string& file, const std::string& output,
                               const char* status, const std::string& reason,
                               const RepairReport* report, const ReadInfo* read,
-                              const ReportJsonOptions& options) {
+                              const ReportJsonOptions& options, const DefectReport* reread) {
   Json out = header("batch", file);
   if (!output.empty())
     out["output"] = output;
@@ -161,7 +176,7 @@ std::string batch_record_json(const std::string& file, const std::string& output
   if (read)
     out["read"] = read_json(*read);
   if (report)
-    add_repair(out, *report, options.elements);
+    add_repair(out, *report, options.elements, reread);
   return dump(out, options.indent);
 }
 

@@ -159,6 +159,32 @@ stl_warning)
   expect_in "$work/out" "as re-read from $work/a.stl: singular edges 0, singular vertices 0"
   expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/t.stl" --separate 1e-9
   expect_in "$work/err" "the smallest EPS that works is"
+  # The JSON report says what the STL file re-reads as, next to the repair's own counts.
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/r.stl" --report "$work/r.json"
+  [ "$(json_field "$work/r.json" after.singular_edges)" = 0 ] || fail "after in memory"
+  [ "$(json_field "$work/r.json" reread.singular_edges)" = 1 ] || fail "reread singular edges"
+  [ "$(json_field "$work/r.json" reread.singular_vertices)" = 2 ] || fail "reread singular vertices"
+  [ "$(json_field "$work/r.json" gaps.vertices_welded)" = 0 ] || fail "gaps in the report"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/r.obj" --report "$work/o.json"
+  grep -q '"reread"' "$work/o.json" && fail "reread in a report of an OBJ output"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/ra.stl" --separate auto --report "$work/ra.json"
+  [ "$(json_field "$work/ra.json" reread.singular_edges)" = 0 ] || fail "--separate auto reread"
+  [ "$(json_field "$work/ra.json" reread.watertight)" = true ] || fail "--separate auto watertight"
+  # batch: an STL output counts as re-read (table and JSON); 3MF keeps the repair.
+  mkdir -p "$work/in"
+  cp "$models/twocubes.obj" "$work/in/"
+  expect_exit 0 "$mb" batch "$work/in" "$work/bs" --format stl
+  expect_in "$work/out" "| twocubes.obj | repaired | 24 | 1 | 2 | 24 | 1 | no |"
+  expect_exit 0 "$mb" batch "$work/in" "$work/bj" --format stl --json --quiet
+  [ "$(json_line_field "$work/out" 0 reread.singular_edges)" = 1 ] || fail "batch reread"
+  expect_exit 0 "$mb" batch "$work/in" "$work/b3" --format 3mf --weld 0
+  expect_in "$work/out" "| twocubes.obj | repaired | 24 | 1 | 2 | 24 | 2 | yes |"
+  expect_exit 0 "$mb" check "$work/b3/twocubes.3mf"
+  expect_in "$work/out" "watertight yes"
+  expect_exit 0 "$mb" check "$work/b3/twocubes.3mf" --weld 0
+  expect_in "$work/out" "gaps: not closed (--weld 0)"
+  expect_exit 2 "$mb" check "$work/b3/twocubes.3mf" --weld -1
+  expect_in "$work/err" "--weld: expects auto or a finite number >= 0, got '-1'"
   ;;
 bad_input)
   : >"$work/empty.obj"
@@ -402,21 +428,21 @@ arguments)
   expect_exit 0 "$mb" repair --help
   for option in --report --elements "--pairing TEXT:{geometric,combinatorial}=geometric" --no-orient \
     --no-stitch --cut-nonorientable --remove-duplicates --remove-degenerate --remove-isolated \
-    "--separate FLOAT:NUMBER>=0=0"; do
+    "--weld TEXT:NUMBER>=0|auto=auto" "--separate TEXT:NUMBER>=0|auto=0"; do
     expect_in "$work/out" "$option"
   done
   expect_exit 0 "$mb" snapshot --help
   expect_in "$work/out" "--size INT:INT in [16 - 8192]=800"
   expect_in "$work/out" "--view TEXT:{iso,x,y,z}=iso"
   expect_exit 0 "$mb" batch --help
-  for option in --format --json --quiet --progress --in-place --resume "--jobs"; do
+  for option in "--format TEXT:{obj,off,ply,stl,3mf}" "--weld TEXT:NUMBER>=0|auto=auto" --json --quiet --progress --in-place --resume "--jobs"; do
     expect_in "$work/out" "$option"
   done
   # Errors name the command and the bad argument.
   expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/a.obj" --frobnicate
   expect_in "$work/err" "meshbridge repair: error: The following argument was not expected: --frobnicate"
   expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/a.obj" --separate -1
-  expect_in "$work/err" "--separate: expects a finite number >= 0, got '-1'"
+  expect_in "$work/err" "--separate: expects auto or a finite number >= 0, got '-1'"
   expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/a.obj" --separate inf
   expect_in "$work/err" "got 'inf'"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --size 12.5

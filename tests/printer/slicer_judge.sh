@@ -8,6 +8,7 @@
 set -euo pipefail
 meshbridge=$1 source_dir=$2 work=$3
 command -v prusa-slicer >/dev/null || { echo "prusa-slicer is not installed (scripts/install_deps.sh)"; exit 1; }
+command -v jq >/dev/null || { echo "jq is not installed (scripts/install_deps.sh)"; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
 
 files=()
@@ -50,7 +51,7 @@ for f in "${files[@]}"; do
   mb=$(field "$before" manifold) ma=$(field "$after" manifold)
   pb=$(field "$before" number_of_parts) pa=$(field "$after" number_of_parts)
   vb=$(field "$before" volume) va=$(field "$after" volume)
-  boundary_after=$(grep -o '"boundary_edges_after":[0-9]*' "$report" | cut -d: -f2)
+  boundary_after=$(jq -e '.after.boundary_edges' "$report")
   printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "$name" "$ob" "$oa" "$pb" "$pa" "$vb" "$va" "$ma"
   n=$((n + 1)) total_before=$((total_before + ob)) total_after=$((total_after + oa))
   [[ $ma == yes ]] && manifold_now=$((manifold_now + 1))

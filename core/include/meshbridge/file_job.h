@@ -9,6 +9,7 @@
 #include "meshbridge/report_json.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,7 +37,8 @@ struct FileJob {
 //! Options of plan_batch and run_file_job, every default documented.
 struct FileJobOptions {
   RepairOptions repair;  //!< default: the full repair (see RepairOptions)
-  //! Output format ("obj", "off", "ply" or "stl", any case); empty (default): as the input.
+  //! Output format ("obj", "off", "ply", "stl" or "3mf", any case); empty (default): as the
+  //! input.
   std::string format;
   //! Skip a file whose output exists and is newer than the input (default false).
   bool resume = false;
@@ -75,15 +77,18 @@ struct FileJobResult {
   std::string reason;   //!< failed or skipped: why, naming the path; empty otherwise
   std::string record;   //!< the JSON Lines record (batch_record_json), no trailing newline
   RepairReport report;  //!< clean or repaired: what repair did; empty otherwise
+  //! STL output only: detection on the written file as read back (STL keeps no shared vertices,
+  //! so split vertex copies weld again); the record's `reread`. Empty for other formats.
+  std::optional<DefectReport> reread;
 };
 
 //! Reads `job.input`, repairs it with `options.repair`, writes `job.output` atomically (creating
-//! its folder). Never throws for a bad file: every error becomes a `failed` result whose reason
-//! names the path and the cause (OS reason included). With `options.resume` an output newer
-//! than the input is `skipped`. An input that cannot be opened (permission) is `skipped`.
-//! Thread-safe: jobs with distinct outputs may run concurrently (OpenMesh's reader and writer
-//! objects are process-wide singletons, so reading and writing take turns under one lock;
-//! repair, most of the time, runs in parallel).
+//! its folder); an STL output is read back and detected (FileJobResult::reread). Never throws for a
+//! bad file: every error becomes a `failed` result whose reason names the path and the cause (OS
+//! reason included). With `options.resume` an output newer than the input is `skipped`. An input
+//! that cannot be opened (permission) is `skipped`. Thread-safe: jobs with distinct outputs may run
+//! concurrently (OpenMesh's reader and writer objects are process-wide singletons, so reading and
+//! writing take turns under one lock; repair, most of the time, runs in parallel).
 FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options = {});
 
 //! The `skipped` record of an unreadable entry from BatchPlan::unreadable.

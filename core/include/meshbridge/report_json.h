@@ -43,12 +43,15 @@ std::string check_report_json(const std::string& file, const DefectReport& repor
                               const ReportJsonOptions& options = {});
 
 //! `{"schema_version":1,"kind":"repair","file":...,"output":...,"read":{...},<repair counts>,
-//! "before":{<check counts>},"after":{<check counts>}}`; with `options.elements` the `before`
-//! and `after` objects carry their `elements`. `output` is left out when empty, `read` when
-//! null.
+//! "gaps":{<gap closing counts>},"before":{<check counts>},"after":{<check counts>}
+//! [,"reread":{<check counts>}]}`; with `options.elements` the `before`, `after` (and `reread`)
+//! objects carry their `elements`. `output` is left out when empty, `read` when null. `reread`
+//! (the written file as a reader gets it back: STL welds split vertex copies by position) is
+//! written exactly when `reread` is not null.
 std::string repair_report_json(const std::string& file, const std::string& output,
                                const RepairReport& report, const ReadInfo* read = nullptr,
-                               const ReportJsonOptions& options = {});
+                               const ReportJsonOptions& options = {},
+                               const DefectReport* reread = nullptr);
 
 //! What one way of building an OpenMesh mesh from a soup kept (for `compare`).
 struct BuildFigures {
@@ -68,13 +71,15 @@ std::string compare_report_json(const std::string& file, std::size_t soup_vertic
 
 //! One line of `batch --json`: `{"schema_version":1,"kind":"batch","file":...,"output":...,
 //! "status":"clean"|"repaired"|"failed"|"skipped"[,"reason":...][,"read":{...}]
-//! [,<repair counts>,"before":{...},"after":{...}]}`. The repair counts and `before`/`after` are
-//! those of repair_report_json() and are present exactly when `report` is not null; `reason`
-//! (why it failed or was skipped) exactly when it is not empty; `output` when not empty.
+//! [,<repair counts>,"gaps":{...},"before":{...},"after":{...}[,"reread":{...}]]}`. The repair
+//! counts, `gaps` and `before`/`after` are those of repair_report_json() and are present exactly
+//! when `report` is not null (`reread` when `reread` is not null too); `reason` (why it failed or
+//! was skipped) exactly when it is not empty; `output` when not empty.
 std::string batch_record_json(const std::string& file, const std::string& output,
                               const char* status, const std::string& reason,
                               const RepairReport* report, const ReadInfo* read = nullptr,
-                              const ReportJsonOptions& options = {});
+                              const ReportJsonOptions& options = {},
+                              const DefectReport* reread = nullptr);
 
 //! Converts a string of bytes to valid UTF-8 as described above (U+FFFD per invalid byte).
 std::string to_valid_utf8(const std::string& bytes);
