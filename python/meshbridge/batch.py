@@ -74,11 +74,13 @@ class BatchSummary:
         for line in self.sorted_records():
             r = json.loads(line)
             if r["status"] in ("clean", "repaired"):
+                # An STL output counts as it will be re-read ("reread"), as in the CLI.
+                after = r.get("reread", r["after"])
                 rows.append(
                     f"| {r['file']} | {r['status']} | {r['faces_in']} | "
                     f"{r['before']['singular_edges']} | {r['before']['singular_vertices']} | "
-                    f"{r['faces_out']} | {r['after']['components']} | "
-                    f"{'yes' if r['after']['watertight'] else 'no'} |"
+                    f"{r['faces_out']} | {after['components']} | "
+                    f"{'yes' if after['watertight'] else 'no'} |"
                 )
             else:
                 rows.append(f"| {r['file']} | {r['status']} | {r.get('reason', '')} | | | | | |")
