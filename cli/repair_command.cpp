@@ -76,13 +76,15 @@ int run_repair(RepairArguments& arguments) {
     ProgressDisplay progress(in, progress_wanted(arguments.progress), progress_wanted(false),
                              repair_plan());
     progress.stage(Stage::read, 0);
-    const Soup soup = read_soup(in, &info);
+    MeshAttributes attributes;
+    const Soup soup = read_soup(in, &info, &attributes);
     options.progress = progress.callback();
     result = repair(soup, options);
     progress.stage(Stage::write, 0);
     apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
                    separate_summary);
-    write_mesh(out, result.mesh);
+    const MeshAttributes carried = carry_attributes(attributes, result.mesh);
+    write_mesh(out, result.mesh, &carried);
     if (is_stl_path(out))
       reread = detect_as_reread(out);
     if (!arguments.report.empty()) {

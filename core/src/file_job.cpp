@@ -190,9 +190,10 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
   bool read = false;
   try {
     Soup soup;
+    MeshAttributes attributes;
     {
       const std::lock_guard<std::mutex> guard(openmesh_io_lock());
-      soup = read_soup(job.input, &info);
+      soup = read_soup(job.input, &info, &attributes);
     }
     read = true;
     RepairResult repaired = repair(soup, options.repair);
@@ -213,7 +214,8 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     }
     {
       const std::lock_guard<std::mutex> guard(openmesh_io_lock());
-      write_mesh(job.output, repaired.mesh);
+      const MeshAttributes carried = carry_attributes(attributes, repaired.mesh);
+      write_mesh(job.output, repaired.mesh, &carried);
     }
     result.report = std::move(repaired.report);
     if (lower(fs::path(job.output).extension().string()) == ".stl") {

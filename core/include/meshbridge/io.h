@@ -94,6 +94,14 @@ struct MeshAttributes {
 Soup read_soup(const std::string& path, ReadInfo* info = nullptr,
                MeshAttributes* attributes = nullptr);
 
+//! The attributes of a repaired mesh: per-vertex colours through `mesh.vertex_origin`, per-face
+//! colours through `mesh.face_origin` (the copies of a split vertex and the pieces of a split
+//! face carry their original's colour), OBJ groups moved to the first output face of each (a
+//! group left with no face gives way to the next one that starts there), `double_precision`
+//! kept. An origin outside the input (a face added by repair) gets the default colour.
+//! \pre `mesh.face_origin` is non-decreasing (repair keeps the face order)
+MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& mesh);
+
 //! True if `path` has an extension read_soup/write_mesh handle (.obj .off .ply .stl, any case).
 bool is_supported_mesh_file(const std::string& path);
 
