@@ -68,6 +68,9 @@ Input decode(const std::uint8_t* data, std::size_t size) {
   Input input;
   const std::uint8_t flags = bytes.u8();
   RepairOptions& o = input.options;
+  // Gap closing moves welded vertices, which the provenance invariants below do not allow for
+  // yet; this target fuzzes the pairing pipeline with it off.
+  o.close_gaps.tolerance = 0;
   o.pairing = flags & 1 ? PairingPolicy::combinatorial : PairingPolicy::geometric;
   o.orient = !(flags & 2);
   o.stitch = !(flags & 4);

@@ -93,7 +93,11 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
       detail::read_stl(file, soup, counts, attributes);
       break;
     case Format::threemf:
+#ifdef MESHBRIDGE_WITH_3MF
       detail::read_3mf(file, soup, counts, attributes);
+#else
+      throw ReadError(path + ": this build of MeshBridge has no 3MF support (lib3mf 1.x)");
+#endif
       break;
     case Format::unknown:
       break;
@@ -148,7 +152,11 @@ void write_mesh(const std::string& path, const IndexedMesh& mesh, const MeshAttr
         detail::write_stl(out, mesh, attributes, options);
         break;
       case Format::threemf:
+#ifdef MESHBRIDGE_WITH_3MF
         detail::write_3mf(out, mesh, attributes, options);
+#else
+        throw WriteError(path + ": this build of MeshBridge has no 3MF support (lib3mf 1.x)");
+#endif
         break;
       case Format::unknown:
         break;
