@@ -29,7 +29,7 @@ set -euo pipefail
 root=${1:-${MESHBRIDGE_SID_ROOT:-/var/cache/meshbridge/sid-root}}
 mirror=${MESHBRIDGE_SID_MIRROR:-http://deb.debian.org/debian}
 # Bump when the recipe below changes: a root made by another recipe is completed (steps 2-5).
-recipe=4
+recipe=5
 packages=(nlohmann-json3-dev meshlab g++ cmake make qtbase5-dev libqt5opengl5-dev libeigen3-dev libglew-dev
           libopenmesh11.0 xz-utils
           # MeshLab's own plugins that Debian's meshlab package does not pull in: without them
