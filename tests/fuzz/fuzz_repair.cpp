@@ -10,7 +10,8 @@
 //   byte 0     options: bit 0 combinatorial pairing, 1 no orientation, 2 no stitching,
 //              3 cut non-orientable, 4 remove duplicates, 5 remove degenerate,
 //              6 remove isolated vertices, 7 no detection before/after
-//   u16        vertex count (at most 1024)
+//   u16        vertex count (low 15 bits, at most 1024); the top bit turns gap closing on at
+//              the automatic tolerance (off otherwise)
 //   per vertex a mode byte m, then by m % 4:
 //              0: 3 x int8 (grid positions: exact ties, coincident and coplanar faces)
 //              1: 3 x float32 (anything, NaN and infinity included)
@@ -68,9 +69,6 @@ Input decode(const std::uint8_t* data, std::size_t size) {
   Input input;
   const std::uint8_t flags = bytes.u8();
   RepairOptions& o = input.options;
-  // Gap closing moves welded vertices, which the provenance invariants below do not allow for
-  // yet; this target fuzzes the pairing pipeline with it off.
-  o.close_gaps.tolerance = 0;
   o.pairing = flags & 1 ? PairingPolicy::combinatorial : PairingPolicy::geometric;
   o.orient = !(flags & 2);
   o.stitch = !(flags & 4);
@@ -81,7 +79,12 @@ Input decode(const std::uint8_t* data, std::size_t size) {
   o.detect_before_after = !(flags & 128);
 
   Soup& soup = input.soup;
-  const std::size_t vertices = bytes.u16() % 1025;
+  const std::uint16_t vertex_word = bytes.u16();
+  const std::size_t vertices = (vertex_word & 0x7FFF) % 1025;
+  // Gap closing off, or on the top bit at the automatic tolerance (as users get it); with the
+  // near-coincident vertex mode below it welds and closes T-junctions.
+  if (!(vertex_word & 0x8000))
+    o.close_gaps.tolerance = 0;
   for (std::size_t v = 0; v < vertices && !bytes.empty(); ++v) {
     const std::uint8_t mode = bytes.u8();
     Point p(0, 0, 0);

@@ -113,3 +113,59 @@ TEST(Orientation, side_by_side_shells_are_not_nested) {
       EXPECT_NEAR(o.volume[f], expected[to_original[f]], 1e-9) << "face " << f;
   });
 }
+
+TEST(Orientation, shells_with_faces_wound_either_way_still_nest) {
+  // Some faces of both shells given reversed: the nesting test must see each shell as the
+  // faces will run once made consistent, not as stored (a winding number over mixed windings
+  // is no integer, and the cavity would come out outward).
+  Soup soup;
+  add_cube(soup, 0, 3, true);
+  add_cube(soup, 1, 1, false);
+  for (std::size_t f : {1u, 4u, 6u, 9u, 11u})
+    soup = with_face_reversed(soup, f);
+  std::vector<double> expected(12, 27.0);
+  for (int f = 6; f < 12; ++f)
+    expected[f] = -1.0;
+  for_face_orders(soup, 200, [&](const Soup& s, const std::vector<Index>& to_original) {
+    expect_volumes(s, to_original, expected);
+  });
+}
+
+TEST(Orientation, repairing_the_output_again_reverses_nothing) {
+  // Decisions that rounding could tip (a zero-area pillow, a shell touching its container, a
+  // model far from the origin) must come out the same on the output, which is stored reversed
+  // and renumbered: repair is idempotent.
+  std::vector<Soup> cases;
+  {
+    Soup pillow;  // two triangles back to back on three collinear points: no area, no volume
+    const double t = -6.3e-05;
+    for (const Point& p : {Point(0, 0, 0), Point(-1, -1, -1), Point(t, t, t)})
+      pillow.add_vertex(p);
+    pillow.add_polygon({0, 1, 2});
+    pillow.add_polygon({0, 0, 1, 2});
+    cases.push_back(pillow);
+  }
+  {
+    Soup touching;  // a cavity sharing a face's plane with its container, half the faces wrong
+    add_cube(touching, 0, 3, true);
+    add_cube(touching, 0, 1, false);
+    for (std::size_t f : {0u, 3u, 7u, 8u})
+      touching = with_face_reversed(touching, f);
+    cases.push_back(touching);
+  }
+  {
+    Soup far;  // nested cubes 1e7 from the origin, both given the wrong way round
+    add_cube(far, 1e7, 3, false);
+    add_cube(far, 1e7 + 1, 1, true);
+    cases.push_back(far);
+  }
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    SCOPED_TRACE("case " + std::to_string(i));
+    const RepairResult once = repair(cases[i]);
+    const RepairResult twice = repair(once.mesh.soup);
+    EXPECT_EQ(twice.mesh.soup.corner_vertices, once.mesh.soup.corner_vertices);
+    EXPECT_EQ(twice.report.faces_flipped, 0u);
+  }
+  const RepairResult far = repair(cases[2]);
+  EXPECT_EQ(far.report.faces_flipped, 12u);  // outer turned outward, cavity toward the void
+}

@@ -34,22 +34,53 @@ struct Box {
 
 // Signed solid angle of triangle (a, b, c) seen from the origin (Van Oosterom and Strackee);
 // NaN if the origin lies on the triangle (in its plane, within rounding, and not outside it),
-// where the angle jumps by 4 pi and its sign is noise.
+// where the angle jumps by 4 pi and its sign is noise. Written so that swapping b and c gives
+// exactly the negated value (the numerator is antisymmetric, the denominator's roundings are
+// symmetric).
 double solid_angle(const Point& a, const Point& b, const Point& c) {
   const double la = a.norm(), lb = b.norm(), lc = c.norm();
   const double numerator = OpenMesh::dot(a, OpenMesh::cross(b, c));
+  const double lbc = lb * lc;
   const double denominator =
-      la * lb * lc + OpenMesh::dot(a, b) * lc + OpenMesh::dot(a, c) * lb + OpenMesh::dot(b, c) * la;
-  if (std::abs(numerator) <= 1e-9 * la * lb * lc && denominator <= 0)
+      la * lbc + OpenMesh::dot(b, c) * la + (OpenMesh::dot(a, b) * lc + OpenMesh::dot(a, c) * lb);
+  if (std::abs(numerator) <= 1e-9 * la * lbc && denominator <= 0)
     return std::numeric_limits<double>::quiet_NaN();
   return 2 * std::atan2(numerator, denominator);
+}
+
+bool position_less(const Point& p, const Point& q) {
+  return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3);
+}
+
+// Whether to walk polygon f from its first corner backwards: chosen by positions alone, so that
+// the polygon and its reversal (same first corner, see emit.cpp) are walked through the same
+// positions in the same order. A sum taken along that walk then comes out bit for bit the same
+// (or exactly negated) after the repair reversed the face or renumbered its vertices, and so do
+// the decisions made on it: repairing the output again decides the same.
+bool walk_backwards(const Soup& soup, PolygonView polygon) {
+  const std::size_t k = polygon.size();
+  for (std::size_t i = 1; i < k; ++i) {
+    const Point& forward = soup.positions[polygon[i]];
+    const Point& backward = soup.positions[polygon[k - i]];
+    if (position_less(forward, backward))
+      return false;
+    if (position_less(backward, forward))
+      return true;
+  }
+  return false;
+}
+
+// Corner i of polygon along the walk (i = 0 is the first corner either way).
+Index walked(PolygonView polygon, bool backwards, std::size_t i) {
+  return polygon[backwards && i > 0 ? polygon.size() - i : i];
 }
 
 Point centroid(const Soup& soup, Index f) {
   Point sum(0, 0, 0);
   const PolygonView polygon = soup.polygon(f);
-  for (Index v : polygon)
-    sum += soup.positions[v];
+  const bool backwards = walk_backwards(soup, polygon);
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    sum += soup.positions[walked(polygon, backwards, i)];
   return sum / static_cast<double>(polygon.size());
 }
 
@@ -119,21 +150,25 @@ class BoxGrid {
 
 }  // namespace
 
-double winding_number(const Soup& soup, const Index* faces_begin, const Index* faces_end,
-                      const Point& p) {
+double winding_number(const Soup& soup, const std::vector<char>& flipped, const Index* faces_begin,
+                      const Index* faces_end, const Point& p) {
   double total = 0;
   for (const Index* f = faces_begin; f != faces_end; ++f) {
     const PolygonView polygon = soup.polygon(*f);
+    const bool backwards = walk_backwards(soup, polygon);
     const Point a = soup.positions[polygon[0]] - p;
+    double angle = 0;
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      total += solid_angle(a, soup.positions[polygon[i]] - p, soup.positions[polygon[i + 1]] - p);
+      angle += solid_angle(a, soup.positions[walked(polygon, backwards, i)] - p,
+                           soup.positions[walked(polygon, backwards, i + 1)] - p);
     }
+    total += backwards != (flipped[*f] != 0) ? -angle : angle;
   }
   return total / (4 * kPi);
 }
 
-std::vector<Index> nesting_depths(const Soup& soup, const std::vector<Index>& face_shell,
-                                  std::size_t num_shells) {
+std::vector<Index> nesting_depths(const Soup& soup, const std::vector<char>& flipped,
+                                  const std::vector<Index>& face_shell, std::size_t num_shells) {
   std::vector<Index> depth(num_shells, 0);
   if (num_shells < 2)
     return depth;
@@ -173,7 +208,8 @@ std::vector<Index> nesting_depths(const Soup& soup, const std::vector<Index>& fa
       bool inside = false;
       for (std::size_t k = 0; k < tries; ++k) {
         const Index f = shell_faces[shell_begin[s] + k * n / tries];
-        const double w = std::abs(winding_number(soup, t_first, t_last, centroid(soup, f)));
+        const double w =
+            std::abs(winding_number(soup, flipped, t_first, t_last, centroid(soup, f)));
         if (std::isnan(w))
           continue;  // the point lies on T: undecided
         if (w > 1 - kDecided && std::abs(w - std::round(w)) < kDecided) {

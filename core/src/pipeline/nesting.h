@@ -11,8 +11,12 @@ namespace meshbridge::detail {
 //! The nesting depth of every closed shell: the number of other shells that contain it (0 for
 //! an outer boundary, 1 for a cavity, 2 for an island inside a cavity, ...).
 //!
+//! \param flipped #F: faces that run reversed (as SidePairing::flipped): a shell is consistently
+//!        oriented once these are taken into account.
 //! \param face_shell #F: shell of each face in 0..num_shells-1, or kNoIndex for faces of no
 //!        closed shell (they neither contain nor are contained).
+//! The result depends on positions only, not on vertex numbering or on which way each face is
+//! stored, so repairing the output again gives the same depths.
 //! Shell T contains shell S if S's bounding box lies within T's and points of S are inside T:
 //! at the centroids of up to 8 faces spread over S, the generalized winding number of T's faces
 //! (sum of signed solid angles / 4 pi, either orientation of T) is within 0.1 of a nonzero
@@ -21,12 +25,12 @@ namespace meshbridge::detail {
 //! means S is not inside T.
 //! Candidates come from a uniform grid over the shells' boxes (about one cell per shell), so
 //! shells that do not nest cost O(#F + #shells); each candidate pair costs O(faces of T).
-std::vector<Index> nesting_depths(const Soup& soup, const std::vector<Index>& face_shell,
-                                  std::size_t num_shells);
+std::vector<Index> nesting_depths(const Soup& soup, const std::vector<char>& flipped,
+                                  const std::vector<Index>& face_shell, std::size_t num_shells);
 
-//! Generalized winding number of the given faces of `soup` at `p`; NaN if `p` lies on one of
-//! them (within rounding).
-double winding_number(const Soup& soup, const Index* faces_begin, const Index* faces_end,
-                      const Point& p);
+//! Generalized winding number (Jacobson et al. 2013) of the given faces of `soup`, face f
+//! reversed where flipped[f], at `p`; NaN if `p` lies on one of them (within rounding).
+double winding_number(const Soup& soup, const std::vector<char>& flipped, const Index* faces_begin,
+                      const Index* faces_end, const Point& p);
 
 }  // namespace meshbridge::detail

@@ -5,11 +5,29 @@
 
 #include "union_find.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace meshbridge::detail {
 
 namespace {
+
+// Rounding-error scales are multiplied by this before a value is trusted over them: a few
+// thousand times the double precision epsilon, so far above any real accumulated error.
+constexpr double kRoundingMargin = 1e-12;
+
+// Sum of the magnitudes of the products newell_normal() adds up for face f: its rounding error
+// is at most a few epsilons of this.
+double newell_rounding_scale(const Soup& soup, Index f) {
+  const PolygonView polygon = soup.polygon(f);
+  double scale = 0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Point& p = soup.positions[polygon[i]];
+    const Point& q = soup.positions[polygon[(i + 1) % polygon.size()]];
+    scale += (p - q).norm() * (p + q).norm();
+  }
+  return scale;
+}
 
 // Two paired sides run the same way iff they start at the same vertex.
 bool same_way(const Soup& soup, Index c, Index m) {
@@ -24,16 +42,15 @@ bool same_way(const Soup& soup, Index c, Index m) {
 //   a volume;
 // - otherwise its faces' windings as given, weighted by area: reversed if more area would end
 //   up reversed than not; on a tie, if more faces would (then: kept).
-std::vector<char> open_component_reversal(const Soup& soup, const std::vector<Index>& corner_face,
-                                          const std::vector<Index>& mate,
-                                          const std::vector<char>& flipped,
-                                          const std::vector<Index>& root,
-                                          const std::vector<Index>& undecided, std::size_t count,
-                                          const std::vector<double>& volume,
-                                          const std::vector<double>& magnitude) {
+std::vector<char> open_component_reversal(
+    const Soup& soup, const std::vector<Index>& corner_face, const std::vector<Index>& mate,
+    const std::vector<char>& flipped, const std::vector<Index>& root,
+    const std::vector<Index>& undecided, std::size_t count, const std::vector<Point>& reference,
+    const std::vector<double>& volume, const std::vector<double>& noise) {
   std::vector<Point> area(count, Point(0, 0, 0)), centroid(count, Point(0, 0, 0));
   std::vector<double> corners(count, 0.0), winding(count, 0.0), reach(count, 0.0);
   std::vector<double> total_area(count, 0.0), reversed_faces(count, 0.0), faces(count, 0.0);
+  std::vector<double> area_noise(count, 0.0);
   const std::size_t num_faces = soup.num_faces();
   for (Index f = 0; f < num_faces; ++f) {
     const Index u = undecided[root[f]];
@@ -41,6 +58,7 @@ std::vector<char> open_component_reversal(const Soup& soup, const std::vector<In
       continue;
     const Point n = newell_normal(soup, f);
     area[u] += flipped[f] ? -n : n;
+    area_noise[u] += newell_rounding_scale(soup, f);
     winding[u] += flipped[f] ? -n.norm() : n.norm();
     total_area[u] += n.norm();
     reversed_faces[u] += flipped[f];
@@ -62,9 +80,14 @@ std::vector<char> open_component_reversal(const Soup& soup, const std::vector<In
     const Index u = undecided[r];
     if (u == kNoIndex)
       continue;
-    const double about_centroid = volume[r] - OpenMesh::dot(centroid[u], area[u]);
-    const bool volume_decides = std::abs(about_centroid) > area[u].norm() * reach[u] &&
-                                std::abs(about_centroid) > 1e-9 * magnitude[r];
+    // The volume about the centroid, and a bound on its rounding error far above the real one,
+    // so that a volume that is rounding noise (a flat or zero-area component) never decides:
+    // the decision must come out the same when the output is repaired again.
+    const Point offset = centroid[u] - reference[r];
+    const double about_centroid = volume[r] - OpenMesh::dot(offset, area[u]);
+    const double rounding = kRoundingMargin * (noise[r] + offset.norm() * area_noise[u]);
+    const bool volume_decides =
+        std::abs(about_centroid) > area[u].norm() * reach[u] && std::abs(about_centroid) > rounding;
     if (volume_decides) {
       reverse[u] = about_centroid < 0;
     } else if (std::abs(winding[u]) > 1e-9 * total_area[u]) {
@@ -171,20 +194,31 @@ void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairin
     if (mate[c] != kNoIndex)
       components.unite(corner_face[c], corner_face[mate[c]]);
   }
-  // Six times the signed volume about the origin, as the faces will run.
+  // Six times the signed volume, as the faces will run, about a corner of the component (its
+  // root face's first corner, which reversal keeps in place); the sum of its terms' magnitudes;
+  // and a bound on its rounding error (the sum of |a| |b| |c| over the terms a . (b x c)).
   std::vector<char> open(num_faces, 0);
-  std::vector<double> volume(num_faces, 0.0), magnitude(num_faces, 0.0);
+  std::vector<double> volume(num_faces, 0.0), magnitude(num_faces, 0.0), noise(num_faces, 0.0);
   std::vector<Index> root(num_faces);
+  std::vector<Point> reference(num_faces);
+  for (Index f = 0; f < num_faces; ++f)
+    root[f] = components.find(f);
+  for (Index r = 0; r < num_faces; ++r) {
+    if (root[r] == r)
+      reference[r] = soup.positions[soup.corner_vertices[soup.face_begin[r]]];
+  }
   for (Index f = 0; f < num_faces; ++f) {
-    const Index r = root[f] = components.find(f);
+    const Index r = root[f];
     const PolygonView polygon = soup.polygon(f);
     double v = 0;
-    const Point& p0 = soup.positions[polygon[0]];
+    const Point a = soup.positions[polygon[0]] - reference[r];
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      const double term = OpenMesh::dot(
-          p0, OpenMesh::cross(soup.positions[polygon[i]], soup.positions[polygon[i + 1]]));
+      const Point b = soup.positions[polygon[i]] - reference[r];
+      const Point c = soup.positions[polygon[i + 1]] - reference[r];
+      const double term = OpenMesh::dot(a, OpenMesh::cross(b, c));
       v += term;
       magnitude[r] += std::abs(term);
+      noise[r] += a.norm() * b.norm() * c.norm();
     }
     volume[r] += flipped[f] ? -v : v;
     for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
@@ -198,7 +232,8 @@ void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairin
   for (Index r = 0; r < num_faces; ++r) {
     if (root[r] != r)
       continue;
-    const bool flat = std::abs(volume[r]) <= 1e-9 * magnitude[r];
+    const bool flat =
+        std::abs(volume[r]) <= std::max(1e-9 * magnitude[r], kRoundingMargin * noise[r]);
     if (open[r] || flat) {
       undecided[r] = static_cast<Index>(num_undecided++);
     } else {
@@ -210,7 +245,7 @@ void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairin
     std::vector<Index> face_shell(num_faces);
     for (Index f = 0; f < num_faces; ++f)
       face_shell[f] = shell[root[f]];
-    const std::vector<Index> depth = nesting_depths(soup, face_shell, num_shells);
+    const std::vector<Index> depth = nesting_depths(soup, flipped, face_shell, num_shells);
     for (Index r = 0; r < num_faces; ++r) {
       if (shell[r] != kNoIndex)
         reverse[r] = (volume[r] < 0) != (depth[shell[r]] % 2 == 1);
@@ -218,7 +253,7 @@ void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairin
   }
   if (num_undecided > 0) {
     const std::vector<char> decided = open_component_reversal(
-        soup, corner_face, mate, flipped, root, undecided, num_undecided, volume, magnitude);
+        soup, corner_face, mate, flipped, root, undecided, num_undecided, reference, volume, noise);
     for (Index r = 0; r < num_faces; ++r) {
       if (undecided[r] != kNoIndex)
         reverse[r] = decided[undecided[r]];

@@ -37,9 +37,11 @@ bool has_inconsistent_pair(const Soup& soup, const std::vector<Index>& mate);
 //!   outward (positive volume), cavities toward the void (negative), islands inside cavities
 //!   outward again;
 //! - open components, and closed ones of no volume (|volume| <= 1e-9 times the sum of its terms'
-//!   magnitudes, such as two faces glued back to back), on their best evidence: their volume
-//!   when capping their holes could not change its sign, otherwise the area-weighted majority of
-//!   their faces' windings as given (see orientation.cpp).
+//!   magnitudes, or within a bound on its rounding error: two faces glued back to back, a
+//!   zero-area sliver pair), on their best evidence: their volume when capping their holes could
+//!   not change its sign and it is far above its rounding error, otherwise the area-weighted
+//!   majority of their faces' windings as given (see orientation.cpp). Rounding noise never
+//!   decides, so repairing the output again reverses nothing.
 void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing);
 
 }  // namespace meshbridge::detail
