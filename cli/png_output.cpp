@@ -4,19 +4,15 @@
 #include "meshbridge/errors.h"
 #include "meshbridge/io.h"
 
+#include <QBuffer>
 #include <QByteArray>
-#include <QFile>
 #include <QImageWriter>
 #include <QString>
 #include <QtGlobal>
 
-#include <unistd.h>
-
 #include <cctype>
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <iostream>
+#include <string_view>
 
 namespace meshbridge::cli {
 
@@ -36,16 +32,16 @@ bool ends_with_png(std::string path) {
 }
 
 void write_png_atomically(const std::string& path, const QImage& image) {
-  write_file_atomically(path, [&](const std::string& temporary) {
-    QImageWriter writer(QFile::decodeName(temporary.c_str()), QByteArrayLiteral("png"));
-    errno = 0;
-    if (!writer.write(image)) {
-      // Qt says "Unknown error" for a full disk; the OS reason, when there is one, says more.
-      const std::string reason =
-          errno != 0 ? std::strerror(errno) : writer.errorString().toStdString();
-      throw WriteError(path + ": cannot write the PNG (" + reason + ")");
-    }
-  });
+  // Encoded in memory first: Qt's PNG writer leaks its row buffer when libpng fails on a full
+  // disk, and our atomic writer names the OS reason for any failure to store the bytes.
+  QByteArray png;
+  QBuffer buffer(&png);
+  buffer.open(QIODevice::WriteOnly);
+  QImageWriter writer(&buffer, QByteArrayLiteral("png"));
+  if (!writer.write(image))
+    throw WriteError(path + ": cannot encode the PNG (" + writer.errorString().toStdString() + ")");
+  write_bytes_atomically(path,
+                         std::string_view(png.constData(), static_cast<std::size_t>(png.size())));
 }
 
 OffscreenQt::OffscreenQt() : previous_(qInstallMessageHandler(&filter_qt_message)) {

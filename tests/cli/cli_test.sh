@@ -547,7 +547,7 @@ messages)
     expect_in "$work/err" "$work/full/r.json: write failed (No space left on device)"
     expect_exit 2 full_run sh -c 'head -c 9000 /dev/zero >"$0/fill" 2>/dev/null; exec "$@"' \
       "$work/full" "$mb" snapshot "$models/prisms24.obj" "$work/full/a.png"
-    expect_in "$work/err" "$work/full/a.png: cannot write the PNG (No space left on device)"
+    expect_in "$work/err" "$work/full/a.png: write failed (No space left on device)"
   else
     echo "messages: disk-full checks skipped (unshare -rm not permitted here)"
   fi
