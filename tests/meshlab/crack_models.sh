@@ -83,7 +83,8 @@ expect_not_in_log() {
 }
 
 # The gap closing lines of the cube written twice with one float32 step (2^-17) between copies
-# (automatic tolerance 110 / 2^21; the largest move is sqrt(3) * 2^-17).
+# (automatic tolerance (110 + 2^-17) / 2^21, the largest coordinate being a copy of corner 7;
+# the largest move is sqrt(3) * 2^-17).
 cube_detect_line="gaps (weld tolerance 5.24521e-05, automatic): Repair would weld 6 vertices (largest move 1.32145e-05, 0 refused: same polygon) and close 0 T-junction cracks (0 sides split)"
 cube_repair_line="gaps (tolerance 5.24521e-05): 6 vertices welded (largest move 1.32145e-05, 0 refused: same polygon), 0 T-junctions closed (0 sides split)"
 box_detect_line="gaps (weld tolerance 9.53674e-07, automatic): Repair would weld 0 vertices (largest move 0, 0 refused: same polygon) and close 2 T-junction cracks (2 sides split)"
