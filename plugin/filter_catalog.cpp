@@ -28,7 +28,9 @@ const FilterText kDetect = {
     "are left alone. Optionally selects and colours the faces at the singular elements so "
     "MeshLab's selection tools can go on from there.<br>"
     "Edges are pairs of vertex indices: vertices that merely coincide are not merged (use "
-    "<i>Remove Duplicate Vertices</i> first if they should be).<br>"
+    "<i>Remove Duplicate Vertices</i> first if they should be). The log also says what Repair's "
+    "gap closing would weld and close with the given <i>Weld tolerance</i> (cracks that "
+    "rounding left between sides that should meet), without moving anything.<br>"
     "MeshBridge: edge bridges on top of OpenMesh.",
 };
 
@@ -38,6 +40,9 @@ const FilterText kRepair = {
     "Lossless manifold repair of the current layer, in place: every face is kept with its "
     "attributes (colour, quality, normal, wedge texture coordinates) and its place in face "
     "order; every edge ends up with at most two faces and every vertex with one fan.<br>"
+    "First, cracks are closed: boundary vertices closer than the <i>Weld tolerance</i> are "
+    "welded (never two corners of one face) and a boundary vertex lying on another boundary "
+    "side splits it (T-junction cracks); the log says how many and the largest move.<br>"
     "The faces of each singular edge are paired by their angular order around the edge (faces "
     "that close a solid are paired first, a sheet between them is left over), then vertices "
     "with several fans are split; each copy carries its original's colour, quality, normal and "
@@ -46,7 +51,9 @@ const FilterText kRepair = {
     "One pass is enough: the repair is idempotent.<br>"
     "Unlike <i>Repair non Manifold Edges</i> it deletes no face and does not cut every face on "
     "a singular edge loose. The repair counts go to the log (MeshLab 2022 and later also "
-    "return them as the filter's result, a dictionary in pymeshlab).",
+    "return them as the filter's result, a dictionary in pymeshlab). When the layer came from "
+    "STL or vertices were split, the log also says what an STL file of the result reads back "
+    "as: STL stores no shared vertices, so its readers weld split copies together again.",
 };
 
 ParameterSpec spec(ParameterSpec::Kind kind, const char* name, const char* label,
