@@ -107,9 +107,9 @@ struct DetectOutcome {
   //! the layer itself is not changed).
   CloseGapsReport gaps;
   //! Plain text, one line per line: the report, what gap closing would do ("gaps (weld
-  //! tolerance T): would weld N vertices ..."), the selection, then as its last line the
-  //! summary "Defect layer '<label>': N red (singular) edges, M green (boundary) edges, K
-  //! singular vertex markers". Pass it through html_log_lines() for MeshLab's log.
+  //! tolerance T[, automatic]): Repair would weld N vertices ..."), the selection, then as its
+  //! last line the summary "Defect layer '<label>': N red (singular) edges, M green (boundary)
+  //! edges, K singular vertex markers". Pass it through html_log_lines() for MeshLab's log.
   std::string log;
   //! The numbers, in this order: vertices, faces (triangles), edges, singular_edges,
   //! singular_edge_contenders (sides on singular edges, summed), singular_vertices,
@@ -155,9 +155,10 @@ struct RepairOutcome {
   //! split, absent otherwise.
   std::optional<DefectReport> reread;
   //! Plain text, one line per line: the counts (the core's, gap closing first), then with
-  //! `reread` what an STL save reads back as ("Saved as STL and read back, this layer has S
-  //! singular edges and V singular vertices ..."), and (when vertices were split) which formats
-  //! keep the repair. Pass it through html_log_lines() for MeshLab's log.
+  //! `reread` what an STL save reads back as ("STL re-read: saved as STL and loaded again, this
+  //! layer has singular edges S, singular vertices V, watertight yes|no", and why when vertices
+  //! were split), and (when vertices were split) which formats keep the repair. Pass it through
+  //! html_log_lines() for MeshLab's log.
   std::string log;
   //! The numbers, in this order: vertices_in, vertices_out, faces_in, faces_out (the layer's,
   //! faces in triangles); the core's vertices_split, faces_flipped, sides_cut,

@@ -93,8 +93,9 @@ const std::vector<ParameterSpec>& parameters(FilterId id);
 //! (kAutoWeldTolerance), 0 off, anything else the distance itself.
 CloseGapsOptions close_gaps_options(double weld_tolerance, bool close_t_junctions);
 
-//! Reads the gap closing parameters of either filter (getAbsPerc, getBool). A script that predates
-//! them gets the core's defaults (automatic tolerance, T-junctions closed).
+//! Reads the gap closing parameters of either filter (getAbsPerc, getBool). A list without them
+//! takes the core's defaults (automatic tolerance, T-junctions closed); MeshLab itself always
+//! passes them (meshlabserver 2020.09 refuses a script that lacks one).
 template <class ParameterList>
 CloseGapsOptions close_gaps_options(const ParameterList& params) {
   const CloseGapsOptions defaults;
@@ -124,7 +125,7 @@ DetectOptions detect_options(const ParameterList& params) {
 }
 
 //! Reads the repair filter's options from a MeshLab RichParameterList (getBool, getEnum,
-//! getAbsPerc, getInt).
+//! getAbsPerc).
 template <class ParameterList>
 RepairFilterOptions repair_options(const ParameterList& params) {
   RepairFilterOptions options;
