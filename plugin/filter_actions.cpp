@@ -3,7 +3,9 @@
 
 #include "defect_tubes.h"
 
+#include "meshbridge/close_gaps.h"
 #include "meshbridge/detect_defects.h"
+#include "meshbridge/stl_round_trip.h"
 
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/flag.h>
@@ -11,6 +13,8 @@
 #include <vcg/complex/algorithms/update/selection.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
+#include <cctype>
+#include <sstream>
 #include <string>
 
 namespace meshbridge::meshlab {
@@ -41,6 +45,48 @@ FilterCount count(const char* name, std::size_t value) {
   return {name, static_cast<long long>(value), false};
 }
 
+FilterCount real(const char* name, double value) {
+  FilterCount c{name, 0, false};
+  c.is_real = true;
+  c.real = value;
+  return c;
+}
+
+//! Gap closing's counts, keys as in docs/report-schema.md's `gaps`.
+void add_gap_counts(std::vector<FilterCount>& counts, const CloseGapsReport& g) {
+  counts.push_back(real("gaps.tolerance", g.tolerance));
+  counts.push_back(count("gaps.vertices_welded", g.vertices_welded));
+  counts.push_back(real("gaps.largest_weld_distance", g.largest_weld_distance));
+  counts.push_back(count("gaps.welds_refused", g.welds_refused));
+  counts.push_back(count("gaps.t_junctions_closed", g.t_junctions_closed));
+  counts.push_back(count("gaps.sides_split", g.sides_split));
+}
+
+//! Detect's line on what Repair's gap closing would do (the CLI's `check` says the same).
+std::string would_close_gaps_text(const CloseGapsReport& g, bool automatic) {
+  std::ostringstream out;
+  if (!(g.tolerance > 0))
+    return "gaps: not closed (weld tolerance 0)";
+  out << "gaps (weld tolerance " << g.tolerance << (automatic ? ", automatic" : "")
+      << "): Repair would weld " << g.vertices_welded << " vertices (largest move "
+      << g.largest_weld_distance << ", " << g.welds_refused << " refused: same polygon) and close "
+      << g.t_junctions_closed << " T-junction cracks (" << g.sides_split << " sides split)";
+  return out.str();
+}
+
+//! The repaired layer's line on what an STL file of it reads back as.
+std::string stl_reread_text(const DefectReport& reread, std::size_t vertices_split) {
+  std::string text = "STL re-read: saved as STL and loaded again, this layer has singular edges " +
+                     std::to_string(reread.singular_edges.size()) + ", singular vertices " +
+                     std::to_string(reread.num_singular_vertices()) + ", watertight " +
+                     (reread.watertight ? "yes" : "no");
+  if (vertices_split != 0) {
+    text += ". STL stores no shared vertices: every reader welds the " +
+            std::to_string(vertices_split) + " split vertex copies together again";
+  }
+  return text;
+}
+
 void clear_selection(CMeshO& mesh) {
   vcg::tri::UpdateSelection<CMeshO>::FaceClear(mesh);
   vcg::tri::UpdateSelection<CMeshO>::VertexClear(mesh);
@@ -48,6 +94,15 @@ void clear_selection(CMeshO& mesh) {
 }
 
 }  // namespace
+
+bool is_stl_file_name(const std::string& file_name) {
+  if (file_name.size() < 4)
+    return false;
+  std::string ext = file_name.substr(file_name.size() - 4);
+  for (char& c : ext)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".stl";
+}
 
 std::string defect_layer_label(const std::string& mesh_label) {
   std::string name = mesh_label;
@@ -107,6 +162,7 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
   DetectOutcome out;
   CMeshSoup soup = soup_from_cmesh(mesh);
   out.report = detect_defects(soup.soup);
+  out.gaps = close_gaps(soup.soup, options.close_gaps).report;
 
   // Nothing has changed so far; from here on only the selection, face colours and a new layer.
   if (options.colour_faces)
@@ -128,6 +184,7 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
 
   out.log = "MeshBridge defects of '" + label + "':\n";
   out.log += trimmed(to_text(out.report));
+  out.log += "\n" + would_close_gaps_text(out.gaps, options.close_gaps.tolerance < 0);
   if (options.select_faces || options.colour_faces) {
     out.log += "\n" + std::string(options.select_faces ? "Selected " : "Coloured ") +
                std::to_string(out.selection.faces) + " faces at singular edges/vertices";
@@ -171,6 +228,7 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
       count("selected_vertices", options.select_faces ? out.selection.vertices : 0),
       count("coloured_faces", options.colour_faces ? out.selection.faces : 0),
   };
+  add_gap_counts(out.counts, out.gaps);
   return out;
 }
 
@@ -213,6 +271,9 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
   out.defect_layers_removed = host.remove_layers(defect_layer_label(label));
   if (out.defect_layers_removed != 0)
     clear_selection(mesh);
+  // STL keeps no shared vertices: what a save of this layer as STL reads back as.
+  if (is_stl_file_name(host.file_name()) || out.report.vertices_split != 0)
+    out.reread = detect_defects(stl_round_trip(soup_from_cmesh(mesh).soup));
 
   const WriteBackReport& w = out.written;
   out.log = "MeshBridge repair of '" + label + "':\n";
@@ -233,12 +294,13 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
     out.log += "\nRemoved the defect layer '" + defect_layer_label(label) +
                "' and cleared the selection Detect made (run Detect again to check the result)";
   }
+  if (out.reread)
+    out.log += "\n" + stl_reread_text(*out.reread, out.report.vertices_split);
   if (out.report.vertices_split != 0) {
     out.log += "\nTo keep the repair, save as PLY, OBJ or OFF";
     out.log += host.can_save_3mf() ? " (or 3MF)" : "";
     out.log += ": they keep the " + std::to_string(out.report.vertices_split) +
-               " split vertices apart. STL stores no shared vertices, so loading an STL "
-               "re-welds them and the defects come back";
+               " split vertex copies apart";
   }
 
   const RepairReport& r = out.report;
@@ -273,6 +335,14 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
       count("degenerate_faces_kept", w.set_aside_faces_kept),
       count("polygons_triangulated", w.polygons_fanned),
   };
+  add_gap_counts(out.counts, r.gaps);
+  if (out.reread) {
+    const DefectReport& again = *out.reread;
+    out.counts.push_back(count("reread.singular_edges", again.singular_edges.size()));
+    out.counts.push_back(count("reread.singular_vertices", again.num_singular_vertices()));
+    out.counts.push_back(count("reread.boundary_edges", again.boundary_edges.size()));
+    out.counts.push_back({"reread.watertight", again.watertight ? 1 : 0, true});
+  }
   return out;
 }
 

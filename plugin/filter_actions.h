@@ -14,6 +14,7 @@
 #include "meshbridge/defect_report.h"
 #include "meshbridge/repair.h"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,6 +33,8 @@ struct FilterCount {
   std::string name;  //!< snake_case key, e.g. "singular_edges"
   long long value = 0;
   bool is_flag = false;  //!< a yes/no value (0 or 1), e.g. "watertight"
+  bool is_real = false;  //!< a real number (`real`, `value` unused), e.g. "gaps.tolerance"
+  double real = 0;
 };
 
 // ---- detect ----------------------------------------------------------------------------------
@@ -57,6 +60,9 @@ struct DetectOptions {
   bool colour_faces = false;
   //! What the defect layer holds. Default: tubes.
   DefectLayerForm layer_form = DefectLayerForm::tubes;
+  //! Detect reports what Repair's gap closing would weld and close with these options (it
+  //! changes nothing itself). Default: the core's (automatic tolerance, T-junctions closed).
+  CloseGapsOptions close_gaps;
 };
 
 //! What the filters need from MeshLab's document; each adapter implements it with its API's
@@ -75,7 +81,12 @@ class DocumentHost {
   virtual std::size_t remove_layers(const std::string& label) = 0;
   //! True if this MeshLab can save 3MF files (an exporter for it is loaded).
   virtual bool can_save_3mf() const = 0;
+  //! The file the current layer was loaded from (MeshModel::fullName()); empty if none.
+  virtual std::string file_name() const = 0;
 };
+
+//! True if `file_name` ends with ".stl" (any case).
+bool is_stl_file_name(const std::string& file_name);
 
 //! The label of the defect layer of a mesh labelled `mesh_label`: its name without the file
 //! extension, then " - defects" ("t_junction_rib.off" -> "t_junction_rib - defects"). Dots
@@ -92,9 +103,13 @@ struct DetectOutcome {
   DefectLayerCounts drawn;    //!< what the defect layer shows
   DefectSelection selection;  //!< faces and vertices selected (or coloured)
   std::string label;          //!< the defect layer's label (defect_layer_label())
-  //! Plain text, one line per line: the report, the selection, then as its last line the
-  //! summary "Defect layer '<label>': N red (singular) edges, M green (boundary) edges, K
-  //! singular vertex markers". Pass it through html_log_lines() for MeshLab's log.
+  //! What Repair's gap closing would do with `options.close_gaps` (close_gaps() on the layer;
+  //! the layer itself is not changed).
+  CloseGapsReport gaps;
+  //! Plain text, one line per line: the report, what gap closing would do ("gaps (weld
+  //! tolerance T[, automatic]): Repair would weld N vertices ..."), the selection, then as its
+  //! last line the summary "Defect layer '<label>': N red (singular) edges, M green (boundary)
+  //! edges, K singular vertex markers". Pass it through html_log_lines() for MeshLab's log.
   std::string log;
   //! The numbers, in this order: vertices, faces (triangles), edges, singular_edges,
   //! singular_edge_contenders (sides on singular edges, summed), singular_vertices,
@@ -102,7 +117,10 @@ struct DetectOutcome {
   //! degenerate_faces, faces_set_aside, zero_area_faces, duplicate_faces, inconsistent_edges,
   //! nonorientable_components, components, euler_characteristic, watertight (flag); the defect
   //! layer's red_edges, green_edges, singular_vertex_markers; selected_faces and
-  //! selected_vertices (0 unless `select_faces`), coloured_faces (0 unless `colour_faces`).
+  //! selected_vertices (0 unless `select_faces`), coloured_faces (0 unless `colour_faces`);
+  //! what gap closing would do: gaps.tolerance (real; 0 = off), gaps.vertices_welded,
+  //! gaps.largest_weld_distance (real), gaps.welds_refused, gaps.t_junctions_closed,
+  //! gaps.sides_split.
   std::vector<FilterCount> counts;
 };
 
@@ -132,8 +150,15 @@ struct RepairOutcome {
   WriteBackReport written;  //!< what the write-back into CMeshO did
   //! Defect layers of this mesh that were removed (they showed the defects before repair).
   std::size_t defect_layers_removed = 0;
-  //! Plain text, one line per line: the counts, then (when vertices were split) which formats
-  //! keep the repair. Pass it through html_log_lines() for MeshLab's log.
+  //! The repaired layer as an STL file of it reads back (detect_defects(stl_round_trip()) of
+  //! the layer's faces): computed when the layer was loaded from an STL file or vertices were
+  //! split, absent otherwise.
+  std::optional<DefectReport> reread;
+  //! Plain text, one line per line: the counts (the core's, gap closing first), then with
+  //! `reread` what an STL save reads back as ("STL re-read: saved as STL and loaded again, this
+  //! layer has singular edges S, singular vertices V, watertight yes|no", and why when vertices
+  //! were split), and (when vertices were split) which formats keep the repair. Pass it through
+  //! html_log_lines() for MeshLab's log.
   std::string log;
   //! The numbers, in this order: vertices_in, vertices_out, faces_in, faces_out (the layer's,
   //! faces in triangles); the core's vertices_split, faces_flipped, sides_cut,
@@ -142,8 +167,11 @@ struct RepairOutcome {
   //! isolated_vertices_removed, before.components, after.components, before.boundary_edges,
   //! after.boundary_edges, before.nonorientable_components, before.singular_edges,
   //! before.singular_vertices, after.singular_edges, after.singular_vertices, after.watertight
-  //! (flag); the write-back's degenerate_faces_kept and polygons_triangulated. Keys as in
-  //! docs/report-schema.md, nested ones flattened with dots.
+  //! (flag); the write-back's degenerate_faces_kept and polygons_triangulated; gap closing's
+  //! gaps.tolerance (real; 0 = off), gaps.vertices_welded, gaps.largest_weld_distance (real),
+  //! gaps.welds_refused, gaps.t_junctions_closed, gaps.sides_split; with `reread` only,
+  //! reread.singular_edges, reread.singular_vertices, reread.boundary_edges, reread.watertight
+  //! (flag). Keys as in docs/report-schema.md, nested ones flattened with dots.
   std::vector<FilterCount> counts;
 };
 
@@ -153,7 +181,9 @@ struct RepairOutcome {
 //! recomputed, and normals too if `options.recompute_normals`. The defect layer of `mesh` (see
 //! defect_layer_label()) is removed through `host`, and if there was one, the face and vertex
 //! selection of `mesh` (made by that Detect) is cleared, so what is on screen after Repair is
-//! the repaired mesh. The adapter still tells MeshLab what changed (data masks, "modified").
+//! the repaired mesh. When the layer came from an STL file (host.file_name()) or vertices were
+//! split, the log says what an STL save of the result reads back as (`reread`). The adapter
+//! still tells MeshLab what changed (data masks, "modified").
 //! \throw FilterInputError if `mesh` has no faces (nothing changed)
 //! \throw std::exception from the core or the write-back (then `mesh` is unchanged)
 RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,

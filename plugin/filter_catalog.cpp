@@ -2,6 +2,8 @@
 #include "filter_catalog.h"
 
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace meshbridge::meshlab {
 namespace {
@@ -26,7 +28,9 @@ const FilterText kDetect = {
     "are left alone. Optionally selects and colours the faces at the singular elements so "
     "MeshLab's selection tools can go on from there.<br>"
     "Edges are pairs of vertex indices: vertices that merely coincide are not merged (use "
-    "<i>Remove Duplicate Vertices</i> first if they should be).<br>"
+    "<i>Remove Duplicate Vertices</i> first if they should be). The log also says what Repair's "
+    "gap closing would weld and close with the given <i>Weld tolerance</i> (cracks that "
+    "rounding left between sides that should meet), without moving anything.<br>"
     "MeshBridge: edge bridges on top of OpenMesh.",
 };
 
@@ -36,6 +40,9 @@ const FilterText kRepair = {
     "Lossless manifold repair of the current layer, in place: every face is kept with its "
     "attributes (colour, quality, normal, wedge texture coordinates) and its place in face "
     "order; every edge ends up with at most two faces and every vertex with one fan.<br>"
+    "First, cracks are closed: boundary vertices closer than the <i>Weld tolerance</i> are "
+    "welded (never two corners of one face) and a boundary vertex lying on another boundary "
+    "side splits it (T-junction cracks); the log says how many and the largest move.<br>"
     "The faces of each singular edge are paired by their angular order around the edge (faces "
     "that close a solid are paired first, a sheet between them is left over), then vertices "
     "with several fans are split; each copy carries its original's colour, quality, normal and "
@@ -44,19 +51,46 @@ const FilterText kRepair = {
     "One pass is enough: the repair is idempotent.<br>"
     "Unlike <i>Repair non Manifold Edges</i> it deletes no face and does not cut every face on "
     "a singular edge loose. The repair counts go to the log (MeshLab 2022 and later also "
-    "return them as the filter's result, a dictionary in pymeshlab).",
+    "return them as the filter's result, a dictionary in pymeshlab). When the layer came from "
+    "STL or vertices were split, the log also says what an STL file of the result reads back "
+    "as: STL stores no shared vertices, so its readers weld split copies together again.",
 };
 
-ParameterSpec boolean(const char* name, bool default_value, const char* label,
-                      const char* tooltip) {
+ParameterSpec spec(ParameterSpec::Kind kind, const char* name, const char* label,
+                   std::string tooltip) {
   ParameterSpec p;
-  p.kind = ParameterSpec::Kind::boolean;
+  p.kind = kind;
   p.name = name;
-  p.bool_default = default_value;
   p.label = label;
-  p.tooltip = tooltip;
+  p.tooltip = std::move(tooltip);
   return p;
 }
+
+ParameterSpec boolean(const char* name, bool default_value, const char* label,
+                      std::string tooltip) {
+  return boolean_parameter(name, default_value, label, std::move(tooltip));
+}
+
+//! The gap closing parameters, the same in both filters but for what their tooltips say.
+std::vector<ParameterSpec> gap_parameters(const std::string& tolerance_tooltip,
+                                          const std::string& t_junction_tooltip) {
+  const CloseGapsOptions defaults;
+  return {
+      length_parameter(parameter::weld_tolerance, defaults.tolerance,
+                       "Weld tolerance (negative = automatic, 0 = off)", tolerance_tooltip),
+      boolean(parameter::close_t_junctions, defaults.close_t_junctions, "Close T-junction cracks",
+              t_junction_tooltip),
+  };
+}
+
+//! What both filters' weld tooltips say about the tolerance's values and rules.
+const std::string kWeldRules =
+    "Negative (the default, -1): automatic, 2^-21 times the largest absolute coordinate (4 to 8 "
+    "float32 rounding steps there: 7.2e-5 at 150 mm), the size of the rounding differences CAD "
+    "exports leave between copies of one vertex. 0: off, no welding and no T-junction "
+    "splitting. Only boundary vertices weld, never two corners of one face, never two vertices "
+    "at exactly the same position (a repaired mesh's split copies stay apart). Python: "
+    "weld_tolerance=pymeshlab.PureValue(0.01), PureValue(0) (off) or PureValue(-1) (automatic).";
 
 std::vector<ParameterSpec> make_detect_parameters() {
   const DetectOptions defaults;
@@ -70,7 +104,7 @@ std::vector<ParameterSpec> make_detect_parameters() {
       "Tubes (0): thin tubes along the defect edges and markers at singular vertices, a "
       "triangle mesh MeshLab shows in colour by default. Edges (1): the raw edges as an edge "
       "mesh (PLY/OBJ export keeps them), for scripts.";
-  return {
+  std::vector<ParameterSpec> specs = {
       boolean(parameter::select_faces, defaults.select_faces,
               "Select faces at singular edges and vertices",
               "Replace the current selection by the faces that have a side on a singular edge or "
@@ -82,6 +116,15 @@ std::vector<ParameterSpec> make_detect_parameters() {
               "per-face colour for the layer and overwrites the colour of those faces."),
       layer_form,
   };
+  const std::vector<ParameterSpec> gaps = gap_parameters(
+      "Also report what Repair's gap closing would do (Detect moves no vertex): how many "
+      "vertices it would weld because they lie closer than this distance (in the mesh's units), "
+      "and how many T-junction cracks it would close. " +
+          kWeldRules,
+      "Also report how many boundary vertices lie on another boundary side (within the weld "
+      "tolerance), which Repair would insert into that side so the seam stitches.");
+  specs.insert(specs.end(), gaps.begin(), gaps.end());
+  return specs;
 }
 
 std::vector<ParameterSpec> make_repair_parameters() {
@@ -100,7 +143,7 @@ std::vector<ParameterSpec> make_repair_parameters() {
       "Combinatorial (1): faces that run the edge in opposite directions first, in face order, "
       "then "
       "the rest in face order.";
-  return {
+  std::vector<ParameterSpec> specs = {
       pairing,
       boolean(parameter::orient, defaults.core.orient, "Orient components consistently",
               "Flip faces so that every orientable component is consistently oriented, closed "
@@ -129,9 +172,47 @@ std::vector<ParameterSpec> make_repair_parameters() {
               "do. Off: vertex normals are copied to split vertices and face normals of flipped "
               "faces are negated, so normals loaded from a file survive."),
   };
+  const std::vector<ParameterSpec> gaps = gap_parameters(
+      "Before pairing, weld boundary vertices that lie closer than this distance (in the mesh's "
+      "units): cracks between sides that should meet close, and the log says how many vertices "
+      "were welded and the largest distance one moved. " +
+          kWeldRules,
+      "Before pairing, a boundary vertex that lies on another boundary side (within the weld "
+      "tolerance) splits that side, so both sides of a seam with an extra vertex on one side "
+      "stitch (counted in the log). Off: only welding.");
+  specs.insert(specs.end(), gaps.begin(), gaps.end());
+  return specs;
 }
 
 }  // namespace
+
+ParameterSpec boolean_parameter(const char* name, bool default_value, const char* label,
+                                std::string tooltip) {
+  ParameterSpec p = spec(ParameterSpec::Kind::boolean, name, label, std::move(tooltip));
+  p.bool_default = default_value;
+  return p;
+}
+
+ParameterSpec integer_parameter(const char* name, int default_value, const char* label,
+                                std::string tooltip) {
+  ParameterSpec p = spec(ParameterSpec::Kind::integer, name, label, std::move(tooltip));
+  p.int_default = default_value;
+  return p;
+}
+
+ParameterSpec length_parameter(const char* name, double default_value, const char* label,
+                               std::string tooltip) {
+  ParameterSpec p = spec(ParameterSpec::Kind::length, name, label, std::move(tooltip));
+  p.length_default = default_value;
+  return p;
+}
+
+CloseGapsOptions close_gaps_options(double weld_tolerance, bool close_t_junctions) {
+  CloseGapsOptions options;
+  options.tolerance = weld_tolerance < 0 ? kAutoWeldTolerance : weld_tolerance;
+  options.close_t_junctions = close_t_junctions;
+  return options;
+}
 
 const std::vector<FilterId>& all_filters() {
   static const std::vector<FilterId> filters = {FilterId::detect, FilterId::repair};

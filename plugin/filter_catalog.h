@@ -48,23 +48,65 @@ inline constexpr const char* remove_duplicate_faces = "remove_duplicate_faces";
 inline constexpr const char* remove_degenerate_faces = "remove_degenerate_faces";
 inline constexpr const char* remove_isolated_vertices = "remove_isolated_vertices";
 inline constexpr const char* recompute_normals = "recompute_normals";
+//! Gap closing (both filters): CloseGapsOptions::tolerance and ::close_t_junctions, the CLI's
+//! `--weld TOL|auto|0`.
+inline constexpr const char* weld_tolerance = "weld_tolerance";
+inline constexpr const char* close_t_junctions = "close_t_junctions";
 }  // namespace parameter
 
-//! One parameter of a filter: a bool, or an enum (an index into `enum_values`).
+//! One parameter of a filter, of one of four kinds; only the default of its kind is read.
 struct ParameterSpec {
-  enum class Kind { boolean, enumeration };
+  enum class Kind {
+    boolean,      //!< RichBool
+    enumeration,  //!< RichEnum: an index into `enum_values`
+    integer,      //!< RichInt
+    //! A real number, a distance in the mesh's units: RichAbsPerc (2020.09) / RichPercentage
+    //! (>= 2022), which MeshLab shows both as a distance and as a percentage of the current
+    //! mesh's bounding box diagonal (0 .. diagonal); pymeshlab takes PureValue(d) or
+    //! PercentageValue(p). Negative values are allowed (below 0 the percentage goes negative).
+    length,
+  };
   Kind kind = Kind::boolean;
   const char* name = "";  //!< see namespace parameter
   bool bool_default = false;
   int enum_default = 0;
   std::vector<const char*> enum_values;  //!< labels, index = value
-  const char* label = "";                //!< the dialog's label
-  const char* tooltip = "";
+  int int_default = 0;
+  double length_default = 0;  //!< in the mesh's units, whatever its size
+  const char* label = "";     //!< the dialog's label
+  std::string tooltip;
 };
+
+//! Builders of one ParameterSpec each, for the catalogue (and for parameters still to come).
+ParameterSpec boolean_parameter(const char* name, bool default_value, const char* label,
+                                std::string tooltip);
+ParameterSpec integer_parameter(const char* name, int default_value, const char* label,
+                                std::string tooltip);
+ParameterSpec length_parameter(const char* name, double default_value, const char* label,
+                               std::string tooltip);
 
 //! The parameters of `id`, in dialog order. Defaults are DetectOptions{}'s and
 //! RepairFilterOptions{}'s (so the core's RepairOptions{} for the core's options).
 const std::vector<ParameterSpec>& parameters(FilterId id);
+
+//! The gap closing options of a `weld_tolerance` value: negative means automatic
+//! (kAutoWeldTolerance), 0 off, anything else the distance itself.
+CloseGapsOptions close_gaps_options(double weld_tolerance, bool close_t_junctions);
+
+//! Reads the gap closing parameters of either filter (getAbsPerc, getBool). A list without them
+//! takes the core's defaults (automatic tolerance, T-junctions closed); MeshLab itself always
+//! passes them (meshlabserver 2020.09 refuses a script that lacks one).
+template <class ParameterList>
+CloseGapsOptions close_gaps_options(const ParameterList& params) {
+  const CloseGapsOptions defaults;
+  const double tolerance = params.hasParameter(parameter::weld_tolerance)
+                               ? double(params.getAbsPerc(parameter::weld_tolerance))
+                               : defaults.tolerance;
+  const bool t_junctions = params.hasParameter(parameter::close_t_junctions)
+                               ? params.getBool(parameter::close_t_junctions)
+                               : defaults.close_t_junctions;
+  return close_gaps_options(tolerance, t_junctions);
+}
 
 //! Reads the detect filter's options from a MeshLab RichParameterList (either API generation:
 //! both have getBool(name) and getEnum(name)). A script that predates `defect_layer` gets the
@@ -78,10 +120,12 @@ DetectOptions detect_options(const ParameterList& params) {
     options.layer_form = params.getEnum(parameter::defect_layer) == 1 ? DefectLayerForm::edges
                                                                       : DefectLayerForm::tubes;
   }
+  options.close_gaps = close_gaps_options(params);
   return options;
 }
 
-//! Reads the repair filter's options from a MeshLab RichParameterList (getBool, getEnum).
+//! Reads the repair filter's options from a MeshLab RichParameterList (getBool, getEnum,
+//! getAbsPerc).
 template <class ParameterList>
 RepairFilterOptions repair_options(const ParameterList& params) {
   RepairFilterOptions options;
@@ -94,6 +138,7 @@ RepairFilterOptions repair_options(const ParameterList& params) {
   options.core.remove_degenerate_faces = params.getBool(parameter::remove_degenerate_faces);
   options.core.remove_isolated_vertices = params.getBool(parameter::remove_isolated_vertices);
   options.recompute_normals = params.getBool(parameter::recompute_normals);
+  options.core.close_gaps = close_gaps_options(params);
   return options;
 }
 

@@ -71,16 +71,30 @@ MeshFilterInterface::FILTER_ARITY FilterMeshBridgePlugin::filterArity(QAction*) 
   return SINGLE_MESH;
 }
 
-void FilterMeshBridgePlugin::initParameterSet(QAction* action, MeshModel&,
+void FilterMeshBridgePlugin::initParameterSet(QAction* action, MeshModel& m,
                                               RichParameterList& params) {
+  // Lengths are shown as a distance and as a percentage of this diagonal.
+  const float diagonal = m.cm.bbox.IsNull() || !(m.cm.bbox.Diag() > 0) ? 1.0f : m.cm.bbox.Diag();
   for (const mbm::ParameterSpec& p : mbm::parameters(filter_id(ID(action)))) {
-    if (p.kind == mbm::ParameterSpec::Kind::boolean) {
-      params.addParam(RichBool(p.name, p.bool_default, p.label, p.tooltip));
-    } else {
-      QStringList values;
-      for (const char* v : p.enum_values)
-        values << v;
-      params.addParam(RichEnum(p.name, p.enum_default, values, p.label, p.tooltip));
+    const QString tooltip = QString::fromStdString(p.tooltip);
+    switch (p.kind) {
+      case mbm::ParameterSpec::Kind::boolean:
+        params.addParam(RichBool(p.name, p.bool_default, p.label, tooltip));
+        break;
+      case mbm::ParameterSpec::Kind::enumeration: {
+        QStringList values;
+        for (const char* v : p.enum_values)
+          values << v;
+        params.addParam(RichEnum(p.name, p.enum_default, values, p.label, tooltip));
+        break;
+      }
+      case mbm::ParameterSpec::Kind::integer:
+        params.addParam(RichInt(p.name, p.int_default, p.label, tooltip));
+        break;
+      case mbm::ParameterSpec::Kind::length:
+        params.addParam(
+            RichAbsPerc(p.name, float(p.length_default), 0.0f, diagonal, p.label, tooltip));
+        break;
     }
   }
 }

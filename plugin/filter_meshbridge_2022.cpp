@@ -20,12 +20,14 @@ mbm::FilterId filter_id(MeshLabPlugin::ActionIDType filter) {
                                                                       : mbm::FilterId::detect;
 }
 
-//! The counts as pymeshlab converts them: int (or bool for flags) QVariants.
+//! The counts as pymeshlab converts them: int, bool (flags) or double (reals) QVariants.
 std::map<std::string, QVariant> result_map(const std::vector<mbm::FilterCount>& counts) {
   std::map<std::string, QVariant> result;
   for (const mbm::FilterCount& c : counts) {
     if (c.is_flag) {
       result[c.name] = QVariant(c.value != 0);
+    } else if (c.is_real) {
+      result[c.name] = QVariant(c.real);
     } else {
       result[c.name] = QVariant(int(c.value));
     }
@@ -110,16 +112,31 @@ FilterPlugin::FilterArity FilterMeshBridgePlugin::filterArity(const QAction*) co
 }
 
 RichParameterList FilterMeshBridgePlugin::initParameterList(const QAction* action,
-                                                            const MeshModel&) {
+                                                            const MeshModel& m) {
+  // Lengths are shown as a distance and as a percentage of this diagonal.
+  const Scalarm diagonal =
+      m.cm.bbox.IsNull() || !(m.cm.bbox.Diag() > 0) ? Scalarm(1) : m.cm.bbox.Diag();
   RichParameterList params;
   for (const mbm::ParameterSpec& p : mbm::parameters(filter_id(ID(action)))) {
-    if (p.kind == mbm::ParameterSpec::Kind::boolean) {
-      params.addParam(RichBool(p.name, p.bool_default, p.label, p.tooltip));
-    } else {
-      QStringList values;
-      for (const char* v : p.enum_values)
-        values << v;
-      params.addParam(RichEnum(p.name, p.enum_default, values, p.label, p.tooltip));
+    const QString tooltip = QString::fromStdString(p.tooltip);
+    switch (p.kind) {
+      case mbm::ParameterSpec::Kind::boolean:
+        params.addParam(RichBool(p.name, p.bool_default, p.label, tooltip));
+        break;
+      case mbm::ParameterSpec::Kind::enumeration: {
+        QStringList values;
+        for (const char* v : p.enum_values)
+          values << v;
+        params.addParam(RichEnum(p.name, p.enum_default, values, p.label, tooltip));
+        break;
+      }
+      case mbm::ParameterSpec::Kind::integer:
+        params.addParam(RichInt(p.name, p.int_default, p.label, tooltip));
+        break;
+      case mbm::ParameterSpec::Kind::length:
+        params.addParam(
+            RichPercentage(p.name, Scalarm(p.length_default), 0, diagonal, p.label, tooltip));
+        break;
     }
   }
   return params;

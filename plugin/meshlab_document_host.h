@@ -46,6 +46,9 @@ class MeshDocumentHost final : public DocumentHost {
   bool can_save_3mf() const override {
     return can_save_3mf_;
   }
+  std::string file_name() const override {
+    return mesh_.fullName().toStdString();
+  }
 
  private:
   MeshDocument& md_;

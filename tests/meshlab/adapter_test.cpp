@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The MeshLab adapter's API-free parts on CMeshO, without MeshLab running: the defect layer's
-// tubes, its label, and the log lines MeshLab's rich-text log receives.
+// tubes, its label, the log lines MeshLab's rich-text log receives, the parameter catalogue and
+// what the filters log about gap closing and STL.
 #include "defect_tubes.h"
 #include "filter_actions.h"
+#include "filter_catalog.h"
 
 #include "meshbridge/detect_defects.h"
 
@@ -11,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mbm = meshbridge::meshlab;
@@ -32,6 +35,33 @@ void t_junction(CMeshO& m) {
       fi->V(k) = &m.vert[std::size_t(t[k])];
     ++fi;
   }
+}
+
+//! A document without MeshLab: layers are kept here, the layer's file name is given.
+class FakeHost final : public mbm::DocumentHost {
+ public:
+  explicit FakeHost(std::string file_name) : file_name_(std::move(file_name)) {}
+  void enable_face_colour() override {}
+  CMeshO& add_defect_layer(const std::string&, bool) override { return layer_; }
+  std::size_t remove_layers(const std::string&) override { return 0; }
+  bool can_save_3mf() const override { return false; }
+  std::string file_name() const override { return file_name_; }
+
+ private:
+  std::string file_name_;
+  CMeshO layer_;
+};
+
+const mbm::ParameterSpec* find_parameter(mbm::FilterId id, const std::string& name) {
+  for (const mbm::ParameterSpec& p : mbm::parameters(id)) {
+    if (name == p.name)
+      return &p;
+  }
+  return nullptr;
+}
+
+bool has_line(const std::string& log, const std::string& line) {
+  return ("\n" + log + "\n").find("\n" + line + "\n") != std::string::npos;
 }
 
 std::size_t faces_of_colour(const CMeshO& m, vcg::Color4b c) {
@@ -103,4 +133,111 @@ TEST(HtmlLogLines, escapes_and_splits_every_line) {
   EXPECT_EQ(lines[1], "  faces set aside (&lt; 3 distinct vertices): 0");
   EXPECT_EQ(lines[2], "");
   EXPECT_EQ(lines[3], "last");
+}
+
+TEST(FilterCatalog, both_filters_take_weld_tolerance_and_close_t_junctions_with_core_defaults) {
+  for (mbm::FilterId id : mbm::all_filters()) {
+    const mbm::ParameterSpec* weld = find_parameter(id, "weld_tolerance");
+    ASSERT_NE(weld, nullptr);
+    EXPECT_EQ(weld->kind, mbm::ParameterSpec::Kind::length);
+    EXPECT_EQ(weld->length_default, meshbridge::kAutoWeldTolerance);
+    EXPECT_NE(weld->tooltip.find("Negative (the default, -1): automatic"), std::string::npos);
+    const mbm::ParameterSpec* t = find_parameter(id, "close_t_junctions");
+    ASSERT_NE(t, nullptr);
+    EXPECT_EQ(t->kind, mbm::ParameterSpec::Kind::boolean);
+    EXPECT_TRUE(t->bool_default);
+  }
+}
+
+TEST(FilterCatalog, negative_weld_tolerance_is_automatic_and_zero_is_off) {
+  EXPECT_EQ(mbm::close_gaps_options(-1, true).tolerance, meshbridge::kAutoWeldTolerance);
+  EXPECT_EQ(mbm::close_gaps_options(-0.25, true).tolerance, meshbridge::kAutoWeldTolerance);
+  EXPECT_EQ(mbm::close_gaps_options(0, true).tolerance, 0.0);
+  EXPECT_EQ(mbm::close_gaps_options(0.002, false).tolerance, 0.002);
+  EXPECT_FALSE(mbm::close_gaps_options(0.002, false).close_t_junctions);
+  const mbm::ParameterSpec n = mbm::integer_parameter("fill_holes", 0, "Fill holes", "0 = off");
+  EXPECT_EQ(n.kind, mbm::ParameterSpec::Kind::integer);
+  EXPECT_EQ(n.int_default, 0);
+}
+
+TEST(FilterActions, is_stl_file_name_by_extension_in_any_case) {
+  EXPECT_TRUE(mbm::is_stl_file_name("/tmp/part.stl"));
+  EXPECT_TRUE(mbm::is_stl_file_name("PART.STL"));
+  EXPECT_FALSE(mbm::is_stl_file_name("part.stl.ply"));
+  EXPECT_FALSE(mbm::is_stl_file_name("stl"));
+  EXPECT_FALSE(mbm::is_stl_file_name(""));
+}
+
+TEST(FilterActions, repair_logs_what_an_stl_save_reads_back) {
+  // The rib is separated from the plate: the 2 vertices of the joint edge are split, and an STL
+  // file welds the copies back into the T-junction.
+  CMeshO mesh;
+  t_junction(mesh);
+  FakeHost host("");  // not from a file: split vertices alone ask for the STL line
+  const mbm::RepairOutcome out = mbm::repair_singular_defects(mesh, "rib", {}, host);
+  EXPECT_EQ(out.report.vertices_split, 2u);
+  ASSERT_TRUE(out.reread.has_value());
+  EXPECT_EQ(out.reread->singular_edges.size(), 1u);
+  EXPECT_EQ(out.reread->num_singular_vertices(), 2u);
+  EXPECT_TRUE(has_line(out.log,
+                       "STL re-read: saved as STL and loaded again, this layer has singular edges "
+                       "1, singular vertices 2, watertight no. STL stores no shared vertices: "
+                       "every reader welds the 2 split vertex copies together again"))
+      << out.log;
+  EXPECT_TRUE(has_line(out.log,
+                       "To keep the repair, save as PLY, OBJ or OFF: they keep the 2 split "
+                       "vertex copies apart"))
+      << out.log;
+}
+
+TEST(FilterActions, repair_of_an_stl_layer_without_split_reports_its_reread_too) {
+  CMeshO mesh;  // the plate alone (the rib deleted): nothing to split
+  t_junction(mesh);
+  vcg::tri::Allocator<CMeshO>::DeleteFace(mesh, mesh.face[2]);
+  FakeHost stl("/data/plate.STL");
+  const mbm::RepairOutcome out = mbm::repair_singular_defects(mesh, "plate.STL", {}, stl);
+  EXPECT_EQ(out.report.vertices_split, 0u);
+  ASSERT_TRUE(out.reread.has_value());
+  EXPECT_TRUE(has_line(out.log,
+                       "STL re-read: saved as STL and loaded again, this layer has singular edges "
+                       "0, singular vertices 0, watertight no"))
+      << out.log;
+  EXPECT_EQ(out.log.find("To keep the repair"), std::string::npos) << out.log;
+
+  CMeshO again;  // the same from an OFF file: no STL line at all
+  t_junction(again);
+  vcg::tri::Allocator<CMeshO>::DeleteFace(again, again.face[2]);
+  FakeHost off("/data/plate.off");
+  const mbm::RepairOutcome quiet = mbm::repair_singular_defects(again, "plate.off", {}, off);
+  EXPECT_FALSE(quiet.reread.has_value());
+  EXPECT_EQ(quiet.log.find("STL re-read"), std::string::npos) << quiet.log;
+}
+
+TEST(FilterActions, detect_reports_what_gap_closing_would_do_and_moves_nothing) {
+  // The plate's two triangles; the second one has its own copy of corner 0, 1e-7 away (a crack
+  // the automatic tolerance, 2^-21 of 1, covers). Vertex 5 is an isolated copy of vertex 2 at
+  // exactly its position: not a boundary vertex, never welded.
+  CMeshO mesh;
+  using Alloc = vcg::tri::Allocator<CMeshO>;
+  const float p[6][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1e-7f, 0, 0}, {1, 1, 0}};
+  auto vi = Alloc::AddVertices(mesh, 6);
+  for (const auto& q : p)
+    (vi++)->P() = CMeshO::CoordType(q[0], q[1], q[2]);
+  auto fi = Alloc::AddFaces(mesh, 2);
+  const int f[2][3] = {{0, 1, 2}, {4, 2, 3}};
+  for (const auto& t : f) {
+    for (int k = 0; k < 3; ++k)
+      fi->V(k) = &mesh.vert[std::size_t(t[k])];
+    ++fi;
+  }
+  FakeHost host("");
+  mbm::DetectOptions options;
+  const mbm::DetectOutcome out = mbm::detect_singular_defects(mesh, "plate", options, host);
+  EXPECT_EQ(out.gaps.vertices_welded, 1u);
+  EXPECT_EQ(out.gaps.t_junctions_closed, 0u);
+  EXPECT_EQ(mesh.vn, 6);
+  EXPECT_EQ(mesh.vert[4].P()[0], 1e-7f);
+  options.close_gaps.tolerance = 0;
+  const mbm::DetectOutcome off = mbm::detect_singular_defects(mesh, "plate", options, host);
+  EXPECT_TRUE(has_line(off.log, "gaps: not closed (weld tolerance 0)")) << off.log;
 }

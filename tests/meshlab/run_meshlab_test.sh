@@ -13,6 +13,12 @@
 #   gui MODEL                 the real MeshLab GUI under Xvfb (gui_detect.sh): opens MODEL, runs
 #                             Detect from Filters' search with default settings; red and green
 #                             pixels of the 3D view as the model's defects say, summary line logged
+#   gaps cube_written_twice|t_junction_box
+#                             weld_tolerance / close_t_junctions set in .mlx scripts, on the
+#                             crack models of tests/unit/close_gaps_test.cpp (crack_models.sh):
+#                             exact counts in Detect's and Repair's logs, the repaired file
+#   stl-truth MODEL           Repair's "STL re-read" line on MODEL written as STL, checked
+#                             against the STL file meshlabserver then writes
 #   compare-builtin MODEL     ours vs MeshLab's "Repair non Manifold Edges" (both methods):
 #                             faces kept and wall time (informative; asserts only that ours
 #                             keeps every face and MeshLab finds nothing non-manifold after it)
@@ -30,6 +36,8 @@ check_mlx="$SOURCE_DIR/tests/meshlab/check_manifold.mlx"
 mode=${1:?mode}; shift
 # fail, pass, value, expect_eq, input_off, check_expectations
 source "$(dirname "${BASH_SOURCE[0]}")/check_helpers.sh"
+# write_cube_twice, write_t_junction_box, off_to_stl, expect_in_log, the expected gap lines
+source "$(dirname "${BASH_SOURCE[0]}")/crack_models.sh"
 # server LOG ARGS...: runs meshlabserver, its stdout (the filter log) into LOG; returns its status
 server() {
   local log=$1; shift
@@ -39,7 +47,28 @@ server() {
 # Last value printed by meshlabserver's log line "Mesh <path> loaded has <vn> vn <fn> fn".
 loaded_fn() { sed -n 's/.* loaded has \([0-9]*\) vn \([0-9]*\) fn.*/\2/p' "$1" | tail -n1; }
 loaded_vn() { sed -n 's/.* loaded has \([0-9]*\) vn \([0-9]*\) fn.*/\1/p' "$1" | tail -n1; }
-
+# mlx FILE detect|repair [key=value...]: resources/scripts/<filter>.mlx with these values (the
+# python-form names). meshlabserver 2020.09 asserts that a script lists every parameter.
+mlx() {
+  local file=$1 template="$scripts/$2.mlx" kv
+  shift 2
+  cp "$template" "$file"
+  for kv in "$@"; do
+    grep -q "<Param name=\"${kv%%=*}\" " "$file" || { echo "no parameter ${kv%%=*} in $template"; exit 2; }
+    sed -i -E "s|(<Param name=\"${kv%%=*}\" type=\"[A-Za-z]*\" value=\")[^\"]*\"|\\1${kv#*=}\"|" "$file"
+  done
+}
+# repair_case LABEL IN [key=value...]: Repair with these parameters, MeshLab's manifold checks,
+# LABEL.ply saved and reported by the core (LABEL.txt); the log is LABEL.log
+repair_case() {
+  local label=$1 in=$2 status=0
+  shift 2
+  mlx "$label.mlx" repair "$@"
+  server "$label.log" -i "$in" -o "$label.ply" -m vf ff sa -s "$label.mlx" -s "$check_mlx" || status=$?
+  cat "$label.log"
+  expect_eq "$label: meshlabserver status" "$status" 0
+  "$MLCHECK" report "$label.ply" >"$label.txt"
+}
 model=${1:-}
 name=$(basename "${model:-$mode}" .obj)
 dir="$WORK/$mode.$name"
@@ -172,8 +201,10 @@ case "$mode" in
     expect_eq "core: singular vertices after" "$(value singular_vertices output.txt)" 0
     grep -q "after: singular edges 0, singular vertices 0" log.txt && pass "repair log" || fail "repair log line missing"
     if [ "$(value vertices output.txt)" -gt "$(loaded_vn log.txt)" ]; then
-      grep -q "To keep the repair, save as PLY, OBJ or OFF.*STL stores no shared vertices" log.txt \
+      grep -q "To keep the repair, save as PLY, OBJ or OFF: they keep the" log.txt \
         && pass "log: which formats keep the repair" || fail "log: no hint on formats that keep the repair"
+      grep -q "STL re-read: saved as STL and loaded again, .*STL stores no shared vertices" log.txt \
+        && pass "log: what STL would re-read" || fail "log: no 'STL re-read' line"
     fi
     # Detect, then Repair: the defect layer is gone (the last layer is the mesh again) and so is
     # the selection Detect made.
@@ -223,6 +254,93 @@ case "$mode" in
     cat shot/session.txt
     expect_eq "GUI session status" "$status" 0
     expect_gui_shot shot input.txt "$name"
+    ;;
+
+  gaps)
+    status=0
+    case "$name" in
+      cube_written_twice)
+        write_cube_twice cube.off 7.62939453125e-06  # 2^-17: one float32 step at 110
+        mlx detect.mlx detect weld_tolerance=-1 close_t_junctions=true
+        server detect.log -i cube.off -o mesh.ply -m sa -s detect.mlx || status=$?
+        cat detect.log
+        expect_eq "Detect: meshlabserver status" "$status" 0
+        expect_in_log "Detect: what Repair would weld" detect.log "$cube_detect_line"
+        "$MLCHECK" report mesh.ply >mesh.txt
+        expect_eq "Detect moves no vertex (vertices)" "$(value vertices mesh.txt)" 16
+        expect_eq "Detect moves no vertex (boundary edges)" "$(value boundary_edges mesh.txt)" 12
+        repair_case auto cube.off weld_tolerance=-1 close_t_junctions=true
+        expect_in_log "Repair (automatic): what it welded" auto.log "$cube_repair_line"
+        expect_in_log "Repair (automatic)" auto.log "boundary edges: 12 -&gt; 0"  # the log is HTML-escaped
+        check_expectations auto.txt vertices=10 faces=12 boundary_edges=0 singular_edges=0 watertight=1
+        grep -q "Mesh is two-manifold" auto.log && pass "MeshLab: Mesh is two-manifold" || fail "MeshLab: not two-manifold"
+        # From an STL file (no vertex split): the log says the repair survives STL.
+        off_to_stl cube.off cube.stl
+        repair_case stl cube.stl
+        expect_in_log "Repair of an STL layer" stl.log "$cube_repair_line"
+        expect_in_log "Repair of an STL layer: STL re-read" stl.log \
+          "STL re-read: saved as STL and loaded again, this layer has singular edges 0, singular vertices 0, watertight yes"
+        expect_not_in_log "Repair of an STL layer: no save hint" stl.log "To keep the repair"
+        check_expectations stl.txt vertices=8 faces=12 boundary_edges=0 watertight=1
+        repair_case off cube.off weld_tolerance=0
+        expect_in_log "Repair (weld_tolerance=0)" off.log "gaps: not closed (tolerance 0)"
+        check_expectations off.txt vertices=16 faces=12 boundary_edges=12
+        # A crack of 1e-3 (19x the automatic tolerance) stays open unless the tolerance covers it.
+        write_cube_twice wide.off 0.001
+        repair_case wide_auto wide.off
+        expect_in_log "Repair (wide crack, automatic)" wide_auto.log "0 vertices welded"
+        check_expectations wide_auto.txt vertices=16 faces=12 boundary_edges=12
+        repair_case wide wide.off weld_tolerance=0.002
+        expect_in_log "Repair (wide crack, weld_tolerance=0.002)" wide.log \
+          "gaps (tolerance 0.002): 6 vertices welded (largest move 0.00173"
+        check_expectations wide.txt vertices=10 faces=12 boundary_edges=0 watertight=1
+        ;;
+      t_junction_box)
+        write_t_junction_box box.off
+        mlx detect.mlx detect weld_tolerance=-1 close_t_junctions=true
+        server detect.log -i box.off -o mesh.ply -m sa -s detect.mlx || status=$?
+        cat detect.log
+        expect_eq "Detect: meshlabserver status" "$status" 0
+        expect_in_log "Detect: what Repair would close" detect.log "$box_detect_line"
+        repair_case auto box.off weld_tolerance=-1 close_t_junctions=true
+        expect_in_log "Repair: what it closed" auto.log "$box_repair_line"
+        expect_in_log "Repair: split sides fanned back into triangles" auto.log \
+          "Triangulated 2 polygons (2 extra triangles)"
+        expect_in_log "Repair" auto.log "boundary edges: 6 -&gt; 0"  # the log is HTML-escaped
+        # MeshLab triangulates the 7 quads into 14 triangles; two gain a T-junction corner.
+        check_expectations auto.txt vertices=10 faces=16 boundary_edges=0 singular_edges=0 watertight=1
+        grep -q "Mesh is two-manifold" auto.log && pass "MeshLab: Mesh is two-manifold" || fail "MeshLab: not two-manifold"
+        repair_case no_t box.off close_t_junctions=false
+        expect_in_log "Repair (close_t_junctions=false)" no_t.log "0 T-junctions closed (0 sides split)"
+        check_expectations no_t.txt vertices=10 faces=14 boundary_edges=6
+        ;;
+      *) echo "unknown gap model $name"; exit 2 ;;
+    esac
+    ;;
+
+  stl-truth)
+    shift
+    "$MLCHECK" to-off "$model" model.off
+    off_to_stl model.off in.stl
+    "$MLCHECK" to-off in.stl welded.off  # what every STL reader gets: positions welded
+    "$MLCHECK" report welded.off >input.txt
+    status=0
+    server log.txt -i in.stl -o repaired.stl -s "$scripts/repair.mlx" || status=$?
+    cat log.txt
+    expect_eq "meshlabserver status" "$status" 0
+    split=$(sed -n 's/^.*vertices: [0-9]* in, [0-9]* out (\([0-9]*\) copies from split fans.*/\1/p' log.txt | tail -n1)
+    # The STL meshlabserver wrote, read back as every STL reader does: the log must have said so.
+    "$MLCHECK" to-off repaired.stl reread.off
+    "$MLCHECK" report reread.off >reread.txt
+    line="STL re-read: saved as STL and loaded again, this layer has singular edges $(value singular_edges reread.txt), singular vertices $(value singular_vertices reread.txt), watertight $([ "$(value watertight reread.txt)" = 1 ] && echo yes || echo no)"
+    expect_in_log "log == the STL file written" log.txt "$line"
+    if [ "${split:-0}" -gt 0 ]; then
+      expect_in_log "log: why" log.txt "STL stores no shared vertices: every reader welds the $split split vertex copies together again"
+      expect_in_log "log: what keeps it" log.txt "To keep the repair, save as PLY, OBJ or OFF: they keep the $split split vertex copies apart"
+    else
+      expect_not_in_log "log: no save hint without split vertices" log.txt "To keep the repair"
+    fi
+    check_expectations reread.txt "$@"
     ;;
 
   compare-builtin)

@@ -16,6 +16,12 @@
 #   gui MODEL                 the real MeshLab 2025.07 GUI under Xvfb (tests/meshlab/gui_detect.sh):
 #                             Detect from Filters' search with default settings; red and green
 #                             pixels of the 3D view as the model's defects say, summary logged
+#   gaps cube_written_twice|t_junction_box
+#                             weld_tolerance / close_t_junctions by python name on the crack
+#                             models of tests/unit/close_gaps_test.cpp (crack_models.sh): exact
+#                             counts in the logs and result maps, the repaired layer
+#   stl-truth MODEL           Repair's "STL re-read" line and reread.* results on MODEL written
+#                             as STL, checked against the STL file MeshLab then writes
 #   compare-builtin MODEL     ours vs MeshLab's "Repair non Manifold Edges" (both methods)
 # k=v: expected values of `mlcheck report` on the input (detect) or on the repaired output
 # (repair), as in tests/meshlab/expectations.cmake.
@@ -37,6 +43,8 @@ checks=(filter get_topological_measures
 mode=${1:?mode}; shift
 # fail, pass, value, expect_eq, input_off, check_expectations
 source "$(dirname "${BASH_SOURCE[0]}")/../meshlab/check_helpers.sh"
+# write_cube_twice, write_t_junction_box, off_to_stl, expect_in_log, the expected gap lines
+source "$(dirname "${BASH_SOURCE[0]}")/../meshlab/crack_models.sh"
 # result FILTER KEY LOG: the value of KEY in the result map of the last FILTER step in LOG
 result() {
   awk -v f="$1" -v k="$2" '
@@ -54,6 +62,27 @@ run() {
     plugin "$PLUGIN" "$@" >"$log" 2>"$log.stderr"
 }
 loaded_fn() { sed -n 's/^loaded .* \([0-9]*\) vertices, \([0-9]*\) faces$/\2/p' "$1" | tail -n1; }
+# repair_case LABEL IN [key=value...]: Repair with these parameters and MeshLab's manifold checks;
+# LABEL.ply saved and reported by the core (LABEL.txt); the log is LABEL.log
+repair_case() {
+  local label=$1 in=$2 status=0
+  shift 2
+  run "$label.log" load "$in" filter "$repair_filter" "$@" "${checks[@]}" \
+    save "$label.ply" attributes=vf,ff binary=false || status=$?
+  cat "$label.log"
+  expect_eq "$label: runner status" "$status" 0
+  "$MLCHECK" report "$label.ply" >"$label.txt"
+  expect_eq "$label: MeshLab: is_mesh_two_manifold" \
+    "$(result get_topological_measures is_mesh_two_manifold "$label.log")" True
+}
+# expect_results FILTER LOG key=value...: the filter's result map (pymeshlab's dict)
+expect_results() {
+  local filter=$1 log=$2 kv
+  shift 2
+  for kv in "$@"; do
+    expect_eq "result ${kv%%=*}" "$(result "$filter" "${kv%%=*}" "$log")" "${kv#*=}"
+  done
+}
 
 model=${1:-}
 name=$(basename "${model:-$mode}" .obj)
@@ -91,9 +120,9 @@ case "$mode" in
     # Our parameters, by python name, with type and default, in dialog order.
     params() { awk -v f="filter $1 " 'index($0, f) == 1 { on = 1; next } /^filter / { on = 0 } on' list.txt; }
     expect_eq "$detect_filter parameters" "$(params "$detect_filter" | tr '\n' '|')" \
-      "  select_faces : bool = True|  color_faces : bool = False|  defect_layer : str = 'Tubes'|"
+      "  select_faces : bool = True|  color_faces : bool = False|  defect_layer : str = 'Tubes'|  weld_tolerance : PercentageValue = -57.735%|  close_t_junctions : bool = True|"
     expect_eq "$repair_filter parameters" "$(params "$repair_filter" | tr '\n' '|')" \
-      "  pairing : str = 'Geometric'|  orient : bool = True|  stitch : bool = True|  cut_nonorientable : bool = False|  remove_duplicate_faces : bool = False|  remove_degenerate_faces : bool = False|  remove_isolated_vertices : bool = False|  recompute_normals : bool = True|"
+      "  pairing : str = 'Geometric'|  orient : bool = True|  stitch : bool = True|  cut_nonorientable : bool = False|  remove_duplicate_faces : bool = False|  remove_degenerate_faces : bool = False|  remove_isolated_vertices : bool = False|  recompute_normals : bool = True|  weld_tolerance : PercentageValue = -57.735%|  close_t_junctions : bool = True|"
     ;;
 
   detect)
@@ -224,8 +253,10 @@ case "$mode" in
     expect_eq "result vertices_out == saved vertices" "$(result "$repair_filter" vertices_out log.txt)" "$(value vertices output.txt)"
     expect_eq "result before.singular_edges == core" "$(result "$repair_filter" before.singular_edges log.txt)" "$(value singular_edges input.txt)"
     if [ "$(result "$repair_filter" vertices_split log.txt)" -gt 0 ]; then
-      grep -q "^log: To keep the repair, save as PLY, OBJ or OFF.*STL stores no shared vertices" log.txt \
+      grep -q "^log: To keep the repair, save as PLY, OBJ or OFF.*: they keep the" log.txt \
         && pass "log: which formats keep the repair" || fail "log: no hint on formats that keep the repair"
+      grep -q "^log: STL re-read: saved as STL and loaded again, .*STL stores no shared vertices" log.txt \
+        && pass "log: what STL would re-read" || fail "log: no 'STL re-read' line"
     else
       grep -q "^log: To keep the repair" log.txt && fail "log: save hint without split vertices" \
         || pass "log: no save hint (no vertex split)"
@@ -307,6 +338,95 @@ case "$mode" in
     grep -q "Error while loading plugins\|Unable to find the plugins" shot/meshlab.log \
       && fail "MeshLab could not load all its plugins" || pass "MeshLab loaded its plugins"
     expect_gui_shot shot input.txt "$name"
+    ;;
+
+  gaps)
+    status=0
+    case "$name" in
+      cube_written_twice)
+        write_cube_twice cube.off 7.62939453125e-06  # 2^-17: one float32 step at 110
+        run detect.log load cube.off filter "$detect_filter" weld_tolerance=-1 close_t_junctions=true \
+          save mesh.ply layer=0 attributes=vf binary=false || status=$?
+        cat detect.log
+        expect_eq "Detect: runner status" "$status" 0
+        expect_in_log "Detect: what Repair would weld" detect.log "log: $cube_detect_line"
+        expect_results "$detect_filter" detect.log gaps.vertices_welded=6 gaps.t_junctions_closed=0 \
+          gaps.welds_refused=0 gaps.tolerance=5.245209104e-05 gaps.largest_weld_distance=1.321449896e-05
+        "$MLCHECK" report mesh.ply >mesh.txt
+        check_expectations mesh.txt vertices=16 boundary_edges=12
+        repair_case auto cube.off weld_tolerance=-1 close_t_junctions=true
+        expect_in_log "Repair (automatic): what it welded" auto.log "log: $cube_repair_line"
+        expect_results "$repair_filter" auto.log gaps.vertices_welded=6 gaps.t_junctions_closed=0 \
+          before.boundary_edges=12 after.boundary_edges=0 vertices_out=10
+        check_expectations auto.txt vertices=10 faces=12 boundary_edges=0 singular_edges=0 watertight=1
+        off_to_stl cube.off cube.stl
+        repair_case stl cube.stl
+        expect_in_log "Repair of an STL layer" stl.log "log: $cube_repair_line"
+        expect_in_log "Repair of an STL layer: STL re-read" stl.log \
+          "log: STL re-read: saved as STL and loaded again, this layer has singular edges 0, singular vertices 0, watertight yes"
+        expect_results "$repair_filter" stl.log reread.singular_edges=0 reread.singular_vertices=0 \
+          reread.boundary_edges=0 reread.watertight=True
+        expect_not_in_log "Repair of an STL layer: no save hint" stl.log "To keep the repair"
+        check_expectations stl.txt vertices=8 faces=12 boundary_edges=0 watertight=1
+        repair_case off cube.off weld_tolerance=0
+        expect_in_log "Repair (weld_tolerance=0)" off.log "log: gaps: not closed (tolerance 0)"
+        expect_results "$repair_filter" off.log gaps.tolerance=0 gaps.vertices_welded=0
+        check_expectations off.txt vertices=16 faces=12 boundary_edges=12
+        write_cube_twice wide.off 0.001
+        repair_case wide_auto wide.off
+        expect_results "$repair_filter" wide_auto.log gaps.vertices_welded=0 after.boundary_edges=12
+        repair_case wide wide.off weld_tolerance=0.002
+        expect_in_log "Repair (wide crack, weld_tolerance=0.002)" wide.log \
+          "log: gaps (tolerance 0.002): 6 vertices welded (largest move 0.00173"
+        expect_results "$repair_filter" wide.log gaps.vertices_welded=6 after.boundary_edges=0
+        check_expectations wide.txt vertices=10 faces=12 boundary_edges=0 watertight=1
+        ;;
+      t_junction_box)
+        write_t_junction_box box.off
+        run detect.log load box.off filter "$detect_filter" weld_tolerance=-1 close_t_junctions=true \
+          || status=$?
+        cat detect.log
+        expect_eq "Detect: runner status" "$status" 0
+        expect_in_log "Detect: what Repair would close" detect.log "log: $box_detect_line"
+        expect_results "$detect_filter" detect.log gaps.t_junctions_closed=2 gaps.sides_split=2 \
+          gaps.vertices_welded=0 boundary_edges=6
+        repair_case auto box.off weld_tolerance=-1 close_t_junctions=true
+        expect_in_log "Repair: what it closed" auto.log "log: $box_repair_line"
+        expect_results "$repair_filter" auto.log gaps.t_junctions_closed=2 gaps.sides_split=2 \
+          polygons_triangulated=2 faces_in=14 faces_out=16 after.boundary_edges=0 after.watertight=True
+        check_expectations auto.txt vertices=10 faces=16 boundary_edges=0 singular_edges=0 watertight=1
+        repair_case no_t box.off close_t_junctions=false
+        expect_results "$repair_filter" no_t.log gaps.t_junctions_closed=0 after.boundary_edges=6
+        check_expectations no_t.txt vertices=10 faces=14 boundary_edges=6
+        ;;
+      *) echo "unknown gap model $name"; exit 2 ;;
+    esac
+    ;;
+
+  stl-truth)
+    shift
+    "$MLCHECK" to-off "$model" model.off
+    off_to_stl model.off in.stl
+    status=0
+    run log.txt load in.stl filter "$repair_filter" save repaired.stl || status=$?
+    cat log.txt
+    expect_eq "runner status" "$status" 0
+    split=$(result "$repair_filter" vertices_split log.txt)
+    # The STL MeshLab wrote, read back as every STL reader does: the log must have said so.
+    "$MLCHECK" to-off repaired.stl reread.off
+    "$MLCHECK" report reread.off >reread.txt
+    line="log: STL re-read: saved as STL and loaded again, this layer has singular edges $(value singular_edges reread.txt), singular vertices $(value singular_vertices reread.txt), watertight $([ "$(value watertight reread.txt)" = 1 ] && echo yes || echo no)"
+    expect_in_log "log == the STL file written" log.txt "$line"
+    expect_results "$repair_filter" log.txt "reread.singular_edges=$(value singular_edges reread.txt)" \
+      "reread.singular_vertices=$(value singular_vertices reread.txt)" \
+      "reread.boundary_edges=$(value boundary_edges reread.txt)"
+    if [ "${split:-0}" -gt 0 ]; then
+      expect_in_log "log: why" log.txt "STL stores no shared vertices: every reader welds the $split split vertex copies together again"
+      expect_in_log "log: what keeps it" log.txt "log: To keep the repair, save as PLY, OBJ or OFF"
+    else
+      expect_not_in_log "log: no save hint without split vertices" log.txt "To keep the repair"
+    fi
+    check_expectations reread.txt "$@"
     ;;
 
   compare-builtin)
