@@ -206,6 +206,27 @@ TEST(PairContenders, copies_in_a_doubled_strip_glue_back_to_back) {
   expect_parts(doubled(strip(1)), 0, {{{0, 0}, 0.0}, {{2, 2}, 0.0}});
 }
 
+TEST(PairContenders, strip_given_twice_the_same_way_closes) {
+  // Both copies wound alike: orientation reverses one layer, and the copies glue back to back as
+  // above (before this rule: 6 boundary edges; the slicer finds 12 open edges in the input).
+  const Soup once = strip(2);
+  Soup twice = once;
+  for (std::size_t f = 0; f < once.num_faces(); ++f) {
+    const PolygonView p = once.polygon(f);
+    twice.add_polygon(std::vector<Index>(p.begin(), p.end()));
+  }
+  expect_parts(twice, 0, {{{0, 0}, 0.0}, {{1, 1}, 0.0}, {{2, 2}, 0.0}, {{3, 3}, 0.0}});
+  // A third layer (wound as the first) has no partner: it stays one loose sheet, its 6 rim edges
+  // open, as the slicer's 6 (before this rule: 12).
+  Soup thrice = doubled(once);
+  for (std::size_t f = 0; f < once.num_faces(); ++f) {
+    const PolygonView p = once.polygon(f);
+    thrice.add_polygon(std::vector<Index>(p.begin(), p.end()));
+  }
+  expect_parts(thrice, 6,
+               {{{0, 0}, 0.0}, {{2, 2}, 0.0}, {{4, 4}, 0.0}, {{6, 6}, 0.0}, {{0, 2, 4, 6}, kOpen}});
+}
+
 TEST(PairContenders, doubled_sheet_with_inner_vertex_stays_one_pillow) {
   // Every inner edge of a doubled hexagon has the centre at one end, whose layers are two fans:
   // nothing would share an output edge, so nothing is exchanged and the sheet is one pillow.
