@@ -45,6 +45,8 @@ const std::vector<Entry> kEntries = {
      "  cut on singular edges: left over by pairing (e.g. the third page of a book)\n"
      "  cut for orientation: pairing them would force two faces to face opposite ways\n"
      "  cut to stay manifold: a fan that wound twice around a vertex (self-intersecting input)\n"
+     "  paired with copies instead: where a face is given twice (a sheet written once per side),\n"
+     "    the two copies are glued back to back (a closed pillow of no volume) instead of cut\n"
      "  stitched: cut sides glued back in pairs where that stays manifold (--no-stitch: never)"},
     {"fan",
      "The faces around a vertex that are connected to each other across its edges (also called\n"

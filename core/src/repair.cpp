@@ -168,6 +168,7 @@ RepairResult repair(const Soup& input, const RepairOptions& options) {
   report.sides_stitched = pipeline.counts.sides_stitched;
   report.faces_flipped = pipeline.counts.faces_flipped;
   report.sides_cut_to_stay_manifold = pipeline.counts.sides_cut_to_stay_manifold;
+  report.sides_paired_with_copies = pipeline.counts.sides_paired_with_copies;
   report.nonorientable_components = pipeline.counts.nonorientable_components;
   // The pipeline's grouping and pairing (about 20 bytes per side) are not needed any more: free
   // them before the second detection allocates its own.
@@ -209,8 +210,9 @@ std::string to_text(const RepairReport& r) {
   out << "vertices: " << r.vertices_in << " in, " << r.vertices_out << " out (" << r.vertices_split
       << " copies from split fans, " << r.isolated_vertices_removed << " isolated removed)\n";
   out << "sides: " << r.sides_cut << " cut on singular edges, " << r.sides_cut_for_orientation
-      << " cut for orientation, " << r.sides_cut_to_stay_manifold << " cut to stay manifold, "
-      << r.sides_stitched << " stitched\n";
+      << " cut for orientation, " << r.sides_cut_to_stay_manifold << " cut to stay manifold ("
+      << r.sides_paired_with_copies << " paired with copies instead), " << r.sides_stitched
+      << " stitched\n";
   out << "components: " << r.components_before << " -> " << r.components_after
       << "; boundary edges: " << r.boundary_edges_before << " -> " << r.boundary_edges_after
       << "; non-orientable components: " << r.nonorientable_components << "\n";

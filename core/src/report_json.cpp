@@ -98,6 +98,7 @@ void add_repair(Json& out, const RepairReport& r, bool elements, const DefectRep
   out["sides_cut"] = r.sides_cut;
   out["sides_cut_for_orientation"] = r.sides_cut_for_orientation;
   out["sides_cut_to_stay_manifold"] = r.sides_cut_to_stay_manifold;
+  out["sides_paired_with_copies"] = r.sides_paired_with_copies;
   out["sides_stitched"] = r.sides_stitched;
   out["gaps"] = gaps_json(r.gaps);
   Json before = Json::object(), after = Json::object();

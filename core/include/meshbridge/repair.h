@@ -58,6 +58,12 @@ struct RepairReport {
   //! Sides unpaired because their fan wound twice around a vertex, putting two pairs on one
   //! output edge (self-intersecting input); stitches undone for that are not counted here.
   std::size_t sides_cut_to_stay_manifold = 0;
+  //! Sides given another mate instead of being cut to stay manifold: where two pairs would share
+  //! one output edge and the faces of two of those sides are copies of one polygon (a face given
+  //! twice, either way round, as in a sheet written once per orientation), those two are glued
+  //! back to back and their former mates glued to each other (4 sides per exchange). Nothing is
+  //! unpaired, so no boundary edge is made.
+  std::size_t sides_paired_with_copies = 0;
   //! Always 0: no face is ever cut loose (the pipeline proves every output edge manifold
   //! without it); kept so reports keep their fields.
   std::size_t faces_detached = 0;

@@ -62,6 +62,96 @@ std::size_t for_each_crowded_output_edge(const Soup& soup, const GroupedSides& g
   return crowded;
 }
 
+// Copies of one polygon (the same vertex cycle, either way round) have equal keys: the cycle from
+// its smallest vertex, forward or backward, whichever is lexicographically smaller.
+void copy_key(const Soup& soup, Index f, std::vector<Index>& key) {
+  const PolygonView p = soup.polygon(f);
+  const std::size_t k = p.size();
+  const std::size_t start =
+      static_cast<std::size_t>(std::min_element(p.begin(), p.end()) - p.begin());
+  key.resize(2 * k);
+  for (std::size_t i = 0; i < k; ++i) {
+    key[i] = p[(start + i) % k];
+    key[k + i] = p[(start + k - i) % k];
+  }
+  if (std::lexicographical_compare(key.begin() + k, key.end(), key.begin(), key.begin() + k))
+    std::copy(key.begin() + k, key.end(), key.begin());
+  key.resize(k);
+}
+
+// Crowded output edges whose pairs can trade partners so that copies of one polygon are glued
+// back to back: pairs (s, m) and (t, n) become (s, t) and (m, n) when s and t are sides of copies
+// of one polygon that run opposite ways as the faces will be written, and neither s nor t is
+// already paired with a copy of its own polygon. (m and n then run opposite ways too: s and m
+// do, t and n do, s and t do.) No side is unpaired; each exchange makes one more pair of copies.
+// Returns the number of exchanges.
+std::size_t pair_copies(const Soup& soup, const GroupedSides& grouped, const VertexSplit& split,
+                        SidePairing& pairing, ManifoldEdgeCounts& counts, std::size_t& crowded) {
+  std::vector<Index>& mate = pairing.mate;
+  const std::vector<Index>& corner_face = grouped.corner_face;
+  // Output vertex each side starts at, as the faces will be written.
+  const auto start = [&](Index c) {
+    const Index f = corner_face[c];
+    return split.corner_vertex[pairing.flipped[f] ? soup.next_corner(c, f) : c];
+  };
+  std::vector<Index> key_a, key_b;
+  const auto copies = [&](Index a, Index b) {
+    copy_key(soup, corner_face[a], key_a);
+    copy_key(soup, corner_face[b], key_b);
+    return key_a == key_b;
+  };
+  std::vector<std::pair<std::vector<Index>, Index>> keyed;  // (copy key, side)
+  std::size_t exchanges = 0;
+  crowded = for_each_crowded_output_edge(
+      soup, grouped, split.corner_vertex, mate,
+      [&](const std::vector<Index>& pairs, const std::vector<Index>&) {
+        if (pairs.size() < 2)
+          return;
+        // The sides of the edge's pairs not yet paired with a copy, by copy key, then by side
+        // (copies of one polygon are interchangeable; only they are told apart by index).
+        keyed.clear();
+        for (Index p : pairs) {
+          if (copies(p, mate[p]))
+            continue;
+          for (Index side : {p, mate[p]}) {
+            keyed.emplace_back(std::vector<Index>(), side);
+            copy_key(soup, corner_face[side], keyed.back().first);
+          }
+        }
+        std::sort(keyed.begin(), keyed.end());
+        for (std::size_t i = 0; i < keyed.size();) {
+          std::size_t j = i + 1;
+          while (j < keyed.size() && keyed[j].first == keyed[i].first)
+            ++j;
+          // Within one polygon's copies: the k-th running one way with the k-th running the
+          // other way.
+          std::vector<Index> ways[2];
+          const Index first_start = start(keyed[i].second);
+          for (std::size_t t = i; t < j; ++t)
+            ways[start(keyed[t].second) == first_start ? 0 : 1].push_back(keyed[t].second);
+          for (std::size_t t = 0; t < std::min(ways[0].size(), ways[1].size()); ++t) {
+            const Index s = ways[0][t], u = ways[1][t];
+            const Index m = mate[s], n = mate[u];
+            if (copies(s, m) || copies(u, n))
+              continue;  // an earlier exchange on this edge already glued it to a copy
+            for (Index side : {s, m, u, n}) {
+              if (pairing.stitched[side])
+                ++counts.unstitched;
+              pairing.stitched[side] = 0;
+            }
+            mate[s] = u;
+            mate[u] = s;
+            mate[m] = n;
+            mate[n] = m;
+            counts.sides_paired_with_copies += 4;
+            ++exchanges;
+          }
+          i = j;
+        }
+      });
+  return exchanges;
+}
+
 // One round of cuts: per output edge holding two or more pairs, all but one are cut (stitched
 // ones first; among equals the one whose faces' keys are smallest is kept); a pair sharing its
 // output edge with unpaired sides is cut. Returns the number of pairs cut.
@@ -112,13 +202,23 @@ std::size_t cut_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
 ManifoldEdgeCounts make_output_edges_manifold(const Soup& soup, const GroupedSides& grouped,
                                               SidePairing& pairing, VertexSplit& split) {
   ManifoldEdgeCounts counts;
-  // 1. Cuts. Each round cuts at least one pair and none is made, so there are at most as many
-  //    rounds as pairs (one or two in practice); cutting only ever splits fans.
-  const std::size_t most_rounds = pairing.mate.size() / 2 + 1;
+  // 1. Rounds until no pair crowds an output edge: where copies of one polygon can trade
+  //    partners (pair_copies) they do, and nothing is cut in that round; otherwise extra pairs are
+  //    cut. An exchange keeps the number of pairs and adds a pair of copies (one pair that was
+  //    not); a cut removes a pair: so 2 x pairs + pairs not of copies falls in every round, and
+  //    there are at most 3 x pairs rounds (one or two in practice).
+  const std::size_t most_rounds = 3 * (pairing.mate.size() / 2) + 1;
   std::size_t crowded = 0;
-  while (cut_crowding_pairs(soup, grouped, split.corner_vertex, pairing, counts, crowded) > 0) {
+  for (;;) {
+    std::size_t changed = pair_copies(soup, grouped, split, pairing, counts, crowded);
+    if (crowded == 0)
+      return counts;  // no output edge is shared
+    if (changed == 0)
+      changed = cut_crowding_pairs(soup, grouped, split.corner_vertex, pairing, counts, crowded);
+    if (changed == 0)
+      break;
     if (++counts.rounds > most_rounds)
-      throw std::logic_error("make_output_edges_manifold: cutting did not end");
+      throw std::logic_error("make_output_edges_manifold: the rounds did not end");
     split = split_fans(soup, grouped.corner_face, pairing.mate);
   }
   // 2. What is left on a crowded output edge is unpaired sides only. Two of them running
@@ -127,8 +227,6 @@ ManifoldEdgeCounts make_output_edges_manifold(const Soup& soup, const GroupedSid
   //    changes no fan (no new crowding). Two running the same way, or three or more, cannot
   //    share an output edge: every pair runs opposite ways, so every fan is consistently
   //    oriented and its two open ends are one side out of the vertex and one side into it.
-  if (crowded == 0)
-    return counts;  // the last round saw no crowded output edge
   std::vector<Index>& mate = pairing.mate;
   const auto start = [&](Index c) {
     const Index f = grouped.corner_face[c];

@@ -25,6 +25,9 @@ namespace meshbridge::detail {
 //! sheets (same region, or same kind, on both sides: ribs, fins, membranes); then per edge
 //! (a) non-sheet cyclic neighbours with the wedge behind both, (b) the same among the rest,
 //! (c) elimination of what is left, opposite-running only, the flat faces last.
+//!
+//! These pairs are final except where two of them would share an output edge: stage 6
+//! (manifold_edges.h) then glues copies of one polygon back to back, or cuts pairs.
 std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped,
                                    PairingPolicy policy);
 

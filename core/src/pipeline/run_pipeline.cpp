@@ -63,12 +63,14 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
     orient_components(soup, grouped, pairing);
 
   // 5. Fans: one vertex copy per fan.  6. Manifold edges: a fan winding twice around a vertex
-  //    can still crowd an output edge; resolving that re-splits the fans.
+  //    (or both layers of a doubled sheet) can still crowd an output edge; resolving that (copies
+  //    of one face glued back to back, else pairs cut) re-splits the fans.
   VertexSplit split = split_fans(soup, grouped.corner_face, pairing.mate);
   const ManifoldEdgeCounts crowded = make_output_edges_manifold(soup, grouped, pairing, split);
   counts.sides_stitched += crowded.implicitly_stitched;
   counts.sides_stitched -= crowded.unstitched;
   counts.sides_cut_to_stay_manifold = crowded.pairs_cut;
+  counts.sides_paired_with_copies = crowded.sides_paired_with_copies;
   // Cuts can leave a closed part of a component that was open: orient again (fans do not
   // depend on orientation).
   if (crowded.rounds > 0 && options.orient)

@@ -29,6 +29,7 @@ struct PipelineCounts {
   std::size_t sides_stitched = 0;              //!< net: stitched, implicitly stitched, unstitched
   std::size_t faces_flipped = 0;               //!< faces reversed
   std::size_t sides_cut_to_stay_manifold = 0;  //!< pairs cut so output edges stay manifold
+  std::size_t sides_paired_with_copies = 0;    //!< re-paired so copies of a face glue, not cut
   std::size_t vertices_split = 0;              //!< vertex copies added
   std::size_t nonorientable_components = 0;
 };

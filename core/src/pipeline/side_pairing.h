@@ -10,7 +10,8 @@ namespace meshbridge::detail {
 
 //! Which sides are glued to which, and which faces are reversed. Pairing fills `mate`;
 //! orientation fills `flipped` and may cut pairs; stitching glues more pairs (marking them
-//! `stitched`); making output edges manifold cuts some again.
+//! `stitched`); making output edges manifold exchanges partners between copies of one polygon
+//! or cuts some again.
 struct SidePairing {
   std::vector<Index> mate;     //!< #C: side paired with side c, or kNoIndex (a boundary side)
   std::vector<char> stitched;  //!< #C: 1 if c's pair was made by stitching, not by pairing
