@@ -523,7 +523,10 @@ messages)
     chmod 755 "$work"
   fi
   if [ "$(id -u)" -ne 0 ] || [ ${#as_user[@]} -gt 0 ]; then
-    expect_exit 2 "${as_user[@]}" "$mb" repair "$models/twocubes.obj" "$work/locked/a.obj"
+    # The input is copied into $work: the checkout itself may be private to its owner.
+    cp "$models/twocubes.obj" "$work/public.obj"
+    chmod 644 "$work/public.obj"
+    expect_exit 2 "${as_user[@]}" "$mb" repair "$work/public.obj" "$work/locked/a.obj"
     expect_in "$work/err" "$work/locked/a.obj: cannot write into the folder '$work/locked' (Permission denied)"
     expect_exit 2 "${as_user[@]}" "$mb" check "$work/secret/a.obj"
     expect_in "$work/err" "$work/secret/a.obj: cannot read (Permission denied)"
