@@ -234,8 +234,7 @@ std::vector<Index> boundary_vertices(const Soup& soup, const std::vector<Index>&
 }
 
 // Welds boundary vertices only: a crack is where sides are open, and an edge that already has
-// two sides needs nothing (a closed mesh with near vertices stays exactly as it is). `boundary`
-// holds the soup's boundary sides (as boundary_sides() gives them).
+// two sides needs nothing (a closed mesh with near vertices stays exactly as it is).
 Weld weld_vertices(const Soup& soup, double tolerance, const std::vector<Index>& boundary) {
   Weld weld;
   const std::size_t n = soup.num_vertices();
@@ -338,8 +337,7 @@ struct Insertion {
   Index vertex;
 };
 
-// Boundary vertices lying on boundary sides (within the tolerance, away from both ends).
-// `sides` holds the soup's boundary sides (as boundary_sides() gives them).
+// Boundary vertices lying on boundary `sides` (within the tolerance, away from both ends).
 std::vector<Insertion> find_t_junctions(const Soup& soup, double tolerance,
                                         const std::vector<Index>& sides) {
   if (sides.empty())
@@ -422,12 +420,9 @@ bool close_gaps_if_any(const Soup& soup, const CloseGapsOptions& options, Closed
   report.tolerance = tolerance;
   if (!(tolerance > 0) || soup.num_vertices() == 0)
     return false;
-  // Only boundary sides and their vertices take part: with none, nothing is welded or split.
-  std::vector<Index> computed_boundary;
-  if (known_boundary == nullptr)
-    computed_boundary = boundary_sides(soup);
-  const std::vector<Index>& boundary = known_boundary ? *known_boundary : computed_boundary;
-  if (boundary.empty())
+  const std::vector<Index> found = known_boundary ? std::vector<Index>() : boundary_sides(soup);
+  const std::vector<Index>& boundary = known_boundary ? *known_boundary : found;
+  if (boundary.empty())  // only boundary sides and their vertices take part
     return false;
 
   const Weld weld = weld_vertices(soup, tolerance, boundary);
