@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/close_gaps.h"
 
+#include "close_gaps_detail.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -233,13 +235,13 @@ std::vector<Index> boundary_vertices(const Soup& soup, const std::vector<Index>&
 
 // Welds boundary vertices only: a crack is where sides are open, and an edge that already has
 // two sides needs nothing (a closed mesh with near vertices stays exactly as it is).
-Weld weld_vertices(const Soup& soup, double tolerance) {
+Weld weld_vertices(const Soup& soup, double tolerance, const std::vector<Index>& boundary) {
   Weld weld;
   const std::size_t n = soup.num_vertices();
   weld.survivor.resize(n);
   for (std::size_t v = 0; v < n; ++v)
     weld.survivor[v] = static_cast<Index>(v);
-  const std::vector<Index> open = boundary_vertices(soup, boundary_sides(soup));
+  const std::vector<Index> open = boundary_vertices(soup, boundary);
   if (open.empty())
     return weld;
   // Large cells: a tolerance box rarely straddles a cell face, and cells still hold about one
@@ -335,9 +337,9 @@ struct Insertion {
   Index vertex;
 };
 
-// Boundary vertices lying on boundary sides (within the tolerance, away from both ends).
-std::vector<Insertion> find_t_junctions(const Soup& soup, double tolerance) {
-  const std::vector<Index> sides = boundary_sides(soup);
+// Boundary vertices lying on boundary `sides` (within the tolerance, away from both ends).
+std::vector<Insertion> find_t_junctions(const Soup& soup, double tolerance,
+                                        const std::vector<Index>& sides) {
   if (sides.empty())
     return {};
   const auto face_of_corner = [&soup](Index c) {
@@ -408,7 +410,8 @@ double default_weld_tolerance(const Soup& soup) {
 
 namespace detail {
 
-bool close_gaps_if_any(const Soup& soup, const CloseGapsOptions& options, ClosedGaps& result) {
+bool close_gaps_if_any(const Soup& soup, const CloseGapsOptions& options, ClosedGaps& result,
+                       const std::vector<Index>* known_boundary) {
   if (std::isnan(options.tolerance) || options.tolerance == std::numeric_limits<double>::infinity())
     throw std::invalid_argument("close_gaps: the tolerance must be a finite number");
   result = ClosedGaps();
@@ -417,8 +420,12 @@ bool close_gaps_if_any(const Soup& soup, const CloseGapsOptions& options, Closed
   report.tolerance = tolerance;
   if (!(tolerance > 0) || soup.num_vertices() == 0)
     return false;
+  const std::vector<Index> found = known_boundary ? std::vector<Index>() : boundary_sides(soup);
+  const std::vector<Index>& boundary = known_boundary ? *known_boundary : found;
+  if (boundary.empty())  // only boundary sides and their vertices take part
+    return false;
 
-  const Weld weld = weld_vertices(soup, tolerance);
+  const Weld weld = weld_vertices(soup, tolerance, boundary);
   report.vertices_welded = weld.welded;
   report.welds_refused = weld.refused;
   report.largest_weld_distance = weld.largest;
@@ -439,8 +446,10 @@ bool close_gaps_if_any(const Soup& soup, const CloseGapsOptions& options, Closed
     welded.face_begin = soup.face_begin;
   }
   const Soup& base = weld.welded != 0 ? welded : soup;
-  const std::vector<Insertion> insertions =
-      options.close_t_junctions ? find_t_junctions(base, tolerance) : std::vector<Insertion>();
+  std::vector<Insertion> insertions;
+  if (options.close_t_junctions)
+    insertions =
+        find_t_junctions(base, tolerance, weld.welded != 0 ? boundary_sides(base) : boundary);
   report.t_junctions_closed = insertions.size();
   if (!report.changed())
     return false;

@@ -16,8 +16,10 @@ namespace meshbridge {
 namespace detail {
 
 // Polygons whose vertex set an earlier polygon has. Faces are bucketed by their smallest vertex
-// (counting sort, O(#F + #V)); each bucket is sorted by the faces' sorted vertex lists, so equal
-// sets end up side by side, and all but the earliest face of each run are duplicates.
+// (counting sort, O(#F + #V)); within a bucket a face is a duplicate if an earlier face of the
+// bucket has the same sorted vertex list. Small buckets (the usual handful of faces) compare
+// those lists pairwise in one flat buffer; crowded ones are sorted by (list, face), so equal
+// lists end up side by side and all but the earliest face of each run are duplicates.
 std::vector<Index> duplicate_polygons(const Soup& soup) {
   const std::size_t num_faces = soup.num_faces();
   std::vector<Index> smallest(num_faces);
@@ -29,19 +31,58 @@ std::vector<Index> duplicate_polygons(const Soup& soup) {
   }
   for (std::size_t v = 0; v < soup.num_vertices(); ++v)
     bucket_begin[v + 1] += bucket_begin[v];
-  std::vector<Index> bucketed(num_faces);
+  std::vector<Index> bucketed(num_faces);  // each bucket in increasing face order
   {
     std::vector<Index> fill(bucket_begin.begin(), bucket_begin.end() - 1);
     for (Index f = 0; f < num_faces; ++f)
       bucketed[fill[smallest[f]]++] = f;
   }
+  constexpr Index kPairwise = 16;  // largest bucket compared pairwise
   std::vector<Index> duplicates;
-  std::vector<std::pair<std::vector<Index>, Index>> bucket;
+  std::vector<Index> keys;       // small bucket: sorted vertex lists, flat
+  std::vector<Index> key_begin;  // small bucket: where each face's list starts in `keys`
+  std::vector<std::pair<std::vector<Index>, Index>> bucket;  // crowded bucket
   for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
     const Index first = bucket_begin[v];
     const Index last = bucket_begin[v + 1];
     if (last - first < 2)
       continue;
+    if (last - first <= kPairwise) {
+      keys.clear();
+      key_begin.clear();
+      for (Index i = first; i < last; ++i) {
+        const PolygonView p = soup.polygon(bucketed[i]);
+        key_begin.push_back(static_cast<Index>(keys.size()));
+        const std::size_t start = keys.size();
+        keys.insert(keys.end(), p.begin(), p.end());
+        if (p.size() > 16) {
+          std::sort(keys.begin() + static_cast<std::ptrdiff_t>(start), keys.end());
+          continue;
+        }
+        for (std::size_t j = start + 1; j < keys.size(); ++j) {  // insertion sort: a few corners
+          const Index x = keys[j];
+          std::size_t k = j;
+          for (; k > start && x < keys[k - 1]; --k)
+            keys[k] = keys[k - 1];
+          keys[k] = x;
+        }
+      }
+      key_begin.push_back(static_cast<Index>(keys.size()));
+      const auto list = [&](Index i) {
+        return std::make_pair(keys.data() + key_begin[i], keys.data() + key_begin[i + 1]);
+      };
+      for (Index i = 1; i < last - first; ++i) {
+        const auto [a, a_end] = list(i);
+        for (Index j = 0; j < i; ++j) {
+          const auto [b, b_end] = list(j);
+          if (std::equal(a, a_end, b, b_end)) {
+            duplicates.push_back(bucketed[first + i]);
+            break;
+          }
+        }
+      }
+      continue;
+    }
     bucket.resize(last - first);
     for (Index i = first; i < last; ++i) {
       const PolygonView p = soup.polygon(bucketed[i]);

@@ -76,20 +76,35 @@ RepairResult repair(const Soup& input, const RepairOptions& options) {
   tell(options, Stage::group, 0);
   RepairResult result;
   RepairReport& report = result.report;
-  // Gap closing runs on the soup before everything else; when it changed nothing the input is
-  // used as it is (no copy), otherwise the rest runs on the closed soup and origins are composed
-  // at the end.
+  // The input's simple polygons, grouped: detection of the input reads them, and so does gap
+  // closing, which only looks at boundary sides (the grouping lists them when the polygons are
+  // the input's own). Gap closing runs on the soup before everything else; when it changed
+  // nothing the input and this grouping are used as they are (no copy), otherwise the rest runs
+  // on the closed soup and origins are composed at the end.
+  const detail::WorkingSoup input_simple(input);
+  detail::GroupedSides grouped = detail::group_sides(input_simple.soup());
   ClosedGaps gaps;
-  const bool gaps_closed = detail::close_gaps_if_any(input, options.close_gaps, gaps);
+  bool gaps_closed = false;
+  if (input_simple.is_identity()) {
+    const std::vector<Index> boundary = detail::boundary_sides(grouped.bridges);
+    gaps_closed = detail::close_gaps_if_any(input, options.close_gaps, gaps, &boundary);
+  } else {
+    gaps_closed = detail::close_gaps_if_any(input, options.close_gaps, gaps);
+  }
   report.gaps = gaps.report;
-  const Soup& soup = gaps_closed ? gaps.soup : input;
-  // The simple polygons actually built; their grouping is reused below when nothing is removed.
-  const detail::WorkingSoup simple(soup);
-  detail::GroupedSides grouped = detail::group_sides(simple.soup());
   const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
   const bool detecting = options.detect_before_after || filtering;
   if (detecting)
-    report.before = gaps_closed ? detect_defects(input) : detail::detect(simple, grouped);
+    report.before = detail::detect(input_simple, grouped);
+  // The simple polygons actually built; their grouping is reused below when nothing is removed.
+  std::unique_ptr<detail::WorkingSoup> closed_simple;
+  if (gaps_closed) {
+    grouped = detail::GroupedSides();  // freed before the closed soup's grouping is made
+    closed_simple = std::make_unique<detail::WorkingSoup>(gaps.soup);
+    grouped = detail::group_sides(closed_simple->soup());
+  }
+  const detail::WorkingSoup& simple = gaps_closed ? *closed_simple : input_simple;
+  const Soup& soup = simple.input();
   report.faces_in = input.num_faces();
   report.vertices_in = input.num_vertices();
 

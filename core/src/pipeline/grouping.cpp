@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline/grouping.h"
 
+#include <algorithm>
+
 namespace meshbridge::detail {
 
 GroupedSides group_sides(const Soup& soup) {
@@ -8,6 +10,16 @@ GroupedSides group_sides(const Soup& soup) {
   grouped.corner_face = corner_faces(soup);
   grouped.bridges = meshbridge::group_sides(soup, grouped.corner_face);
   return grouped;
+}
+
+std::vector<Index> boundary_sides(const EdgeBridges& bridges) {
+  std::vector<Index> sides;
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    if (bridges.num_contenders(e) == 1)
+      sides.push_back(bridges.contenders[bridges.begin[e]]);
+  }
+  std::sort(sides.begin(), sides.end());
+  return sides;
 }
 
 Point newell_normal(const Soup& soup, std::size_t f) {

@@ -19,6 +19,9 @@ struct GroupedSides {
 //! Groups the sides of `soup` in O(#C). \pre `soup` passes validate_soup()
 GroupedSides group_sides(const Soup& soup);
 
+//! The boundary sides (the one contender of a vertex pair), as corners in increasing order.
+std::vector<Index> boundary_sides(const EdgeBridges& bridges);
+
 //! True if side c runs from the smaller to the larger vertex of its edge.
 inline bool runs_along(const Soup& soup, const EdgeBridges& bridges, Index c) {
   return soup.corner_vertices[c] == bridges.edge_v0[bridges.corner_edge[c]];

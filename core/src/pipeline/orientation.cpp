@@ -42,9 +42,11 @@ bool same_way(const Soup& soup, Index c, Index m) {
 //   a volume;
 // - otherwise its faces' windings as given, weighted by area: reversed if more area would end
 //   up reversed than not; on a tie, if more faces would (then: kept).
+// `component` numbers each face's component; `undecided` numbers the components judged here
+// (kNoIndex for the others), `count` of them; reference, volume and noise are per component.
 std::vector<char> open_component_reversal(
     const Soup& soup, const std::vector<Index>& corner_face, const std::vector<Index>& mate,
-    const std::vector<char>& flipped, const std::vector<Index>& root,
+    const std::vector<char>& flipped, const std::vector<Index>& component,
     const std::vector<Index>& undecided, std::size_t count, const std::vector<Point>& reference,
     const std::vector<double>& volume, const std::vector<double>& noise) {
   std::vector<Point> area(count, Point(0, 0, 0)), centroid(count, Point(0, 0, 0));
@@ -53,7 +55,7 @@ std::vector<char> open_component_reversal(
   std::vector<double> area_noise(count, 0.0);
   const std::size_t num_faces = soup.num_faces();
   for (Index f = 0; f < num_faces; ++f) {
-    const Index u = undecided[root[f]];
+    const Index u = undecided[component[f]];
     if (u == kNoIndex)
       continue;
     const Point n = newell_normal(soup, f);
@@ -72,11 +74,11 @@ std::vector<char> open_component_reversal(
   for (Index c = 0; c < mate.size(); ++c) {
     if (mate[c] != kNoIndex)
       continue;
-    const Index u = undecided[root[corner_face[c]]];
+    const Index u = undecided[component[corner_face[c]]];
     reach[u] = std::max(reach[u], (soup.positions[soup.corner_vertices[c]] - centroid[u]).norm());
   }
   std::vector<char> reverse(count, 0);
-  for (Index r = 0; r < num_faces; ++r) {
+  for (Index r = 0; r < undecided.size(); ++r) {
     const Index u = undecided[r];
     if (u == kNoIndex)
       continue;
@@ -189,78 +191,88 @@ void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairin
   const std::vector<Index>& mate = pairing.mate;
   std::vector<char>& flipped = pairing.flipped;
   const std::size_t num_faces = soup.num_faces();
-  UnionFind components(num_faces);
-  for (Index c = 0; c < mate.size(); ++c) {
-    if (mate[c] != kNoIndex)
-      components.unite(corner_face[c], corner_face[mate[c]]);
+  // Components numbered by their smallest face (the root), in increasing order; everything
+  // below is kept per component, not per face.
+  std::vector<Index> root_face;
+  std::vector<Index> component;
+  {
+    UnionFind components(num_faces);
+    for (Index c = 0; c < mate.size(); ++c) {
+      if (mate[c] != kNoIndex)
+        components.unite(corner_face[c], corner_face[mate[c]]);
+    }
+    component = std::move(components).take_labels([&](Index root) {
+      root_face.push_back(root);
+      return static_cast<Index>(root_face.size() - 1);
+    });
   }
+  const std::size_t num_components = root_face.size();
   // Six times the signed volume, as the faces will run, about a corner of the component (its
   // root face's first corner, which reversal keeps in place); the sum of its terms' magnitudes;
   // and a bound on its rounding error (the sum of |a| |b| |c| over the terms a . (b x c)).
-  std::vector<char> open(num_faces, 0);
-  std::vector<double> volume(num_faces, 0.0), magnitude(num_faces, 0.0), noise(num_faces, 0.0);
-  std::vector<Index> root(num_faces);
-  std::vector<Point> reference(num_faces);
-  for (Index f = 0; f < num_faces; ++f)
-    root[f] = components.find(f);
-  for (Index r = 0; r < num_faces; ++r) {
-    if (root[r] == r)
-      reference[r] = soup.positions[soup.corner_vertices[soup.face_begin[r]]];
-  }
+  std::vector<char> open(num_components, 0);
+  std::vector<double> volume(num_components, 0.0), magnitude(num_components, 0.0),
+      noise(num_components, 0.0);
+  std::vector<Point> reference(num_components);
+  for (Index k = 0; k < num_components; ++k)
+    reference[k] = soup.positions[soup.corner_vertices[soup.face_begin[root_face[k]]]];
   for (Index f = 0; f < num_faces; ++f) {
-    const Index r = root[f];
+    const Index k = component[f];
     const PolygonView polygon = soup.polygon(f);
     double v = 0;
-    const Point a = soup.positions[polygon[0]] - reference[r];
+    const Point a = soup.positions[polygon[0]] - reference[k];
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      const Point b = soup.positions[polygon[i]] - reference[r];
-      const Point c = soup.positions[polygon[i + 1]] - reference[r];
+      const Point b = soup.positions[polygon[i]] - reference[k];
+      const Point c = soup.positions[polygon[i + 1]] - reference[k];
       const double term = OpenMesh::dot(a, OpenMesh::cross(b, c));
       v += term;
-      magnitude[r] += std::abs(term);
-      noise[r] += a.norm() * b.norm() * c.norm();
+      magnitude[k] += std::abs(term);
+      noise[k] += a.norm() * b.norm() * c.norm();
     }
-    volume[r] += flipped[f] ? -v : v;
+    volume[k] += flipped[f] ? -v : v;
     for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
       if (mate[c] == kNoIndex)
-        open[r] = 1;
+        open[k] = 1;
     }
   }
   // Closed shells with a volume, numbered; the others are judged on their evidence.
-  std::vector<Index> shell(num_faces, kNoIndex), undecided(num_faces, kNoIndex);
+  std::vector<Index> shell(num_components, kNoIndex), undecided(num_components, kNoIndex);
   std::size_t num_shells = 0, num_undecided = 0;
-  for (Index r = 0; r < num_faces; ++r) {
-    if (root[r] != r)
-      continue;
+  for (Index k = 0; k < num_components; ++k) {
     const bool flat =
-        std::abs(volume[r]) <= std::max(1e-9 * magnitude[r], kRoundingMargin * noise[r]);
-    if (open[r] || flat) {
-      undecided[r] = static_cast<Index>(num_undecided++);
+        std::abs(volume[k]) <= std::max(1e-9 * magnitude[k], kRoundingMargin * noise[k]);
+    if (open[k] || flat) {
+      undecided[k] = static_cast<Index>(num_undecided++);
     } else {
-      shell[r] = static_cast<Index>(num_shells++);
+      shell[k] = static_cast<Index>(num_shells++);
     }
   }
-  std::vector<char> reverse(num_faces, 0);
+  std::vector<char> reverse(num_components, 0);
   if (num_shells > 0) {
-    std::vector<Index> face_shell(num_faces);
-    for (Index f = 0; f < num_faces; ++f)
-      face_shell[f] = shell[root[f]];
-    const std::vector<Index> depth = nesting_depths(soup, flipped, face_shell, num_shells);
-    for (Index r = 0; r < num_faces; ++r) {
-      if (shell[r] != kNoIndex)
-        reverse[r] = (volume[r] < 0) != (depth[shell[r]] % 2 == 1);
+    // One shell nests in nothing (depth 0): no per-face shell numbers needed.
+    std::vector<Index> depth(num_shells, 0);
+    if (num_shells > 1) {
+      std::vector<Index> face_shell(num_faces);
+      for (Index f = 0; f < num_faces; ++f)
+        face_shell[f] = shell[component[f]];
+      depth = nesting_depths(soup, flipped, face_shell, num_shells);
+    }
+    for (Index k = 0; k < num_components; ++k) {
+      if (shell[k] != kNoIndex)
+        reverse[k] = (volume[k] < 0) != (depth[shell[k]] % 2 == 1);
     }
   }
   if (num_undecided > 0) {
-    const std::vector<char> decided = open_component_reversal(
-        soup, corner_face, mate, flipped, root, undecided, num_undecided, reference, volume, noise);
-    for (Index r = 0; r < num_faces; ++r) {
-      if (undecided[r] != kNoIndex)
-        reverse[r] = decided[undecided[r]];
+    const std::vector<char> decided =
+        open_component_reversal(soup, corner_face, mate, flipped, component, undecided,
+                                num_undecided, reference, volume, noise);
+    for (Index k = 0; k < num_components; ++k) {
+      if (undecided[k] != kNoIndex)
+        reverse[k] = decided[undecided[k]];
     }
   }
   for (Index f = 0; f < num_faces; ++f)
-    flipped[f] ^= reverse[root[f]];
+    flipped[f] ^= reverse[component[f]];
 }
 
 }  // namespace meshbridge::detail
