@@ -106,9 +106,11 @@ def test_killed_half_way_and_resumed_every_file_done_once(tmp_path):
                            capture_output=True, text=True, timeout=600)
     assert again.stdout == table.stdout  # and the same table
     # A worker killed while writing leaves its hidden temporary file (never a half-written
-    # output); everything else is the CLI's output, file for file.
+    # output), named by the atomic writer ".NAME.PID.N.RANDOM.tmp.EXT"; everything else is the
+    # CLI's output, file for file.
+    temporary = re.compile(r"\..+\.[0-9]+\.[0-9]+\.[0-9]+\.tmp\.\w+")
     ours = sorted(p.relative_to(outdir) for p in outdir.rglob("*")
-                  if p.is_file() and not re.fullmatch(r"\..+\.tmp[0-9]+\.\w+", p.name))
+                  if p.is_file() and not temporary.fullmatch(p.name))
     theirs = sorted(p.relative_to(cli_out) for p in cli_out.rglob("*") if p.is_file())
     assert ours == theirs
     for relative in ours:
