@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Reading a file in parts on several threads gives the soup, the counts and the errors of the
+// one-thread read, bit for bit (MESHBRIDGE_THREADS picks the number of threads; files are made
+// large enough to be cut, and shuffled so that vertices are first met in every part).
+#include "meshbridge/errors.h"
+#include "meshbridge/io.h"
+#include "meshbridge/models/canonical_models.h"
+
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace meshbridge;
+
+namespace {
+
+//! Sets MESHBRIDGE_THREADS for its lifetime.
+class ThreadsSetting {
+ public:
+  explicit ThreadsSetting(unsigned n) {
+    setenv("MESHBRIDGE_THREADS", std::to_string(n).c_str(), 1);
+  }
+  ~ThreadsSetting() { unsetenv("MESHBRIDGE_THREADS"); }
+};
+
+struct Reading {
+  Soup soup;
+  ReadInfo info;
+  std::string error;  // the message, if the read threw
+};
+
+Reading read_with(unsigned threads, const std::string& path) {
+  const ThreadsSetting setting(threads);
+  Reading r;
+  try {
+    r.soup = read_soup(path, &r.info);
+  } catch (const std::exception& e) {
+    r.error = e.what();
+  }
+  return r;
+}
+
+::testing::AssertionResult same_reading(const Reading& a, const Reading& b) {
+  if (a.error != b.error)
+    return ::testing::AssertionFailure()
+           << "errors differ: '" << a.error << "' / '" << b.error << "'";
+  if (a.soup.positions.size() != b.soup.positions.size() ||
+      std::memcmp(a.soup.positions.data(), b.soup.positions.data(),
+                  a.soup.positions.size() * sizeof(Point)) != 0)
+    return ::testing::AssertionFailure() << "positions differ";
+  if (a.soup.corner_vertices != b.soup.corner_vertices || a.soup.face_begin != b.soup.face_begin)
+    return ::testing::AssertionFailure() << "polygons differ";
+  const ReadInfo &x = a.info, &y = b.info;
+  if (x.declared_vertices != y.declared_vertices || x.declared_faces != y.declared_faces ||
+      x.faces_kept != y.faces_kept || x.faces_split != y.faces_split ||
+      x.faces_set_aside != y.faces_set_aside ||
+      x.faces_without_corners != y.faces_without_corners || x.dangling_edges != y.dangling_edges ||
+      x.lone_points != y.lone_points)
+    return ::testing::AssertionFailure() << "counts differ";
+  return ::testing::AssertionSuccess();
+}
+
+class ParallelReading : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    char name[] = "/tmp/meshbridge_parallel_XXXXXX";
+    ASSERT_NE(mkdtemp(name), nullptr);
+    dir_ = name;
+  }
+  void TearDown() override {
+    for (const std::string& f : files_)
+      std::remove(f.c_str());
+    rmdir(dir_.c_str());
+  }
+  std::string path(const std::string& name) {
+    files_.push_back(dir_ + "/" + name);
+    return files_.back();
+  }
+  // 20 x 20 x 20 checkerboard cubes (48,000 triangles, singular edges everywhere), faces
+  // shuffled, one corner at -0 and a facet with one point three times.
+  static IndexedMesh test_mesh() {
+    Soup soup = test_support::shuffled(models::checkerboard_cubes(20), 7);
+    soup.positions[soup.corner_vertices[5]][0] = -0.0;
+    const Index v = soup.corner_vertices[3 * 30000];
+    soup.add_polygon({v, v, v});
+    IndexedMesh mesh;
+    mesh.soup = std::move(soup);
+    return mesh;
+  }
+  // Every thread count gives the one-thread reading.
+  void expect_same_for_every_thread_count(const std::string& file) {
+    const Reading one = read_with(1, file);
+    for (unsigned threads : {2u, 3u, 4u, 7u})
+      EXPECT_TRUE(same_reading(one, read_with(threads, file))) << file << ", " << threads;
+  }
+
+  std::string dir_;
+  std::vector<std::string> files_;
+};
+
+TEST_F(ParallelReading, binary_and_ascii_stl_weld_the_same_in_parts) {
+  const IndexedMesh mesh = test_mesh();
+  const std::string binary = path("board.stl"), ascii = path("board_ascii.stl");
+  write_mesh(binary, mesh);
+  WriteOptions text;
+  text.binary = false;
+  write_mesh(ascii, mesh, nullptr, text);
+  const Reading one = read_with(1, binary);
+  ASSERT_EQ(one.error, "");
+  EXPECT_EQ(one.info.faces_set_aside, 1u);
+  EXPECT_LT(one.soup.num_vertices(), mesh.soup.num_vertices() + 1);
+  expect_same_for_every_thread_count(binary);
+  expect_same_for_every_thread_count(ascii);
+  EXPECT_TRUE(same_reading(one, read_with(2, ascii)));
+}
+
+TEST_F(ParallelReading, binary_stl_names_the_first_non_finite_corner_in_file_order) {
+  const IndexedMesh mesh = test_mesh();
+  const std::string file = path("nan.stl");
+  write_mesh(file, mesh);
+  std::fstream bytes(file, std::ios::in | std::ios::out | std::ios::binary);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  // Triangle 40000 (last part), then triangle 20000 (a middle part), corner 1, y.
+  for (const auto& [triangle, value] : {std::pair<long, float>{40000, inf}, {20000, nan}}) {
+    bytes.seekp(84 + 50 * triangle + 12 + 12 + 4);
+    bytes.write(reinterpret_cast<const char*>(&value), 4);
+  }
+  bytes.close();
+  const Reading one = read_with(1, file);
+  EXPECT_NE(one.error.find("triangle 20000, corner 1 has a non-finite"), std::string::npos)
+      << one.error;
+  expect_same_for_every_thread_count(file);
+}
+
+}  // namespace
