@@ -143,4 +143,67 @@ TEST_F(ParallelReading, binary_stl_names_the_first_non_finite_corner_in_file_ord
   expect_same_for_every_thread_count(file);
 }
 
+// A binary little-endian PLY of `soup` as `list uchar int vertex_indices` faces, with float
+// vertices that carry one extra property (so their records are not just x, y, z).
+void write_plain_ply(const std::string& file, const Soup& soup) {
+  std::ofstream out(file, std::ios::binary);
+  out << "ply\nformat binary_little_endian 1.0\nelement vertex " << soup.num_vertices()
+      << "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar flags\n"
+      << "element face " << soup.num_faces() << "\nproperty list uchar int vertex_indices\n"
+      << "end_header\n";
+  for (const Point& p : soup.positions) {
+    const float xyz[3] = {float(p[0]), float(p[1]), float(p[2])};
+    out.write(reinterpret_cast<const char*>(xyz), 12);
+    out.put(7);
+  }
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    out.put(static_cast<char>(soup.arity(f)));
+    for (Index v : soup.polygon(f)) {
+      const std::int32_t i = static_cast<std::int32_t>(v);
+      out.write(reinterpret_cast<const char*>(&i), 4);
+    }
+  }
+}
+
+TEST_F(ParallelReading, binary_ply_vertices_and_faces_read_the_same_in_parts) {
+  const Soup board = test_support::shuffled(models::checkerboard_cubes(20), 3);
+  const std::string plain = path("board.ply"), written = path("board_written.ply");
+  write_plain_ply(plain, board);
+  IndexedMesh mesh;
+  mesh.soup = board;
+  write_mesh(written, mesh);
+  const Reading one = read_with(1, plain);
+  ASSERT_EQ(one.error, "");
+  EXPECT_EQ(one.soup.corner_vertices, board.corner_vertices);
+  expect_same_for_every_thread_count(plain);
+  expect_same_for_every_thread_count(written);
+}
+
+TEST_F(ParallelReading, binary_ply_faces_that_are_not_all_alike_read_the_same_in_parts) {
+  const Soup board = models::checkerboard_cubes(20);
+  // A quad in a late part: the records after it are 4 bytes later than a triangle's would be.
+  Soup quad = board;
+  quad.corner_vertices.insert(quad.corner_vertices.begin() + 3 * 40000 + 3, 0);
+  for (std::size_t f = 40000 + 1; f < quad.face_begin.size(); ++f)
+    ++quad.face_begin[f];
+  // A negative index and an index beyond the vertices, in two different parts.
+  Soup bad = board;
+  bad.corner_vertices[3 * 20000 + 1] = static_cast<Index>(-5);
+  bad.corner_vertices[3 * 40000 + 2] = static_cast<Index>(bad.num_vertices() + 3);
+  Soup beyond = board;
+  beyond.corner_vertices[3 * 40000 + 2] = static_cast<Index>(beyond.num_vertices() + 3);
+  const std::string quad_file = path("quad.ply"), bad_file = path("bad.ply");
+  const std::string beyond_file = path("beyond.ply");
+  write_plain_ply(quad_file, quad);
+  write_plain_ply(bad_file, bad);
+  write_plain_ply(beyond_file, beyond);
+  EXPECT_EQ(read_with(1, quad_file).soup.arity(40000), 4u);
+  EXPECT_NE(read_with(1, bad_file).error.find("face 20000, corner 1"), std::string::npos);
+  EXPECT_NE(read_with(1, beyond_file).error.find("face 40000, corner 2"), std::string::npos)
+      << read_with(1, beyond_file).error;
+  expect_same_for_every_thread_count(quad_file);
+  expect_same_for_every_thread_count(bad_file);
+  expect_same_for_every_thread_count(beyond_file);
+}
+
 }  // namespace

@@ -21,7 +21,7 @@ inline void advise_huge_pages(const void* data, std::size_t bytes) {
     ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
 }
 
-//! Reserves `n` elements of an empty vector and hints huge pages for them.
+//! Reserves `n` elements and hints huge pages for the part not yet touched.
 template <class T>
 void reserve_huge(std::vector<T>& v, std::size_t n) {
   v.reserve(n);
