@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -36,6 +37,7 @@ class ThreadsSetting {
 struct Reading {
   Soup soup;
   ReadInfo info;
+  MeshAttributes attributes;
   std::string error;  // the message, if the read threw
 };
 
@@ -43,7 +45,7 @@ Reading read_with(unsigned threads, const std::string& path) {
   const ThreadsSetting setting(threads);
   Reading r;
   try {
-    r.soup = read_soup(path, &r.info);
+    r.soup = read_soup(path, &r.info, &r.attributes);
   } catch (const std::exception& e) {
     r.error = e.what();
   }
@@ -58,8 +60,16 @@ Reading read_with(unsigned threads, const std::string& path) {
       std::memcmp(a.soup.positions.data(), b.soup.positions.data(),
                   a.soup.positions.size() * sizeof(Point)) != 0)
     return ::testing::AssertionFailure() << "positions differ";
-  if (a.soup.corner_vertices != b.soup.corner_vertices || a.soup.face_begin != b.soup.face_begin)
-    return ::testing::AssertionFailure() << "polygons differ";
+  if (a.soup.face_begin != b.soup.face_begin)
+    return ::testing::AssertionFailure() << "face offsets differ";
+  if (a.soup.corner_vertices != b.soup.corner_vertices) {
+    std::size_t c = 0;
+    while (a.soup.corner_vertices[c] == b.soup.corner_vertices[c])
+      ++c;
+    return ::testing::AssertionFailure()
+           << "corner " << c << " differs: " << a.soup.corner_vertices[c] << " / "
+           << b.soup.corner_vertices[c];
+  }
   const ReadInfo &x = a.info, &y = b.info;
   if (x.declared_vertices != y.declared_vertices || x.declared_faces != y.declared_faces ||
       x.faces_kept != y.faces_kept || x.faces_split != y.faces_split ||
@@ -67,6 +77,17 @@ Reading read_with(unsigned threads, const std::string& path) {
       x.faces_without_corners != y.faces_without_corners || x.dangling_edges != y.dangling_edges ||
       x.lone_points != y.lone_points)
     return ::testing::AssertionFailure() << "counts differ";
+  if (!(a.attributes.vertex_colors == b.attributes.vertex_colors) ||
+      !(a.attributes.face_colors == b.attributes.face_colors) ||
+      a.attributes.double_precision != b.attributes.double_precision)
+    return ::testing::AssertionFailure() << "colours differ";
+  if (a.attributes.face_groups.size() != b.attributes.face_groups.size())
+    return ::testing::AssertionFailure() << "groups differ";
+  for (std::size_t g = 0; g < a.attributes.face_groups.size(); ++g) {
+    if (a.attributes.face_groups[g].name != b.attributes.face_groups[g].name ||
+        a.attributes.face_groups[g].first_face != b.attributes.face_groups[g].first_face)
+      return ::testing::AssertionFailure() << "group " << g << " differs";
+  }
   return ::testing::AssertionSuccess();
 }
 
@@ -204,6 +225,78 @@ TEST_F(ParallelReading, binary_ply_faces_that_are_not_all_alike_read_the_same_in
   expect_same_for_every_thread_count(quad_file);
   expect_same_for_every_thread_count(bad_file);
   expect_same_for_every_thread_count(beyond_file);
+}
+
+// An OBJ of `soup` with everything a part boundary could cut: vertices written just before the
+// first face that needs them, every third face with negative (relative) indices that reach back
+// across parts, colours on some vertices of the second half only, groups, l and p records,
+// comments, line continuations and CRLF line ends here and there.
+void write_busy_obj(const std::string& file, const Soup& soup) {
+  std::ofstream out(file, std::ios::binary);
+  std::size_t written = 0;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    for (Index v : soup.polygon(f)) {
+      for (; written <= v; ++written) {
+        const Point& p = soup.positions[written];
+        out << "v " << p[0] << ' ' << p[1] << ' ' << p[2];
+        if (written > soup.num_vertices() / 2 && written % 100 < 5)
+          out << " 0.25 0.5 1";
+        out << (written % 31 == 0 ? "\r\n" : "\n");
+      }
+    }
+    if (f % 5000 == 0)
+      out << (f % 10000 == 0 ? "g part" : "usemtl m") << f << "\n# a comment \\\ns 1\n";
+    if (f % 4001 == 0)
+      out << "l 1 2 -1\np -2\n";
+    out << "f";
+    int i = 0;
+    for (Index v : soup.polygon(f)) {
+      if (f % 3 == 0)
+        out << " -" << written - v;
+      else
+        out << ' ' << v + 1 << (f % 3 == 1 ? "//1" : "");
+      if (f % 97 == 0 && i++ == 1)
+        out << " \\\n";
+    }
+    out << "\n";
+  }
+}
+
+TEST_F(ParallelReading, obj_with_relative_indices_groups_and_colours_reads_the_same_in_parts) {
+  const Soup board = test_support::shuffled(models::checkerboard_cubes(30), 5);
+  const std::string file = path("busy.obj");
+  write_busy_obj(file, board);
+  const Reading one = read_with(1, file);
+  ASSERT_EQ(one.error, "");
+  EXPECT_EQ(one.soup.num_faces(), board.num_faces());
+  EXPECT_GT(one.info.dangling_edges, 0u);
+  EXPECT_EQ(one.attributes.vertex_colors.size(), one.soup.num_vertices());
+  EXPECT_FALSE(one.attributes.face_groups.empty());
+  expect_same_for_every_thread_count(file);
+}
+
+TEST_F(ParallelReading, obj_errors_in_later_parts_are_named_as_by_one_thread) {
+  const Soup board = models::checkerboard_cubes(30);
+  const std::string clean = path("clean.obj");
+  write_busy_obj(clean, board);
+  std::ifstream in(clean, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // A relative index before the first vertex near the end, then a bad number later still; and
+  // the other way round.
+  const std::size_t late = text.find("\nf ", text.size() * 3 / 4);
+  const std::size_t later = text.find("\nv ", text.size() * 7 / 8);
+  const std::string before_first = path("before_first.obj"), bad_number = path("bad_number.obj");
+  std::ofstream(before_first, std::ios::binary)
+      << text.substr(0, late) << "\nf 1 2 -99999999" << text.substr(late, later - late)
+      << "\nv 1 2 x" << text.substr(later);
+  std::ofstream(bad_number, std::ios::binary)
+      << text.substr(0, late) << "\nv 1 2 x" << text.substr(late, later - late)
+      << "\nf 1 2 -99999999" << text.substr(later);
+  const Reading one = read_with(1, before_first);
+  EXPECT_NE(one.error.find("before the first vertex"), std::string::npos) << one.error;
+  EXPECT_NE(read_with(1, bad_number).error.find("is not a number"), std::string::npos);
+  expect_same_for_every_thread_count(before_first);
+  expect_same_for_every_thread_count(bad_number);
 }
 
 }  // namespace

@@ -156,8 +156,17 @@ class RecentPositions {
   std::vector<Slot> slots_;
 };
 
-//! Welds the part's corners into its table; `out[c]` becomes corner c's part vertex.
-void weld_part(const CornerKeys& corner_keys, Part& part, Index* out) {
+Point to_point(const FloatKey& key) {
+  float xyz[3];
+  std::memcpy(xyz, key.data(), 12);
+  return Point(xyz[0], xyz[1], xyz[2]);
+}
+
+//! Welds the part's corners into its table; `out[c]` becomes corner c's part vertex. The part's
+//! new positions go to `positions` if given (the first part: its numbers are the soup's), else
+//! to `part.keys`.
+void weld_part(const CornerKeys& corner_keys, Part& part, Index* out,
+               std::vector<Point>* positions) {
   FloatKey keys[2][kBlock];
   std::uint32_t hashes[2][kBlock];
   RecentPositions recent;
@@ -171,7 +180,8 @@ void weld_part(const CornerKeys& corner_keys, Part& part, Index* out) {
     }
     return n;
   };
-  reserve_huge(part.keys, (part.last - part.first) / 6 + 16);
+  if (positions == nullptr)
+    reserve_huge(part.keys, (part.last - part.first) / 5 + 16);
   std::size_t c = part.first;
   std::size_t n = c < part.last ? load(c, 0) : 0;
   for (int b = 0; n > 0; b ^= 1) {
@@ -183,7 +193,9 @@ void weld_part(const CornerKeys& corner_keys, Part& part, Index* out) {
       if (v == kNoIndex) {
         bool added = false;
         v = part.table.find_or_add(key, hashes[b][i], added);
-        if (added)
+        if (added && positions != nullptr)
+          positions->push_back(to_point(key));
+        else if (added)
           part.keys.push_back(key);
         recent.remember(key, hashes[b][i], v);
       }
@@ -192,12 +204,6 @@ void weld_part(const CornerKeys& corner_keys, Part& part, Index* out) {
     c = next;
     n = following;
   }
-}
-
-Point to_point(const FloatKey& key) {
-  float xyz[3];
-  std::memcpy(xyz, key.data(), 12);
-  return Point(xyz[0], xyz[1], xyz[2]);
 }
 
 //! Numbers the vertices of parts[1..] in file order: a position an earlier part has keeps that
@@ -245,25 +251,20 @@ void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, S
   soup.face_begin.resize(triangles + 1);
   Index* out = soup.corner_vertices.data();
 
+  // A closed triangle mesh has about half as many vertices as triangles, a part border a few more.
+  reserve_huge(soup.positions, corners / 5 + 16);
   std::vector<Part> parts;
   parts.reserve(n);
   for (unsigned k = 0; k < n; ++k)
     parts.emplace_back(3 * part_begin(triangles, n, k), 3 * part_begin(triangles, n, k + 1));
   run_parts(n, [&](unsigned k) {
-    weld_part(corner_keys, parts[k], out);
+    weld_part(corner_keys, parts[k], out, k == 0 ? &soup.positions : nullptr);
     // The face offsets of the part's triangles, while its corners are in cache.
     for (std::size_t f = parts[k].first / 3; f < parts[k].last / 3; ++f)
       soup.face_begin[f] = static_cast<Index>(3 * f);
   });
   soup.face_begin[triangles] = static_cast<Index>(3 * triangles);
 
-  std::size_t most = 0;
-  for (const Part& part : parts)
-    most += part.keys.size();
-  reserve_huge(soup.positions, most);
-  for (const FloatKey& key : parts[0].keys)
-    soup.positions.push_back(to_point(key));
-  std::vector<FloatKey>().swap(parts[0].keys);
   merge_parts(parts, soup.positions);
   for (Part& part : parts) {
     part.table.release();
