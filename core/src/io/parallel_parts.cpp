@@ -5,24 +5,29 @@
 #include <algorithm>
 #include <cstdlib>
 #include <exception>
+#include <string_view>
 #include <thread>
 #include <vector>
 
 namespace meshbridge::detail {
 
 unsigned reading_threads() {
-  if (const char* text = std::getenv("MESHBRIDGE_THREADS")) {
-    char* end = nullptr;
-    const long value = std::strtol(text, &end, 10);
-    if (end != text && *end == '\0' && value >= 1)
-      return static_cast<unsigned>(std::min(value, 64L));
+  const char* text = std::getenv("MESHBRIDGE_THREADS");
+  if (text == nullptr)
+    return 1;
+  if (std::string_view(text) == "auto") {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    int cpus = 1;
+    if (sched_getaffinity(0, sizeof(set), &set) == 0)
+      cpus = CPU_COUNT(&set);
+    return static_cast<unsigned>(std::clamp(cpus, 1, 8));
   }
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  int cpus = 1;
-  if (sched_getaffinity(0, sizeof(set), &set) == 0)
-    cpus = CPU_COUNT(&set);
-  return static_cast<unsigned>(std::clamp(cpus, 1, 8));
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  if (end != text && *end == '\0' && value >= 1)
+    return static_cast<unsigned>(std::min(value, 64L));
+  return 1;
 }
 
 void run_parts(unsigned n, const std::function<void(unsigned k)>& part) {

@@ -10,9 +10,10 @@
 namespace meshbridge::detail {
 
 //! Threads a reader may use: the environment variable MESHBRIDGE_THREADS when it holds a whole
-//! number >= 1 (MESHBRIDGE_THREADS=1 reads on one thread, e.g. for the 1-core figures of the
-//! benchmark); otherwise the CPUs this process may run on (its affinity mask, so `taskset -c 0`
-//! gives 1), at most 8. Read on every call, so a test may change it between reads.
+//! number >= 1 (at most 64); "auto": the CPUs this process may run on (its affinity mask, so
+//! under `taskset -c 0` it is 1), at most 8; unset or anything else: 1. One is the default
+//! because two threads gave no gain on the 2-core machines this was measured on, shared with
+//! other work (see the commit that made it so). Read on every call, so a test may change it.
 unsigned reading_threads();
 
 //! Runs `part(k)` for every k in [0, n): part 0 on the calling thread, each other one on a thread

@@ -209,6 +209,8 @@ class PlyReader {
         read_vertices(e, roles, source);
       else
         read_records(e, roles, source);
+      if constexpr (std::is_same_v<Source, BinarySource>)  // what is read is not needed again
+        file_.release_before(reinterpret_cast<const char*>(source.position()));
     }
   }
 
