@@ -44,13 +44,16 @@ MappedFile::MappedFile(const std::string& path) : path_(path) {
   data_ = static_cast<const char*>(map);
 }
 
-void MappedFile::release_before(const char* upto) const {
+void MappedFile::release_between(const char* from, const char* upto) const {
   static const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
-  if (upto <= data_ || upto > data_ + size_)
-    return;
-  const std::size_t bytes = static_cast<std::size_t>(upto - data_) / page * page;
-  if (bytes > 0)
-    ::madvise(const_cast<char*>(data_), bytes, MADV_DONTNEED);
+  if (from < data_)
+    from = data_;
+  if (upto > data_ + size_)
+    upto = data_ + size_;
+  const std::size_t first = (static_cast<std::size_t>(from - data_) + page - 1) / page * page;
+  const std::size_t last = upto > data_ ? static_cast<std::size_t>(upto - data_) / page * page : 0;
+  if (last > first)
+    ::madvise(const_cast<char*>(data_) + first, last - first, MADV_DONTNEED);
 }
 
 MappedFile::~MappedFile() {

@@ -27,7 +27,10 @@ class MappedFile {
   //! Hands the pages wholly before `upto` back to the kernel (they stay readable: touching them
   //! again reads them back from the page cache). A reader that streams calls this every few
   //! megabytes, so the map adds only a window to the peak memory, not the whole file.
-  void release_before(const char* upto) const;
+  void release_before(const char* upto) const { release_between(data_, upto); }
+  //! The same for the pages wholly inside [from, upto): for readers that read parts side by
+  //! side, each releasing only its own.
+  void release_between(const char* from, const char* upto) const;
 
  private:
   std::string path_;

@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Welding STL corners by exact position: one open-addressing hash table on the 32-bit float
-// bit patterns, vertices in order of first appearance (as OpenMesh's STL reader numbers them).
+// Welding STL corners by exact position: an open-addressing hash table on the 32-bit float bit
+// patterns, vertices in order of first appearance (as OpenMesh's STL reader numbers them).
 
 #include "meshbridge/soup.h"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <vector>
+#include <functional>
 
 namespace meshbridge::detail {
 
@@ -33,54 +34,16 @@ inline std::uint32_t float_key_hash(const FloatKey& k) {
   return static_cast<std::uint32_t>(h >> 32);
 }
 
-//! Appends the triangles of `corners` corners (3 per triangle, in order) to `soup`: one vertex
-//! per distinct position in order of first appearance. `corner(c)` returns corner c's FloatKey
-//! (and may throw, e.g. for a non-finite coordinate).
-template <class CornerKey>
-void weld_triangle_corners(std::size_t corners, CornerKey corner, Soup& soup) {
-  std::size_t capacity = 1024;
-  while (capacity < corners / 2)
-    capacity *= 2;
-  std::vector<Index> slots(capacity, kNoIndex);
-  std::size_t mask = capacity - 1;
-  std::vector<FloatKey> keys;  // one per vertex: compact, so probes stay in cache
-  keys.reserve(corners / 4 + 16);
-  soup.corner_vertices.resize(corners);
-  soup.face_begin.resize(corners / 3 + 1);
-  for (std::size_t f = 0; f <= corners / 3; ++f)
-    soup.face_begin[f] = static_cast<Index>(3 * f);
-  for (std::size_t c = 0; c < corners; ++c) {
-    const FloatKey key = corner(c);
-    std::size_t s = float_key_hash(key) & mask;
-    while (slots[s] != kNoIndex && keys[slots[s]] != key)
-      s = (s + 1) & mask;
-    if (slots[s] != kNoIndex) {
-      soup.corner_vertices[c] = slots[s];
-      continue;
-    }
-    const Index v = static_cast<Index>(keys.size());
-    keys.push_back(key);
-    slots[s] = v;
-    soup.corner_vertices[c] = v;
-    if (2 * keys.size() > capacity) {  // keep the load at most 1/2
-      capacity *= 2;
-      mask = capacity - 1;
-      slots.assign(capacity, kNoIndex);
-      for (std::size_t u = 0; u < keys.size(); ++u) {
-        std::size_t t = float_key_hash(keys[u]) & mask;
-        while (slots[t] != kNoIndex)
-          t = (t + 1) & mask;
-        slots[t] = static_cast<Index>(u);
-      }
-    }
-  }
-  std::vector<Index>().swap(slots);
-  soup.positions.resize(keys.size());
-  for (std::size_t v = 0; v < keys.size(); ++v) {
-    float xyz[3];
-    std::memcpy(xyz, keys[v].data(), 12);
-    soup.positions[v] = Point(xyz[0], xyz[1], xyz[2]);
-  }
-}
+//! Writes the FloatKeys of corners [first, first + count) to `keys` (count <= 64). May throw
+//! (e.g. for a non-finite coordinate); it is called in corner order within each part.
+using CornerKeys = std::function<void(std::size_t first, std::size_t count, FloatKey* keys)>;
+
+//! Fills `soup` (empty) with `corners / 3` triangles, corner c of the file becoming soup corner
+//! c: one vertex per distinct position, numbered in order of first appearance. With `threads`
+//! > 1 (and enough corners) the corners are cut into that many parts, welded side by side and
+//! merged; the soup is the same as with one thread, and so is the error thrown (the one of the
+//! first corner in file order whose `corner_keys` call throws).
+void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, Soup& soup,
+                           unsigned threads);
 
 }  // namespace meshbridge::detail

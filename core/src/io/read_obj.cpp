@@ -4,6 +4,8 @@
 // mtllib and every other record are skipped (never opened).
 
 #include "io/formats.h"
+#include "io/huge_pages.h"
+#include "io/parallel_parts.h"
 #include "io/text_scanner.h"
 #include "meshbridge/errors.h"
 
@@ -18,20 +20,33 @@ namespace meshbridge::detail {
 
 namespace {
 
+//! Where a part of the file (after the first) refers to vertices relative to its own start.
+struct RelativeCorners {
+  //! (soup corner, vertices read in the part before it + its negative index) of every face
+  //! corner given as a negative index: its vertex is (vertices before the part) + that offset.
+  std::vector<std::pair<std::size_t, std::int64_t>> corners;
+  std::int64_t lowest = 0;  //!< lowest offset of any relative index (faces, l, p), or 0
+};
+
+//! Reads the lines [first, last) of an OBJ file (all of it, or one part when `relative` is
+//! given: then negative indices are recorded there, not resolved).
 class ObjReader {
  public:
-  ObjReader(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes)
+  ObjReader(const MappedFile& file, const char* first, const char* last, Soup& soup, ReadInfo& info,
+            MeshAttributes* attributes, RelativeCorners* relative = nullptr)
       : file_(file),
         soup_(soup),
         info_(info),
         attributes_(attributes),
-        in_(file.data(), file.end(), true, true) {}
+        relative_(relative),
+        in_(first, last, true, true),
+        released_(first) {}
 
   void read() {
     while (!in_.at_end()) {
       if (in_.position() - released_ > kReleaseEvery) {
+        file_.release_between(released_, in_.position());
         released_ = in_.position();
-        file_.release_before(released_);
       }
       const std::string_view keyword = in_.word();
       if (keyword == "v")
@@ -140,6 +155,13 @@ class ObjReader {
         fail(std::string(what) + " corner '" + clip(text) + "': index beyond 32 bits");
       return static_cast<Index>(index - 1);
     }
+    if (relative_ != nullptr) {  // resolved when the parts before are read
+      relative_->lowest = std::min(relative_->lowest, count + index);
+      if (std::string_view(what) == "face")  // l and p corners are counted, not kept
+        relative_->corners.emplace_back(soup_.corner_vertices.size() + corners_.size(),
+                                        count + index);
+      return 0;
+    }
     if (-index > count) {
       fail(std::string(what) + " corner '" + clip(text) + "' refers to vertex " +
            std::to_string(count + index + 1) + ", before the first vertex (" +
@@ -197,44 +219,180 @@ class ObjReader {
   Soup& soup_;
   ReadInfo& info_;
   MeshAttributes* attributes_;
+  RelativeCorners* relative_;
   TextScanner in_;
   std::vector<Index> corners_;
   std::size_t texcoords_or_normals_ = 0;
   static constexpr std::ptrdiff_t kReleaseEvery = 8 << 20;  // bytes of the map kept behind
-  const char* released_ = file_.data();
+  const char* released_;
 };
 
 // Counts 'v' and 'f' records (and the blanks of the 'f' lines, a bound on their corners) with
 // memchr, so the soup is allocated once: a few percent of the parse instead of reallocations.
-void reserve_for(const MappedFile& file, Soup& soup) {
+struct RecordCounts {
   std::size_t vertices = 0, faces = 0, corners = 0;
-  const char* p = file.data();
-  const char* end = file.end();
+};
+
+RecordCounts count_records(const char* p, const char* end) {
+  RecordCounts n;
   while (p < end) {
     const char* line_end = static_cast<const char*>(std::memchr(p, '\n', end - p));
     if (line_end == nullptr)
       line_end = end;
     if (line_end - p >= 2 && (p[1] == ' ' || p[1] == '\t')) {
       if (p[0] == 'v') {
-        ++vertices;
+        ++n.vertices;
       } else if (p[0] == 'f') {
-        ++faces;
-        corners += static_cast<std::size_t>(std::count(p + 1, line_end, ' '));
+        ++n.faces;
+        n.corners += static_cast<std::size_t>(std::count(p + 1, line_end, ' '));
       }
     }
     if (line_end == end)
       break;
     p = line_end + 1;
   }
-  soup.reserve(vertices, faces, corners);
+  return n;
+}
+
+void reserve(Soup& soup, const RecordCounts& n) {
+  reserve_huge(soup.positions, n.vertices);
+  reserve_huge(soup.face_begin, n.faces + 1);
+  reserve_huge(soup.corner_vertices, n.corners);
+}
+
+// The start of the line at or after `p` that does not continue the line before it (a line
+// before it ending in a backslash, '\r' aside).
+const char* line_start_after(const char* p, const char* first, const char* end) {
+  while (p < end && p > first && p[-1] != '\n')
+    ++p;
+  for (;;) {
+    const char* q = p - 1;  // the '\n' before p (or p is the start/end)
+    if (p >= end || p <= first)
+      return p;
+    while (q > first && q[-1] == '\r')
+      --q;
+    if (q == first || q[-1] != '\\')
+      return p;
+    const char* next = static_cast<const char*>(std::memchr(p, '\n', end - p));
+    p = next == nullptr ? end : next + 1;
+  }
+}
+
+//! One part of the file read on its own thread (parts after the first).
+struct ObjPart {
+  const char* first = nullptr;
+  const char* last = nullptr;
+  RecordCounts counts;
+  Soup soup;
+  ReadInfo info;
+  MeshAttributes attributes;
+  RelativeCorners relative;
+};
+
+//! Appends part `part` (read after `soup`'s vertices and faces) to `soup`, `info`, `attributes`.
+//! False if one of its negative indices points before the first vertex of the file.
+bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
+  const std::int64_t vertices_before = static_cast<std::int64_t>(soup.num_vertices());
+  if (vertices_before + part.relative.lowest < 0)
+    return false;
+  const Index corner_base = static_cast<Index>(soup.num_corners());
+  const Index face_base = static_cast<Index>(soup.num_faces());
+  for (const auto& [corner, offset] : part.relative.corners)
+    part.soup.corner_vertices[corner] = static_cast<Index>(vertices_before + offset);
+  if (attributes != nullptr) {
+    const Rgba white{255, 255, 255, 255};
+    auto& colors = attributes->vertex_colors;
+    if (!colors.empty() || !part.attributes.vertex_colors.empty()) {
+      colors.resize(soup.num_vertices(), white);
+      colors.insert(colors.end(), part.attributes.vertex_colors.begin(),
+                    part.attributes.vertex_colors.end());
+      colors.resize(soup.num_vertices() + part.soup.num_vertices(), white);
+    }
+    for (FaceGroup& group : part.attributes.face_groups) {
+      group.first_face += face_base;
+      attributes->face_groups.push_back(std::move(group));
+    }
+  }
+  soup.positions.insert(soup.positions.end(), part.soup.positions.begin(),
+                        part.soup.positions.end());
+  soup.corner_vertices.insert(soup.corner_vertices.end(), part.soup.corner_vertices.begin(),
+                              part.soup.corner_vertices.end());
+  for (std::size_t f = 1; f < part.soup.face_begin.size(); ++f)
+    soup.face_begin.push_back(corner_base + part.soup.face_begin[f]);
+  info.declared_vertices += part.info.declared_vertices;
+  info.declared_faces += part.info.declared_faces;
+  info.faces_without_corners += part.info.faces_without_corners;
+  info.dangling_edges += part.info.dangling_edges;
+  info.lone_points += part.info.lone_points;
+  part = ObjPart();  // its memory goes back before the next part is appended
+  return true;
+}
+
+//! Reads the file in `n` parts side by side: part 0 into `soup`, the others into their own soups
+//! appended in file order. False (outputs to be reset) if a part met an error or a negative
+//! index that reaches before the file's first vertex: the one-thread read names it.
+bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& info,
+                   MeshAttributes* attributes) {
+  std::vector<ObjPart> parts(n);
+  for (unsigned k = 0; k < n; ++k) {
+    parts[k].first = k == 0 ? file.data() : parts[k - 1].last;
+    parts[k].last = k + 1 == n ? file.end()
+                               : line_start_after(file.data() + part_begin(file.size(), n, k + 1),
+                                                  file.data(), file.end());
+    parts[k].last = std::max(parts[k].last, parts[k].first);
+  }
+  std::vector<bool> failed(n, false);
+  run_parts(n, [&](unsigned k) {
+    ObjPart& part = parts[k];
+    part.counts = count_records(part.first, part.last);
+    file.release_between(part.first, part.last);  // the count touched every page
+  });
+  RecordCounts total;
+  for (const ObjPart& part : parts) {
+    total.vertices += part.counts.vertices;
+    total.faces += part.counts.faces;
+    total.corners += part.counts.corners;
+  }
+  reserve(soup, total);
+  run_parts(n, [&](unsigned k) {
+    ObjPart& part = parts[k];
+    try {
+      if (k == 0) {
+        ObjReader(file, part.first, part.last, soup, info, attributes).read();
+      } else {
+        reserve(part.soup, part.counts);
+        ObjReader(file, part.first, part.last, part.soup, part.info,
+                  attributes != nullptr ? &part.attributes : nullptr, &part.relative)
+            .read();
+      }
+    } catch (const ReadError&) {
+      failed[k] = true;
+    }
+  });
+  for (unsigned k = 0; k < n; ++k) {
+    if (failed[k] || (k > 0 && !append_part(parts[k], soup, info, attributes)))
+      return false;
+  }
+  return true;
 }
 
 }  // namespace
 
 void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
-  reserve_for(file, soup);
-  file.release_before(file.end());  // the counting pass touched every page
-  ObjReader(file, soup, info, attributes).read();
+  // Parts of less than 1 MiB cost more to start and append than they save.
+  const unsigned n = static_cast<unsigned>(
+      std::clamp<std::size_t>(file.size() / (std::size_t(1) << 20), 1, reading_threads()));
+  if (n > 1) {
+    if (read_in_parts(file, n, soup, info, attributes))
+      return;
+    soup = Soup();
+    info = ReadInfo();
+    if (attributes != nullptr)
+      *attributes = MeshAttributes();
+  }
+  reserve(soup, count_records(file.data(), file.end()));
+  file.release_between(file.data(), file.end());  // the counting pass touched every page
+  ObjReader(file, file.data(), file.end(), soup, info, attributes).read();
 }
 
 }  // namespace meshbridge::detail

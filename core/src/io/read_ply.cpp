@@ -3,6 +3,9 @@
 // `tristrips` and `edge` elements; every other element and property skipped by its declared
 // size. Per-vertex and per-face colours go to MeshAttributes.
 #include "io/formats.h"
+#include "io/huge_pages.h"
+#include "io/parallel_parts.h"
+#include "io/ply_binary_blocks.h"
 #include "io/ply_header.h"
 #include "io/ply_sources.h"
 
@@ -206,6 +209,8 @@ class PlyReader {
         read_vertices(e, roles, source);
       else
         read_records(e, roles, source);
+      if constexpr (std::is_same_v<Source, BinarySource>)  // what is read is not needed again
+        file_.release_before(reinterpret_cast<const char*>(source.position()));
     }
   }
 
@@ -233,6 +238,7 @@ class PlyReader {
   template <class Source>
   void read_vertices(const PlyElement& e, const std::vector<Role>& roles, Source& source) {
     const std::size_t n = static_cast<std::size_t>(e.count);
+    reserve_huge(soup_.positions, n);
     soup_.positions.resize(n);
     info_.declared_vertices = n;
     const bool colors = wants_colors(roles);
@@ -295,15 +301,8 @@ class PlyReader {
     if (stride == 0 || (type != PlyScalar::f32 && type != PlyScalar::f64))
       return false;
     // read_elements checked that the whole element is in the file.
-    const unsigned char* p = source.position();
-    const bool swap = source.swaps();
-    for (Point& point : soup_.positions) {
-      for (int c = 0; c < 3; ++c) {
-        point[c] = type == PlyScalar::f32 ? double(load<float>(p + offset[c], swap))
-                                          : load<double>(p + offset[c], swap);
-      }
-      p += stride;
-    }
+    read_ply_fixed_vertices(source.position(), stride, offset, type, source.swaps(),
+                            soup_.positions, reading_threads());
     source.advance(stride * soup_.positions.size());
     return true;
   }
@@ -315,8 +314,8 @@ class PlyReader {
     const bool colors = faces && wants_colors(roles);
     if (faces) {
       info_.declared_faces += static_cast<std::size_t>(e.count);
-      soup_.face_begin.reserve(soup_.face_begin.size() + e.count);
-      soup_.corner_vertices.reserve(soup_.corner_vertices.size() + 3 * e.count);
+      reserve_huge(soup_.face_begin, soup_.face_begin.size() + e.count);
+      reserve_huge(soup_.corner_vertices, soup_.corner_vertices.size() + 3 * e.count);
       if (colors)
         attributes_->face_colors.reserve(e.count);
     }
@@ -363,6 +362,13 @@ class PlyReader {
       return false;
     }
     const bool swap = source.swaps();
+    // All n-gons of one n with valid indices (almost every file): in blocks, in parts.
+    if (const std::size_t bytes =
+            read_ply_uniform_faces(source.position(), source.remaining(), e.count,
+                                   e.properties[0].type, swap, soup_, reading_threads())) {
+      source.advance(bytes);
+      return true;
+    }
     for (std::uint64_t i = 0; i < e.count; ++i) {
       if (source.remaining() < 1)
         throw unreadable(e, i, e.properties[0]);

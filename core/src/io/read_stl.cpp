@@ -2,6 +2,7 @@
 // The STL reader: binary (decided by size: 84 + 50 n bytes, whatever the header says) and ascii,
 // corners welded by exact position into shared vertices in order of first appearance.
 #include "io/formats.h"
+#include "io/parallel_parts.h"
 #include "io/position_weld.h"
 #include "io/text_scanner.h"
 
@@ -23,13 +24,6 @@ std::uint32_t little_endian_u32(const unsigned char* b) {
          std::uint32_t(b[3]) << 24;
 }
 
-float little_endian_float(const unsigned char* b) {
-  const std::uint32_t bits = little_endian_u32(b);
-  float value;
-  std::memcpy(&value, &bits, 4);
-  return value;
-}
-
 bool equals_ignoring_case(std::string_view word, std::string_view lower) {
   if (word.size() != lower.size())
     return false;
@@ -45,17 +39,33 @@ void read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup, Re
   const auto* bytes = reinterpret_cast<const unsigned char*>(file.data()) + 84;
   info.declared_faces = triangles;
   info.declared_vertices = 3 * std::size_t(triangles);
-  const auto corner = [&file, bytes](std::size_t c) {
-    const unsigned char* p = bytes + 50 * (c / 3) + 12 + 12 * (c % 3);  // after the normal
-    const float x = little_endian_float(p), y = little_endian_float(p + 4),
-                z = little_endian_float(p + 8);
-    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
-      throw InvalidSoupError(file.path() + ": binary STL triangle " + std::to_string(c / 3) +
-                             ", corner " + std::to_string(c % 3) + " has a non-finite coordinate");
+  const auto keys = [&file, bytes](std::size_t first, std::size_t count, FloatKey* out) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t c = first + i;
+      const unsigned char* p = bytes + 50 * (c / 3) + 12 + 12 * (c % 3);  // after the normal
+      const std::uint32_t bits[3] = {little_endian_u32(p), little_endian_u32(p + 4),
+                                     little_endian_u32(p + 8)};
+      // All exponent bits set: infinite or NaN.
+      if ((bits[0] & 0x7F800000u) == 0x7F800000u || (bits[1] & 0x7F800000u) == 0x7F800000u ||
+          (bits[2] & 0x7F800000u) == 0x7F800000u) {
+        throw InvalidSoupError(file.path() + ": binary STL triangle " + std::to_string(c / 3) +
+                               ", corner " + std::to_string(c % 3) +
+                               " has a non-finite coordinate");
+      }
+      for (int k = 0; k < 3; ++k)
+        out[i][k] = bits[k] == 0x80000000u ? 0 : bits[k];  // -0 is +0 (float_key)
     }
-    return float_key(x, y, z);
+    // Every 8 MiB of the file, the 8 MiB read before go back to the kernel (see release_before),
+    // so the map adds a window to the peak memory, not the whole file. (At the start of a part
+    // that window may end another part; a page it still reads is read back from the cache.)
+    constexpr std::size_t kWindow = std::size_t(8) << 20;
+    const std::size_t from = 84 + 50 * (first / 3), to = 84 + 50 * ((first + count + 2) / 3);
+    if (from / kWindow != to / kWindow) {
+      const char* border = file.data() + to / kWindow * kWindow;
+      file.release_between(border - kWindow, border);
+    }
   };
-  weld_triangle_corners(3 * std::size_t(triangles), corner, soup);
+  weld_triangle_corners(3 * std::size_t(triangles), keys, soup, reading_threads());
 }
 
 void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
@@ -106,10 +116,11 @@ void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
   }
   info.declared_faces = triangles;
   info.declared_vertices = 3 * triangles;
-  const auto corner = [&corners](std::size_t c) {
-    return float_key(corners[3 * c], corners[3 * c + 1], corners[3 * c + 2]);
+  const auto keys = [&corners](std::size_t first, std::size_t count, FloatKey* out) {
+    for (std::size_t c = first; c < first + count; ++c)
+      out[c - first] = float_key(corners[3 * c], corners[3 * c + 1], corners[3 * c + 2]);
   };
-  weld_triangle_corners(3 * triangles, corner, soup);
+  weld_triangle_corners(3 * triangles, keys, soup, reading_threads());
 }
 
 }  // namespace

@@ -1,0 +1,282 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The weld of STL corners. Where the time goes: one random probe of a table much larger than the
+// caches per corner. So each slot holds its whole key (one cache miss per probe, not two), the
+// slots of the next block of corners are prefetched while this block is looked up, and the table
+// lives on zero pages from the kernel (no memset) backed by huge pages where granted (few TLB
+// misses). With several threads, each part of the file gets a table of its own; the parts are
+// then merged in file order so that every vertex keeps its one-thread number.
+
+#include "io/position_weld.h"
+
+#include "io/huge_pages.h"
+#include "io/parallel_parts.h"
+
+#include <sys/mman.h>
+#include <algorithm>
+#include <new>
+#include <utility>
+#include <vector>
+
+namespace meshbridge::detail {
+
+namespace {
+
+//! One table entry: a key and its vertex + 1 (0: the slot is empty).
+struct Slot {
+  FloatKey key;
+  std::uint32_t id;
+  bool holds(const FloatKey& k) const {  // not std::array's ==, which calls memcmp
+    return key[0] == k[0] && key[1] == k[1] && key[2] == k[2];
+  }
+};
+static_assert(sizeof(Slot) == 16, "four slots per cache line");
+
+//! An open-addressing (linear probing) table from FloatKey to vertex, at most 5/8 full.
+class WeldTable {
+ public:
+  explicit WeldTable(std::size_t expected_vertices) {
+    std::size_t capacity = 1024;
+    while (capacity * 5 < expected_vertices * 8)
+      capacity *= 2;
+    allocate(capacity);
+  }
+  ~WeldTable() { release(); }
+  WeldTable(WeldTable&& other) noexcept
+      : slots_(std::exchange(other.slots_, nullptr)),
+        bytes_(other.bytes_),
+        mask_(other.mask_),
+        size_(other.size_) {}
+  WeldTable(const WeldTable&) = delete;
+  WeldTable& operator=(const WeldTable&) = delete;
+  WeldTable& operator=(WeldTable&&) = delete;
+
+  std::size_t size() const { return size_; }
+  void prefetch(std::uint32_t hash) const { __builtin_prefetch(&slots_[hash & mask_]); }
+
+  //! The vertex of `key`, or kNoIndex.
+  Index find(const FloatKey& key, std::uint32_t hash) const {
+    for (std::size_t s = hash & mask_;; s = (s + 1) & mask_) {
+      const Slot& slot = slots_[s];
+      if (slot.id == 0)
+        return kNoIndex;
+      if (slot.holds(key))
+        return slot.id - 1;
+    }
+  }
+  //! The vertex of `key`; absent, it is added as vertex size() and `added` is set.
+  Index find_or_add(const FloatKey& key, std::uint32_t hash, bool& added) {
+    for (std::size_t s = hash & mask_;; s = (s + 1) & mask_) {
+      Slot& slot = slots_[s];
+      if (slot.id == 0) {
+        const Index v = static_cast<Index>(size_);
+        slot = Slot{key, v + 1};
+        added = true;
+        if (++size_ * 8 > capacity() * 5)
+          grow();
+        return v;
+      }
+      if (slot.holds(key))
+        return slot.id - 1;
+    }
+  }
+  //! Gives the memory back; the table is unusable afterwards.
+  void release() {
+    if (slots_ != nullptr)
+      ::munmap(slots_, bytes_);
+    slots_ = nullptr;
+  }
+
+ private:
+  std::size_t capacity() const { return mask_ + 1; }
+
+  void allocate(std::size_t capacity) {
+    constexpr std::size_t kHuge = std::size_t(2) << 20;
+    bytes_ = (capacity * sizeof(Slot) + kHuge - 1) / kHuge * kHuge;
+    void* map = ::mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (map == MAP_FAILED)
+      throw std::bad_alloc();
+    ::madvise(map, bytes_, MADV_HUGEPAGE);  // a hint: refused, the table works all the same
+    slots_ = static_cast<Slot*>(map);
+    mask_ = capacity - 1;
+  }
+
+  void grow() {
+    Slot* old = slots_;
+    const std::size_t old_bytes = bytes_, old_capacity = capacity();
+    allocate(2 * old_capacity);
+    for (std::size_t i = 0; i < old_capacity; ++i) {
+      if (old[i].id == 0)
+        continue;
+      std::size_t s = float_key_hash(old[i].key) & mask_;
+      while (slots_[s].id != 0)
+        s = (s + 1) & mask_;
+      slots_[s] = old[i];
+    }
+    ::munmap(old, old_bytes);
+  }
+
+  Slot* slots_ = nullptr;
+  std::size_t bytes_ = 0;
+  std::size_t mask_ = 0;
+  std::size_t size_ = 0;
+};
+
+//! Corners [first, last) of the file welded on their own.
+struct Part {
+  std::size_t first = 0, last = 0;
+  WeldTable table;
+  std::vector<FloatKey> keys;  //!< the part's vertices in order of first appearance in it
+  std::vector<Index> vertex;   //!< part vertex -> soup vertex (parts after the first)
+
+  // A closed triangle mesh has about half as many vertices as triangles.
+  Part(std::size_t first_corner, std::size_t last_corner)
+      : first(first_corner), last(last_corner), table((last_corner - first_corner) / 6) {}
+};
+
+constexpr std::size_t kBlock = 48;  // corners looked up while the next block's slots arrive
+
+//! The positions met last, one per hash bucket (64 KiB, stays in the L2 cache). A file lists
+//! the triangles around a vertex close together (a tessellation, a scan, a grid), so most
+//! corners find their vertex here and never touch the big table.
+class RecentPositions {
+ public:
+  RecentPositions() : slots_(kSize) {}
+  //! The vertex of `key` if it is here, else kNoIndex.
+  Index find(const FloatKey& key, std::uint32_t hash) const {
+    const Slot& slot = slots_[hash >> (32 - kBits)];
+    return slot.id != 0 && slot.holds(key) ? slot.id - 1 : kNoIndex;
+  }
+  void remember(const FloatKey& key, std::uint32_t hash, Index v) {
+    slots_[hash >> (32 - kBits)] = Slot{key, v + 1};
+  }
+
+ private:
+  static constexpr int kBits = 12;
+  static constexpr std::size_t kSize = std::size_t(1) << kBits;
+  std::vector<Slot> slots_;
+};
+
+Point to_point(const FloatKey& key) {
+  float xyz[3];
+  std::memcpy(xyz, key.data(), 12);
+  return Point(xyz[0], xyz[1], xyz[2]);
+}
+
+//! Welds the part's corners into its table; `out[c]` becomes corner c's part vertex. The part's
+//! new positions go to `positions` if given (the first part: its numbers are the soup's), else
+//! to `part.keys`.
+void weld_part(const CornerKeys& corner_keys, Part& part, Index* out,
+               std::vector<Point>* positions) {
+  FloatKey keys[2][kBlock];
+  std::uint32_t hashes[2][kBlock];
+  RecentPositions recent;
+  const auto load = [&](std::size_t c, int b) {
+    const std::size_t n = std::min(kBlock, part.last - c);
+    corner_keys(c, n, keys[b]);
+    for (std::size_t i = 0; i < n; ++i) {
+      hashes[b][i] = float_key_hash(keys[b][i]);
+      if (recent.find(keys[b][i], hashes[b][i]) == kNoIndex)
+        part.table.prefetch(hashes[b][i]);
+    }
+    return n;
+  };
+  if (positions == nullptr)
+    reserve_huge(part.keys, (part.last - part.first) / 5 + 16);
+  std::size_t c = part.first;
+  std::size_t n = c < part.last ? load(c, 0) : 0;
+  for (int b = 0; n > 0; b ^= 1) {
+    const std::size_t next = c + n;
+    const std::size_t following = next < part.last ? load(next, b ^ 1) : 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const FloatKey& key = keys[b][i];
+      Index v = recent.find(key, hashes[b][i]);
+      if (v == kNoIndex) {
+        bool added = false;
+        v = part.table.find_or_add(key, hashes[b][i], added);
+        if (added && positions != nullptr)
+          positions->push_back(to_point(key));
+        else if (added)
+          part.keys.push_back(key);
+        recent.remember(key, hashes[b][i], v);
+      }
+      out[c + i] = v;
+    }
+    c = next;
+    n = following;
+  }
+}
+
+//! Numbers the vertices of parts[1..] in file order: a position an earlier part has keeps that
+//! part's number, a new one gets the next; appends the new positions to `positions`.
+void merge_parts(std::vector<Part>& parts, std::vector<Point>& positions) {
+  for (std::size_t k = 1; k < parts.size(); ++k) {
+    Part& part = parts[k];
+    part.vertex.resize(part.keys.size());
+    const std::size_t n = part.keys.size();
+    constexpr std::size_t kAhead = 16;
+    for (std::size_t i = 0; i < std::min(kAhead, n); ++i)
+      parts[0].table.prefetch(float_key_hash(part.keys[i]));
+    for (std::size_t l = 0; l < n; ++l) {
+      if (l + kAhead < n)
+        parts[0].table.prefetch(float_key_hash(part.keys[l + kAhead]));
+      const FloatKey& key = part.keys[l];
+      const std::uint32_t hash = float_key_hash(key);
+      Index v = kNoIndex;
+      for (std::size_t j = 0; j < k && v == kNoIndex; ++j) {
+        const Index found = parts[j].table.find(key, hash);
+        if (found != kNoIndex)
+          v = j == 0 ? found : parts[j].vertex[found];
+      }
+      if (v == kNoIndex) {
+        v = static_cast<Index>(positions.size());
+        positions.push_back(to_point(key));
+      }
+      part.vertex[l] = v;
+    }
+  }
+}
+
+}  // namespace
+
+void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, Soup& soup,
+                           unsigned threads) {
+  const std::size_t triangles = corners / 3;
+  // A part shorter than this costs more to start and merge than it saves.
+  constexpr std::size_t kLeastPart = 3 * 8192;
+  const unsigned n = static_cast<unsigned>(
+      std::clamp<std::size_t>(corners / kLeastPart, 1, std::max(threads, 1u)));
+  reserve_huge(soup.corner_vertices, corners);
+  soup.corner_vertices.resize(corners);
+  reserve_huge(soup.face_begin, triangles + 1);
+  soup.face_begin.resize(triangles + 1);
+  Index* out = soup.corner_vertices.data();
+
+  // A closed triangle mesh has about half as many vertices as triangles, a part border a few more.
+  reserve_huge(soup.positions, corners / 5 + 16);
+  std::vector<Part> parts;
+  parts.reserve(n);
+  for (unsigned k = 0; k < n; ++k)
+    parts.emplace_back(3 * part_begin(triangles, n, k), 3 * part_begin(triangles, n, k + 1));
+  run_parts(n, [&](unsigned k) {
+    weld_part(corner_keys, parts[k], out, k == 0 ? &soup.positions : nullptr);
+    // The face offsets of the part's triangles, while its corners are in cache.
+    for (std::size_t f = parts[k].first / 3; f < parts[k].last / 3; ++f)
+      soup.face_begin[f] = static_cast<Index>(3 * f);
+  });
+  soup.face_begin[triangles] = static_cast<Index>(3 * triangles);
+
+  merge_parts(parts, soup.positions);
+  for (Part& part : parts) {
+    part.table.release();
+    std::vector<FloatKey>().swap(part.keys);
+  }
+  run_parts(n, [&](unsigned k) {
+    if (k == 0)
+      return;
+    const std::vector<Index>& vertex = parts[k].vertex;
+    for (std::size_t c = parts[k].first; c < parts[k].last; ++c)
+      out[c] = vertex[out[c]];
+  });
+}
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,302 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Reading a file in parts on several threads gives the soup, the counts and the errors of the
+// one-thread read, bit for bit (MESHBRIDGE_THREADS picks the number of threads; files are made
+// large enough to be cut, and shuffled so that vertices are first met in every part).
+#include "meshbridge/errors.h"
+#include "meshbridge/io.h"
+#include "meshbridge/models/canonical_models.h"
+
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace meshbridge;
+
+namespace {
+
+//! Sets MESHBRIDGE_THREADS for its lifetime.
+class ThreadsSetting {
+ public:
+  explicit ThreadsSetting(unsigned n) {
+    setenv("MESHBRIDGE_THREADS", std::to_string(n).c_str(), 1);
+  }
+  ~ThreadsSetting() { unsetenv("MESHBRIDGE_THREADS"); }
+};
+
+struct Reading {
+  Soup soup;
+  ReadInfo info;
+  MeshAttributes attributes;
+  std::string error;  // the message, if the read threw
+};
+
+Reading read_with(unsigned threads, const std::string& path) {
+  const ThreadsSetting setting(threads);
+  Reading r;
+  try {
+    r.soup = read_soup(path, &r.info, &r.attributes);
+  } catch (const std::exception& e) {
+    r.error = e.what();
+  }
+  return r;
+}
+
+::testing::AssertionResult same_reading(const Reading& a, const Reading& b) {
+  if (a.error != b.error)
+    return ::testing::AssertionFailure()
+           << "errors differ: '" << a.error << "' / '" << b.error << "'";
+  if (a.soup.positions.size() != b.soup.positions.size() ||
+      std::memcmp(a.soup.positions.data(), b.soup.positions.data(),
+                  a.soup.positions.size() * sizeof(Point)) != 0)
+    return ::testing::AssertionFailure() << "positions differ";
+  if (a.soup.face_begin != b.soup.face_begin)
+    return ::testing::AssertionFailure() << "face offsets differ";
+  if (a.soup.corner_vertices != b.soup.corner_vertices) {
+    std::size_t c = 0;
+    while (a.soup.corner_vertices[c] == b.soup.corner_vertices[c])
+      ++c;
+    return ::testing::AssertionFailure()
+           << "corner " << c << " differs: " << a.soup.corner_vertices[c] << " / "
+           << b.soup.corner_vertices[c];
+  }
+  const ReadInfo &x = a.info, &y = b.info;
+  if (x.declared_vertices != y.declared_vertices || x.declared_faces != y.declared_faces ||
+      x.faces_kept != y.faces_kept || x.faces_split != y.faces_split ||
+      x.faces_set_aside != y.faces_set_aside ||
+      x.faces_without_corners != y.faces_without_corners || x.dangling_edges != y.dangling_edges ||
+      x.lone_points != y.lone_points)
+    return ::testing::AssertionFailure() << "counts differ";
+  if (!(a.attributes.vertex_colors == b.attributes.vertex_colors) ||
+      !(a.attributes.face_colors == b.attributes.face_colors) ||
+      a.attributes.double_precision != b.attributes.double_precision)
+    return ::testing::AssertionFailure() << "colours differ";
+  if (a.attributes.face_groups.size() != b.attributes.face_groups.size())
+    return ::testing::AssertionFailure() << "groups differ";
+  for (std::size_t g = 0; g < a.attributes.face_groups.size(); ++g) {
+    if (a.attributes.face_groups[g].name != b.attributes.face_groups[g].name ||
+        a.attributes.face_groups[g].first_face != b.attributes.face_groups[g].first_face)
+      return ::testing::AssertionFailure() << "group " << g << " differs";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+class ParallelReading : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    char name[] = "/tmp/meshbridge_parallel_XXXXXX";
+    ASSERT_NE(mkdtemp(name), nullptr);
+    dir_ = name;
+  }
+  void TearDown() override {
+    for (const std::string& f : files_)
+      std::remove(f.c_str());
+    rmdir(dir_.c_str());
+  }
+  std::string path(const std::string& name) {
+    files_.push_back(dir_ + "/" + name);
+    return files_.back();
+  }
+  // 20 x 20 x 20 checkerboard cubes (48,000 triangles, singular edges everywhere), faces
+  // shuffled, one corner at -0 and a facet with one point three times.
+  static IndexedMesh test_mesh() {
+    Soup soup = test_support::shuffled(models::checkerboard_cubes(20), 7);
+    soup.positions[soup.corner_vertices[5]][0] = -0.0;
+    const Index v = soup.corner_vertices[3 * 30000];
+    soup.add_polygon({v, v, v});
+    IndexedMesh mesh;
+    mesh.soup = std::move(soup);
+    return mesh;
+  }
+  // Every thread count gives the one-thread reading.
+  void expect_same_for_every_thread_count(const std::string& file) {
+    const Reading one = read_with(1, file);
+    for (unsigned threads : {2u, 3u, 4u, 7u})
+      EXPECT_TRUE(same_reading(one, read_with(threads, file))) << file << ", " << threads;
+  }
+
+  std::string dir_;
+  std::vector<std::string> files_;
+};
+
+TEST_F(ParallelReading, binary_and_ascii_stl_weld_the_same_in_parts) {
+  const IndexedMesh mesh = test_mesh();
+  const std::string binary = path("board.stl"), ascii = path("board_ascii.stl");
+  write_mesh(binary, mesh);
+  WriteOptions text;
+  text.binary = false;
+  write_mesh(ascii, mesh, nullptr, text);
+  const Reading one = read_with(1, binary);
+  ASSERT_EQ(one.error, "");
+  EXPECT_EQ(one.info.faces_set_aside, 1u);
+  EXPECT_LT(one.soup.num_vertices(), mesh.soup.num_vertices() + 1);
+  expect_same_for_every_thread_count(binary);
+  expect_same_for_every_thread_count(ascii);
+  EXPECT_TRUE(same_reading(one, read_with(2, ascii)));
+}
+
+TEST_F(ParallelReading, binary_stl_names_the_first_non_finite_corner_in_file_order) {
+  const IndexedMesh mesh = test_mesh();
+  const std::string file = path("nan.stl");
+  write_mesh(file, mesh);
+  std::fstream bytes(file, std::ios::in | std::ios::out | std::ios::binary);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  // Triangle 40000 (last part), then triangle 20000 (a middle part), corner 1, y.
+  for (const auto& [triangle, value] : {std::pair<long, float>{40000, inf}, {20000, nan}}) {
+    bytes.seekp(84 + 50 * triangle + 12 + 12 + 4);
+    bytes.write(reinterpret_cast<const char*>(&value), 4);
+  }
+  bytes.close();
+  const Reading one = read_with(1, file);
+  EXPECT_NE(one.error.find("triangle 20000, corner 1 has a non-finite"), std::string::npos)
+      << one.error;
+  expect_same_for_every_thread_count(file);
+}
+
+// A binary little-endian PLY of `soup` as `list uchar int vertex_indices` faces, with float
+// vertices that carry one extra property (so their records are not just x, y, z).
+void write_plain_ply(const std::string& file, const Soup& soup) {
+  std::ofstream out(file, std::ios::binary);
+  out << "ply\nformat binary_little_endian 1.0\nelement vertex " << soup.num_vertices()
+      << "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar flags\n"
+      << "element face " << soup.num_faces() << "\nproperty list uchar int vertex_indices\n"
+      << "end_header\n";
+  for (const Point& p : soup.positions) {
+    const float xyz[3] = {float(p[0]), float(p[1]), float(p[2])};
+    out.write(reinterpret_cast<const char*>(xyz), 12);
+    out.put(7);
+  }
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    out.put(static_cast<char>(soup.arity(f)));
+    for (Index v : soup.polygon(f)) {
+      const std::int32_t i = static_cast<std::int32_t>(v);
+      out.write(reinterpret_cast<const char*>(&i), 4);
+    }
+  }
+}
+
+TEST_F(ParallelReading, binary_ply_vertices_and_faces_read_the_same_in_parts) {
+  const Soup board = test_support::shuffled(models::checkerboard_cubes(20), 3);
+  const std::string plain = path("board.ply"), written = path("board_written.ply");
+  write_plain_ply(plain, board);
+  IndexedMesh mesh;
+  mesh.soup = board;
+  write_mesh(written, mesh);
+  const Reading one = read_with(1, plain);
+  ASSERT_EQ(one.error, "");
+  EXPECT_EQ(one.soup.corner_vertices, board.corner_vertices);
+  expect_same_for_every_thread_count(plain);
+  expect_same_for_every_thread_count(written);
+}
+
+TEST_F(ParallelReading, binary_ply_faces_that_are_not_all_alike_read_the_same_in_parts) {
+  const Soup board = models::checkerboard_cubes(20);
+  // A quad in a late part: the records after it are 4 bytes later than a triangle's would be.
+  Soup quad = board;
+  quad.corner_vertices.insert(quad.corner_vertices.begin() + 3 * 40000 + 3, 0);
+  for (std::size_t f = 40000 + 1; f < quad.face_begin.size(); ++f)
+    ++quad.face_begin[f];
+  // A negative index and an index beyond the vertices, in two different parts.
+  Soup bad = board;
+  bad.corner_vertices[3 * 20000 + 1] = static_cast<Index>(-5);
+  bad.corner_vertices[3 * 40000 + 2] = static_cast<Index>(bad.num_vertices() + 3);
+  Soup beyond = board;
+  beyond.corner_vertices[3 * 40000 + 2] = static_cast<Index>(beyond.num_vertices() + 3);
+  const std::string quad_file = path("quad.ply"), bad_file = path("bad.ply");
+  const std::string beyond_file = path("beyond.ply");
+  write_plain_ply(quad_file, quad);
+  write_plain_ply(bad_file, bad);
+  write_plain_ply(beyond_file, beyond);
+  EXPECT_EQ(read_with(1, quad_file).soup.arity(40000), 4u);
+  EXPECT_NE(read_with(1, bad_file).error.find("face 20000, corner 1"), std::string::npos);
+  EXPECT_NE(read_with(1, beyond_file).error.find("face 40000, corner 2"), std::string::npos)
+      << read_with(1, beyond_file).error;
+  expect_same_for_every_thread_count(quad_file);
+  expect_same_for_every_thread_count(bad_file);
+  expect_same_for_every_thread_count(beyond_file);
+}
+
+// An OBJ of `soup` with everything a part boundary could cut: vertices written just before the
+// first face that needs them, every third face with negative (relative) indices that reach back
+// across parts, colours on some vertices of the second half only, groups, l and p records,
+// comments, line continuations and CRLF line ends here and there.
+void write_busy_obj(const std::string& file, const Soup& soup) {
+  std::ofstream out(file, std::ios::binary);
+  std::size_t written = 0;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    for (Index v : soup.polygon(f)) {
+      for (; written <= v; ++written) {
+        const Point& p = soup.positions[written];
+        out << "v " << p[0] << ' ' << p[1] << ' ' << p[2];
+        if (written > soup.num_vertices() / 2 && written % 100 < 5)
+          out << " 0.25 0.5 1";
+        out << (written % 31 == 0 ? "\r\n" : "\n");
+      }
+    }
+    if (f % 5000 == 0)
+      out << (f % 10000 == 0 ? "g part" : "usemtl m") << f << "\n# a comment \\\ns 1\n";
+    if (f % 4001 == 0)
+      out << "l 1 2 -1\np -2\n";
+    out << "f";
+    int i = 0;
+    for (Index v : soup.polygon(f)) {
+      if (f % 3 == 0)
+        out << " -" << written - v;
+      else
+        out << ' ' << v + 1 << (f % 3 == 1 ? "//1" : "");
+      if (f % 97 == 0 && i++ == 1)
+        out << " \\\n";
+    }
+    out << "\n";
+  }
+}
+
+TEST_F(ParallelReading, obj_with_relative_indices_groups_and_colours_reads_the_same_in_parts) {
+  const Soup board = test_support::shuffled(models::checkerboard_cubes(30), 5);
+  const std::string file = path("busy.obj");
+  write_busy_obj(file, board);
+  const Reading one = read_with(1, file);
+  ASSERT_EQ(one.error, "");
+  EXPECT_EQ(one.soup.num_faces(), board.num_faces());
+  EXPECT_GT(one.info.dangling_edges, 0u);
+  EXPECT_EQ(one.attributes.vertex_colors.size(), one.soup.num_vertices());
+  EXPECT_FALSE(one.attributes.face_groups.empty());
+  expect_same_for_every_thread_count(file);
+}
+
+TEST_F(ParallelReading, obj_errors_in_later_parts_are_named_as_by_one_thread) {
+  const Soup board = models::checkerboard_cubes(30);
+  const std::string clean = path("clean.obj");
+  write_busy_obj(clean, board);
+  std::ifstream in(clean, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // A relative index before the first vertex near the end, then a bad number later still; and
+  // the other way round.
+  const std::size_t late = text.find("\nf ", text.size() * 3 / 4);
+  const std::size_t later = text.find("\nv ", text.size() * 7 / 8);
+  const std::string before_first = path("before_first.obj"), bad_number = path("bad_number.obj");
+  std::ofstream(before_first, std::ios::binary)
+      << text.substr(0, late) << "\nf 1 2 -99999999" << text.substr(late, later - late)
+      << "\nv 1 2 x" << text.substr(later);
+  std::ofstream(bad_number, std::ios::binary)
+      << text.substr(0, late) << "\nv 1 2 x" << text.substr(late, later - late)
+      << "\nf 1 2 -99999999" << text.substr(later);
+  const Reading one = read_with(1, before_first);
+  EXPECT_NE(one.error.find("before the first vertex"), std::string::npos) << one.error;
+  EXPECT_NE(read_with(1, bad_number).error.find("is not a number"), std::string::npos);
+  expect_same_for_every_thread_count(before_first);
+  expect_same_for_every_thread_count(bad_number);
+}
+
+}  // namespace
