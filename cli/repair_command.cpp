@@ -83,8 +83,7 @@ int run_repair(RepairArguments& arguments) {
     progress.stage(Stage::write, 0);
     apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
                    separate_summary);
-    const MeshAttributes carried = carry_attributes(attributes, result.mesh);
-    write_mesh(out, result.mesh, &carried);
+    write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
     if (is_stl_path(out))
       reread = detect_as_reread(out);
     if (!arguments.report.empty()) {

@@ -214,8 +214,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     }
     {
       const std::lock_guard<std::mutex> guard(openmesh_io_lock());
-      const MeshAttributes carried = carry_attributes(attributes, repaired.mesh);
-      write_mesh(job.output, repaired.mesh, &carried);
+      write_mesh(job.output, repaired.mesh, &attributes);  // maps them through the origins
     }
     result.report = std::move(repaired.report);
     if (lower(fs::path(job.output).extension().string()) == ".stl") {
