@@ -227,8 +227,8 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
       result.reread = detect_defects(again);
     }
     const RepairReport& r = result.report;
-    const bool clean =
-        !r.before.has_defects() && r.faces_flipped == 0 && info.faces_dropped_by_reader == 0;
+    const bool clean = !r.before.has_defects() && r.faces_flipped == 0 &&
+                       r.holes.faces_added == 0 && info.faces_dropped_by_reader == 0;
     return finish(clean ? FileStatus::clean : FileStatus::repaired, "", &r, &info);
   } catch (const std::bad_alloc&) {
     return finish(FileStatus::failed, job.input + ": out of memory", nullptr,
