@@ -5,6 +5,7 @@
 #include "meshbridge/io.h"
 #include "meshbridge/models/canonical_models.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/repair_to_openmesh.h"
 #include "meshbridge/report_json.h"
 
 #include "test_support.h"
@@ -269,5 +270,25 @@ TEST(FillHoles, added_faces_take_the_default_colour_and_the_last_group) {
       EXPECT_EQ(back.face_colors[5], Rgba{}) << extension;
       EXPECT_EQ(back.face_colors[6], Rgba{}) << extension;
     }
+  }
+}
+
+TEST(FillHoles, repair_to_openmesh_fills_too_and_never_takes_the_fast_path) {
+  const Soup soup = models::cube_with_hole();  // manifold: the fast path would take it as it is
+  RepairOptions options = filling(32);
+  options.detect_before_after = false;
+  const OpenMeshRepair r = repair_to_openmesh(soup, options);
+  EXPECT_FALSE(r.fast_path);
+  EXPECT_EQ(r.add_face_failures, 0u);
+  EXPECT_EQ(r.report.holes.faces_added, 2u);
+  ASSERT_EQ(r.mesh.n_faces(), 12u);
+  EXPECT_EQ(r.mesh.n_edges(), 18u);  // closed: every edge has two faces
+  for (auto e : r.mesh.edges())
+    EXPECT_FALSE(r.mesh.is_boundary(e));
+  OpenMesh::FPropHandleT<Index> face_origin;
+  ASSERT_TRUE(r.mesh.get_property_handle(face_origin, kFaceOriginProperty));
+  for (auto f : r.mesh.faces()) {
+    EXPECT_EQ(r.mesh.property(face_origin, f), f.idx() < 10 ? Index(f.idx()) : kNoIndex)
+        << "face " << f.idx();
   }
 }
