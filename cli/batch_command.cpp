@@ -40,6 +40,7 @@ struct BatchArguments {
   bool in_place = false;
   bool resume = false;
   std::string weld = "auto";  //!< as repair --weld
+  std::string fill_holes;     //!< as repair --fill-holes ("" or "0" = off)
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
 };
 
@@ -200,6 +201,7 @@ int run_batch(const BatchArguments& arguments) {
   FileJobOptions options;
   options.format = arguments.format;
   options.repair.close_gaps = parse_weld(arguments.weld);
+  options.repair.fill_holes.max_edges = parse_fill_holes(arguments.fill_holes);
   options.resume = arguments.resume;
   options.elements = arguments.elements;
   options.repair.pairing = arguments.pairing == "combinatorial" ? PairingPolicy::combinatorial
@@ -393,6 +395,7 @@ void add_batch_command(CLI::App& app, int& exit_code) {
   command->add_option("--weld", arguments->weld, "TOL|auto, as in repair")
       ->capture_default_str()
       ->check(distance_or_auto());
+  add_fill_holes_option(*command, arguments->fill_holes);
   command->add_option("--pairing", arguments->pairing, "as in repair")
       ->capture_default_str()
       ->transform(CLI::IsMember({"geometric", "combinatorial"}, CLI::ignore_case));

@@ -62,6 +62,12 @@ const std::vector<Entry> kEntries = {
     {"boundary edge",
      "An edge with exactly one face: the rim of a hole or an open sheet. 'boundary loops'\n"
      "counts the closed rims. A closed (watertight) surface has none."},
+    {"filled hole",
+     "With --fill-holes [MAX_EDGES], repair closes each boundary loop of at most MAX_EDGES\n"
+     "edges (32 without a number) with new triangles between the loop's own vertices, running\n"
+     "the same way as the faces around it. They come after every original face and have no\n"
+     "original (no colour of their own). 'left open': loops longer than MAX_EDGES, or ones\n"
+     "that no valid patch closes."},
     {"watertight",
      "No boundary edge and no singular edge or vertex: the surface closes up with an inside\n"
      "and an outside (what 3D printing needs). The repair report calls this 'closed'."},

@@ -2,8 +2,10 @@
 #include "printer_options.h"
 
 #include "commands.h"
+#include "validators.h"
 
 #include "meshbridge/detect_defects.h"
+#include "meshbridge/fill_holes.h"
 #include "meshbridge/io.h"
 #include "meshbridge/separate_copies.h"
 #include "meshbridge/stl_round_trip.h"
@@ -28,6 +30,39 @@ double parse_distance(const std::string& option, const std::string& text) {
 }
 
 }  // namespace
+
+void add_fill_holes_option(CLI::App& command, std::string& max_edges) {
+  // A flag whose bare form means kDefaultFillHolesMaxEdges ({32}), that also takes a value
+  // (expected(0, 1)); the help shows no default, since the default is off. CLI11 never takes a
+  // required positional (IN, OUT) for the value, so `--fill-holes in.obj out.obj` works too.
+  command
+      .add_flag("--fill-holes{" + std::to_string(kDefaultFillHolesMaxEdges) + "}", max_edges,
+                "after the repair, close every hole (boundary loop) of at most MAX_EDGES edges "
+                "with new triangles between its own vertices (CGAL's hole triangulation), "
+                "oriented with the faces around it and appended after them; without a number " +
+                    std::to_string(kDefaultFillHolesMaxEdges) +
+                    " (the holes of a broken export, not the rims of a model open on purpose); "
+                    "0 or absent = off")
+      ->type_name("[MAX_EDGES]")
+      ->expected(0, 1)
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            // A bare --fill-holes before IN or OUT with more options after them takes the next
+            // word as its value (CLI11 only keeps the last required positionals back).
+            std::string error = whole_number_in(0, 1000000)(text);
+            if (!error.empty()) {
+              error +=
+                  " (a bare --fill-holes takes the next word as MAX_EDGES: put it after IN "
+                  "and OUT, or write --fill-holes=N)";
+            }
+            return error;
+          },
+          "INT in [0 - 1000000]"));
+}
+
+std::size_t parse_fill_holes(const std::string& text) {
+  return text.empty() ? 0 : static_cast<std::size_t>(std::stoul(text));  // validated: 0..10^6
+}
 
 CloseGapsOptions parse_weld(const std::string& text) {
   CloseGapsOptions options;

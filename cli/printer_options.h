@@ -7,6 +7,9 @@
 #include "meshbridge/defect_report.h"
 #include "meshbridge/indexed_mesh.h"
 
+#include <CLI/CLI.hpp>
+
+#include <cstddef>
 #include <iosfwd>
 #include <string>
 
@@ -14,6 +17,14 @@ namespace meshbridge::cli {
 
 //! `--weld TOL`: "auto" (the default) or a distance >= 0 (0 = off). Throws UsageError otherwise.
 CloseGapsOptions parse_weld(const std::string& text);
+
+//! Adds `--fill-holes [MAX_EDGES]` to `command` (repair and batch), storing its text into
+//! `max_edges`: given without a number it is kDefaultFillHolesMaxEdges (32); absent it stays
+//! as it was (empty: off). Read it with parse_fill_holes().
+void add_fill_holes_option(CLI::App& command, std::string& max_edges);
+
+//! The `max_edges` of FillHolesOptions from add_fill_holes_option's text (empty or "0": off).
+std::size_t parse_fill_holes(const std::string& text);
 
 //! One line describing what gap closing did (or would do, for check).
 std::string gaps_line(const CloseGapsReport& report, bool would);

@@ -43,6 +43,7 @@ struct RepairArguments {
   RepairOptions options;
   std::string separate = "0";  //!< "auto" or a distance >= 0 (0 = off)
   std::string weld = "auto";   //!< "auto" or a distance >= 0 (0 = off)
+  std::string fill_holes;      //!< MAX_EDGES of --fill-holes ("" or "0" = off)
 };
 
 int run_repair(RepairArguments& arguments) {
@@ -54,6 +55,7 @@ int run_repair(RepairArguments& arguments) {
   options.orient = !arguments.no_orient;
   options.stitch = !arguments.no_stitch;
   options.close_gaps = parse_weld(arguments.weld);
+  options.fill_holes.max_edges = parse_fill_holes(arguments.fill_holes);
   if (!is_supported_mesh_file(out)) {
     throw UsageError(out + ": unknown output format (expected .obj, .off, .ply, .stl or .3mf)");
   }
@@ -83,8 +85,7 @@ int run_repair(RepairArguments& arguments) {
     progress.stage(Stage::write, 0);
     apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
                    separate_summary);
-    const MeshAttributes carried = carry_attributes(attributes, result.mesh);
-    write_mesh(out, result.mesh, &carried);
+    write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
     if (is_stl_path(out))
       reread = detect_as_reread(out);
     if (!arguments.report.empty()) {
@@ -182,6 +183,7 @@ void add_repair_command(CLI::App& app, int& exit_code) {
                    "what a reader gets is reported; 0 = off")
       ->capture_default_str()
       ->check(distance_or_auto());
+  add_fill_holes_option(*command, arguments->fill_holes);
   command->add_option("--before-after", arguments->before_after,
                       "also draw the input and the result side by side into this PNG (as "
                       "`snapshot` draws them, same framing)");

@@ -65,6 +65,30 @@ int input_edge(int la, int lb) {
   return -1;
 }
 
+//! A face hole filling added (no input face): corners from `t`, no flags, the default colour
+//! (opaque black, as the core's writers give it) and quality 0, wedge texture coordinates from
+//! an input face's corner at the same vertex, and its geometric normal unless the caller
+//! recomputes normals.
+void write_added_face(CMeshO& m, CFaceO& f, const TrianglePlan& t,
+                      const std::vector<std::pair<const CFaceO*, int>>& corner_at, bool wedge_tex,
+                      const WriteBackOptions& options) {
+  f.Flags() = 0;
+  for (int k = 0; k < 3; ++k) {
+    f.V(k) = &m.vert[t.vertex[k]];
+    if (t.fan_inner[k])
+      f.SetF(k);
+    const auto& [source, corner] = corner_at[t.vertex[k]];
+    if (wedge_tex && source != nullptr)
+      f.WT(k) = source->cWT(corner);
+  }
+  if (m.face.IsColorEnabled())
+    f.C() = vcg::Color4b(0, 0, 0, 255);
+  if (m.face.IsQualityEnabled())
+    f.Q() = 0;
+  if (!options.recompute_normals)
+    f.N() = vcg::TriangleNormal(f).Normalize();
+}
+
 }  // namespace
 
 CMeshSoup soup_from_cmesh(CMeshO& m) {
@@ -173,23 +197,34 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
   };
   for (std::size_t f = 0; f < out.num_faces(); ++f) {
     const Index origin = repaired.face_origin[f];
-    if (origin >= in.num_faces())
+    // kNoIndex: a face hole filling added (they come last, after every set-aside face).
+    const bool added = origin == kNoIndex;
+    if (origin >= in.num_faces() && !added)
       fail("output face " + std::to_string(f) + " has no input face");
     flush_aside_before(origin);
     const std::size_t arity = out.arity(f);
     if (arity < 3)
       fail("output face " + std::to_string(f) + " has fewer than 3 corners");
-    const Index in_begin = in.face_begin[origin];
-    const Index in_end = in.face_begin[origin + 1];
-    std::vector<signed char> local(arity);
+    std::vector<signed char> local(arity, -1);
     for (std::size_t k = 0; k < arity; ++k) {
       const Index c = repaired.corner_origin[out.face_begin[f] + k];
+      if (added) {
+        if (c != kNoIndex) {
+          fail("corner " + std::to_string(k) + " of added face " + std::to_string(f) +
+               " has an input corner");
+        }
+        continue;
+      }
+      const Index in_begin = in.face_begin[origin];
+      const Index in_end = in.face_begin[origin + 1];
       if (c < in_begin || c >= in_end) {
         fail("corner " + std::to_string(k) + " of output face " + std::to_string(f) +
              " does not come from input face " + std::to_string(origin));
       }
       local[k] = static_cast<signed char>(c - in_begin);  // 0..2: input faces are triangles
     }
+    if (added)
+      ++report.faces_added;
     const PolygonView poly = out.polygon(f);
     if (arity > 3) {
       ++report.polygons_fanned;
@@ -237,8 +272,14 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
   if (!plan.empty()) {
     auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, plan.size());
     const bool wedge_tex = m.face.IsWedgeTexCoordEnabled();
+    // A corner of an input face at each vertex: added faces take its wedge texture coordinate.
+    std::vector<std::pair<const CFaceO*, int>> corner_at(vertex_source.size(), {nullptr, 0});
     for (const TrianglePlan& t : plan) {
       CFaceO& f = *fi++;
+      if (t.origin == kNoIndex) {
+        write_added_face(m, f, t, corner_at, wedge_tex, options);
+        continue;
+      }
       const CFaceO& src = old.face[t.origin];
       f.ImportData(src);
       f.Flags() &= ~kEdgeFlags;
@@ -252,6 +293,8 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
           flipped = true;
       }
       for (int k = 0; k < 3; ++k) {
+        if (corner_at[t.vertex[k]].first == nullptr)
+          corner_at[t.vertex[k]] = {&f, k};
         if (wedge_tex && t.local[k] >= 0)
           f.WT(k) = src.cWT(t.local[k]);
         const int e = input_edge(t.local[k], t.local[(k + 1) % 3]);

@@ -54,6 +54,7 @@ struct WriteBackReport {
   std::size_t polygons_fanned = 0;       //!< output polygons with more than 3 corners
   std::size_t triangles_from_fans = 0;   //!< extra triangles those fans made
   std::size_t faces_flipped = 0;         //!< triangles whose corner order was reversed
+  std::size_t faces_added = 0;           //!< faces with no input face (hole filling), last
 };
 
 //! Replaces the content of `m` with `repaired` (the result of repairing `input.soup`).
@@ -62,8 +63,12 @@ struct WriteBackReport {
 //! coordinate, flags, optional components), so split copies carry their original's data. Every
 //! output face takes all attributes of its original face (colour, quality, normal, flags) and
 //! its wedge texture coordinates follow `corner_origin`; faux-edge flags follow their edge. Face
-//! order is `repaired`'s (which preserves the input's). Border flags are cleared; adjacency,
-//! bounding box, normals and selection counts are left to the caller.
+//! order is `repaired`'s (which preserves the input's). A face with `face_origin` kNoIndex (added
+//! by hole filling; its corners have `corner_origin` kNoIndex) comes after every face of the
+//! input and gets no flags, the default colour (opaque black, as in files) and quality 0, wedge
+//! texture coordinates of an input face's corner at the same vertex, and (if normals are not
+//! recomputed) its geometric normal. Border flags are cleared; adjacency, bounding box, normals
+//! and selection counts are left to the caller.
 //! \pre `input` is soup_from_cmesh(m) and `m` has not changed since.
 //! \throw std::invalid_argument if `repaired` does not fit `input` (then `m` is unchanged)
 WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedMesh& repaired,

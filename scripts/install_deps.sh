@@ -9,6 +9,7 @@ packages=(build-essential cmake pkg-config libopenmesh-dev libgtest-dev googlete
   python3-open3d python3-venv python3-pip python3-setuptools python3-wheel
   prusa-slicer admesh jq  # the slicer judge (tests/printer)
   lib3mf-dev  # 3MF read and write (core)
+  libcgal-dev libgmp-dev libmpfr-dev  # hole filling (core: CGAL PMP triangulate_hole, header-only)
   "$@")
 
 missing=()

@@ -214,8 +214,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     }
     {
       const std::lock_guard<std::mutex> guard(openmesh_io_lock());
-      const MeshAttributes carried = carry_attributes(attributes, repaired.mesh);
-      write_mesh(job.output, repaired.mesh, &carried);
+      write_mesh(job.output, repaired.mesh, &attributes);  // maps them through the origins
     }
     result.report = std::move(repaired.report);
     if (lower(fs::path(job.output).extension().string()) == ".stl") {
@@ -228,8 +227,8 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
       result.reread = detect_defects(again);
     }
     const RepairReport& r = result.report;
-    const bool clean =
-        !r.before.has_defects() && r.faces_flipped == 0 && info.faces_dropped_by_reader == 0;
+    const bool clean = !r.before.has_defects() && r.faces_flipped == 0 &&
+                       r.holes.faces_added == 0 && info.faces_dropped_by_reader == 0;
     return finish(clean ? FileStatus::clean : FileStatus::repaired, "", &r, &info);
   } catch (const std::bad_alloc&) {
     return finish(FileStatus::failed, job.input + ": out of memory", nullptr,

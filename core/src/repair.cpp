@@ -168,6 +168,9 @@ RepairResult repair(const Soup& input, const RepairOptions& options) {
   if (options.remove_isolated_vertices) {
     report.isolated_vertices_removed = remove_unused_vertices(mesh);
   }
+  // On the repaired mesh (manifold, consistently oriented): new triangles go after every kept
+  // face, so face_origin stays non-decreasing (kNoIndex is the largest index).
+  report.holes = fill_holes(mesh, options.fill_holes);
 
   report.faces_out = mesh.soup.num_faces();
   // With remove_degenerate_faces, degenerate polygons left with < 3 corners count as removed.
@@ -194,7 +197,7 @@ RepairResult repair(const Soup& input, const RepairOptions& options) {
   // detection is then the input's. Otherwise detect again, independently of the pipeline.
   const bool unchanged = !gaps_closed && !filtering && simple.is_identity() &&
                          report.vertices_split == 0 && report.faces_flipped == 0 &&
-                         report.isolated_vertices_removed == 0;
+                         report.isolated_vertices_removed == 0 && report.holes.faces_added == 0;
   if (detecting)
     report.after = unchanged ? report.before : detect_defects(mesh.soup);
   tell(options, Stage::detect, 1);
@@ -228,6 +231,13 @@ std::string to_text(const RepairReport& r) {
       << " cut for orientation, " << r.sides_cut_to_stay_manifold << " cut to stay manifold ("
       << r.sides_paired_with_copies << " paired with copies instead), " << r.sides_stitched
       << " stitched\n";
+  const FillHolesReport& h = r.holes;
+  if (h.max_edges > 0) {
+    out << "holes (up to " << h.max_edges << " edges): " << h.holes_filled << " filled with "
+        << h.faces_added << " new triangles, " << h.holes_left << " left open\n";
+  } else {
+    out << "holes: not filled (off)\n";
+  }
   out << "components: " << r.components_before << " -> " << r.components_after
       << "; boundary edges: " << r.boundary_edges_before << " -> " << r.boundary_edges_after
       << "; non-orientable components: " << r.nonorientable_components << "\n";

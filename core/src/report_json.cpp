@@ -81,6 +81,13 @@ Json gaps_json(const CloseGapsReport& g) {
               {"sides_split", g.sides_split}};
 }
 
+Json holes_json(const FillHolesReport& h) {
+  return Json{{"max_edges", h.max_edges},
+              {"holes_filled", h.holes_filled},
+              {"faces_added", h.faces_added},
+              {"holes_left", h.holes_left}};
+}
+
 void add_repair(Json& out, const RepairReport& r, bool elements, const DefectReport* reread) {
   out["faces_in"] = r.faces_in;
   out["faces_out"] = r.faces_out;
@@ -101,6 +108,8 @@ void add_repair(Json& out, const RepairReport& r, bool elements, const DefectRep
   out["sides_paired_with_copies"] = r.sides_paired_with_copies;
   out["sides_stitched"] = r.sides_stitched;
   out["gaps"] = gaps_json(r.gaps);
+  if (r.holes.max_edges > 0)  // only when asked for: reports of a default repair stay as they were
+    out["holes"] = holes_json(r.holes);
   Json before = Json::object(), after = Json::object();
   add_defects(before, r.before, elements);
   add_defects(after, r.after, elements);

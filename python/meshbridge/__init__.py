@@ -64,6 +64,7 @@ REPAIR_OPTIONS: Dict[str, Any] = {
     "remove_degenerate_faces": False,
     "remove_isolated_vertices": False,
     "detect_before_after": True,
+    "fill_holes": 0,
 }
 
 Faces = Union[np.ndarray, Sequence[Sequence[int]]]
@@ -80,9 +81,10 @@ class RepairResult(tuple):
     faces : ndarray (m', k) int32, or list of lists of int for mixed arities
     report : dict, the repair report (schema of ``meshbridge repair --report``)
     vertex_origin : ndarray, (n',) int32, input vertex of each output vertex
-    face_origin : ndarray, (m',) int32, input face of each output face (order preserved)
+    face_origin : ndarray, (m',) int32, input face of each output face (order preserved;
+        -1 for a triangle added by ``fill_holes``, which come last)
     corner_origin : ndarray, (c',) int32, input corner (position in the input's flattened
-        faces) of each output corner, in output order
+        faces) of each output corner, in output order (-1 for corners of added triangles)
     """
 
     vertex_origin: np.ndarray
@@ -182,7 +184,10 @@ def repair(
     Options (defaults as ``meshbridge repair``; see ``REPAIR_OPTIONS``): ``pairing``
     ('geometric' or 'combinatorial'), ``orient``, ``cut_nonorientable``, ``stitch``,
     ``remove_duplicate_faces``, ``remove_degenerate_faces``, ``remove_isolated_vertices``,
-    ``detect_before_after`` (False skips the before/after detection: faster, fewer counts).
+    ``detect_before_after`` (False skips the before/after detection: faster, fewer counts),
+    ``fill_holes`` (after the repair, close holes of at most this many edges with new
+    triangles; ``True`` = 32, ``0``/``False`` = off, the default; as ``--fill-holes``).
+    Faces added by hole filling come last, with ``face_origin`` and ``corner_origin`` -1.
 
     Returns a :class:`RepairResult`: ``(vertices (n', 3) float64, faces (m', k) int32 or
     polygons, report dict)`` with ``vertex_origin (n',)``, ``face_origin (m',)`` and
@@ -210,6 +215,15 @@ def _repair_options(options: Dict[str, Any]) -> "_core.RepairOptions":
                 value = getattr(_core.PairingPolicy, value.lower())
             elif not isinstance(value, _core.PairingPolicy):
                 raise ValueError(f"pairing must be 'geometric' or 'combinatorial', got {value!r}")
+        elif name == "fill_holes":
+            if isinstance(value, (bool, np.bool_)):
+                value = _core.DEFAULT_FILL_HOLES_MAX_EDGES if value else 0
+            elif not isinstance(value, (int, np.integer)) or value < 0:
+                raise ValueError(
+                    f"fill_holes must be True, False or a number of edges >= 0, got {value!r}"
+                )
+            setattr(native, name, int(value))
+            continue
         elif not isinstance(value, (bool, np.bool_)):
             raise TypeError(f"repair() option {name} must be True or False, got {value!r}")
         setattr(native, name, value if name == "pairing" else bool(value))

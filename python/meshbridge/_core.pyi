@@ -29,7 +29,11 @@ class RepairOptions:
     remove_degenerate_faces: bool
     remove_isolated_vertices: bool
     detect_before_after: bool
+    fill_holes: int  # FillHolesOptions::max_edges; 0 = off
     def __init__(self) -> None: ...
+
+DEFAULT_FILL_HOLES_MAX_EDGES: int
+HAS_HOLE_FILLING: bool
 
 class Soup:
     """Positions and polygons exactly as given or read; arrays are read-only views."""

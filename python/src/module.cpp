@@ -100,7 +100,13 @@ PYBIND11_MODULE(_core, m) {
       .def_readwrite("remove_duplicate_faces", &RepairOptions::remove_duplicate_faces)
       .def_readwrite("remove_degenerate_faces", &RepairOptions::remove_degenerate_faces)
       .def_readwrite("remove_isolated_vertices", &RepairOptions::remove_isolated_vertices)
-      .def_readwrite("detect_before_after", &RepairOptions::detect_before_after);
+      .def_readwrite("detect_before_after", &RepairOptions::detect_before_after)
+      // FillHolesOptions::max_edges, flattened: 0 = off.
+      .def_property(
+          "fill_holes", [](const RepairOptions& o) { return o.fill_holes.max_edges; },
+          [](RepairOptions& o, std::size_t max_edges) { o.fill_holes.max_edges = max_edges; });
+  m.attr("DEFAULT_FILL_HOLES_MAX_EDGES") = kDefaultFillHolesMaxEdges;
+  m.attr("HAS_HOLE_FILLING") = has_hole_filling();
 
   py::class_<PySoup, std::shared_ptr<PySoup>>(m, "Soup")
       .def(py::init([](py::handle vertices, py::handle faces) {

@@ -590,6 +590,55 @@ snapshot_views)
   expect_in "$work/err" "name it .png"
   [ ! -e "$work/q.obj" ] || fail "repair wrote its output despite a bad --before-after"
   ;;
+fill_holes)
+  # --fill-holes [MAX_EDGES]: off by default; bare = 32; the summary line and the JSON `holes`.
+  expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/plain.obj" --report "$work/plain.json"
+  expect_in "$work/out" "holes: not filled (off)"
+  grep -q '"holes"' "$work/plain.json" && fail "holes in the report of a repair without --fill-holes"
+  [ "$(json_field "$work/plain.json" faces_out)" = 10 ] || fail "faces_out without filling"
+  expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/f.obj" --report "$work/f.json" --fill-holes
+  expect_in "$work/out" "holes (up to 32 edges): 1 filled with 2 new triangles, 0 left open"
+  expect_in "$work/out" "boundary edges: 4 -> 0"
+  expect_in "$work/out" "watertight yes"
+  [ "$(json_field "$work/f.json" holes.max_edges)" = 32 ] || fail "holes.max_edges"
+  [ "$(json_field "$work/f.json" holes.holes_filled)" = 1 ] || fail "holes.holes_filled"
+  [ "$(json_field "$work/f.json" holes.faces_added)" = 2 ] || fail "holes.faces_added"
+  [ "$(json_field "$work/f.json" holes.holes_left)" = 0 ] || fail "holes.holes_left"
+  [ "$(json_field "$work/f.json" faces_out)" = 12 ] || fail "faces_out with the hole filled"
+  [ "$(json_field "$work/f.json" after.watertight)" = true ] || fail "after.watertight"
+  expect_exit 0 "$mb" check "$work/f.obj"
+  expect_in "$work/out" "watertight yes"
+  # A number after the flag; a loop longer than it stays open and is counted.
+  expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/l.obj" --fill-holes 3 --report "$work/l.json"
+  expect_in "$work/out" "holes (up to 3 edges): 0 filled with 0 new triangles, 1 left open"
+  [ "$(json_field "$work/l.json" holes.holes_left)" = 1 ] || fail "holes.holes_left with 3"
+  [ "$(json_field "$work/l.json" faces_out)" = 10 ] || fail "faces_out with the hole left open"
+  expect_exit 2 "$mb" repair "$models/cube_with_hole.obj" "$work/x.obj" --fill-holes x
+  expect_in "$work/err" "--fill-holes: expects a whole number from 0 to 1000000, got 'x'"
+  # Bare before IN and OUT: fine when they end the line, a clear error when options follow.
+  expect_exit 0 "$mb" repair --fill-holes "$models/cube_with_hole.obj" "$work/b.obj"
+  expect_in "$work/out" "1 filled with 2 new triangles"
+  expect_exit 0 "$mb" repair --fill-holes=4 "$models/cube_with_hole.obj" "$work/b.obj" --report "$work/b.json"
+  [ "$(json_field "$work/b.json" holes.max_edges)" = 4 ] || fail "--fill-holes=4"
+  expect_exit 2 "$mb" repair --fill-holes "$models/cube_with_hole.obj" "$work/b.obj" --report "$work/b.json"
+  expect_in "$work/err" "put it after IN and OUT, or write --fill-holes=N"
+  # Face colours: the input's stay with their faces, the new triangle takes the default colour.
+  printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 200 0 0 255\n3 0 1 3 0 200 0 255\n3 0 3 2 0 0 200 255\n' >"$work/tet.off"
+  expect_exit 0 "$mb" repair "$work/tet.off" "$work/tet_out.off" --fill-holes
+  expect_in "$work/out" "1 filled with 1 new triangles"
+  [ "$(sed -n 7,10p "$work/tet_out.off" | awk '{print $5, $6, $7, $8}' | tr '\n' ' ')" = \
+    "200 0 0 255 0 200 0 255 0 0 200 255 0 0 0 255 " ] || fail "face colours: $(cat "$work/tet_out.off")"
+  # batch: the filled file counts as repaired and is closed; a closed one stays clean.
+  mkdir -p "$work/in"
+  cp "$models/cube_with_hole.obj" "$models/icosphere.obj" "$work/in/"
+  expect_exit 0 "$mb" batch "$work/in" "$work/res" --fill-holes
+  expect_in "$work/out" "| cube_with_hole.obj | repaired | 10 | 0 | 0 | 12 | 1 | yes |"
+  expect_in "$work/out" "| icosphere.obj | clean | 80 | 0 | 0 | 80 | 1 | yes |"
+  expect_exit 0 "$mb" batch "$work/in" "$work/resj" --json --quiet --fill-holes 8
+  [ "$(json_line_field "$work/out" 0 holes.faces_added)" = 2 ] || fail "batch holes.faces_added"
+  [ "$(json_line_field "$work/out" 0 holes.max_edges)" = 8 ] || fail "batch holes.max_edges"
+  [ "$(json_line_field "$work/out" 1 holes.holes_filled)" = 0 ] || fail "batch: icosphere has no hole"
+  ;;
 *)
   echo "unknown case $case_name" >&2
   exit 2

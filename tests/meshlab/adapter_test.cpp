@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The MeshLab adapter's API-free parts on CMeshO, without MeshLab running: the defect layer's
-// tubes, its label, the log lines MeshLab's rich-text log receives, the parameter catalogue and
-// what the filters log about gap closing and STL.
+// tubes, its label, the log lines MeshLab's rich-text log receives, the parameter catalogue,
+// what the filters log about gap closing and STL, and the write-back of faces that hole filling
+// added.
+#include "cmesh_adapter.h"
 #include "defect_tubes.h"
 #include "filter_actions.h"
 #include "filter_catalog.h"
 
 #include "meshbridge/detect_defects.h"
+#include "meshbridge/repair.h"
 
 #include <vcg/complex/allocate.h>
 
@@ -62,6 +65,30 @@ const mbm::ParameterSpec* find_parameter(mbm::FilterId id, const std::string& na
 
 bool has_line(const std::string& log, const std::string& line) {
   return ("\n" + log + "\n").find("\n" + line + "\n") != std::string::npos;
+}
+
+//! The unit cube without its top (z = 1) as 10 outward triangles, each face coloured (10 * f, 0,
+//! 0), with per-face colour and wedge texture coordinates (u = vertex number / 10) enabled.
+void open_box(CMeshO& m) {
+  using Alloc = vcg::tri::Allocator<CMeshO>;
+  auto vi = Alloc::AddVertices(m, 8);
+  for (int c = 0; c < 8; ++c)
+    (vi++)->P() = CMeshO::CoordType(float(c & 1), float((c >> 1) & 1), float((c >> 2) & 1));
+  const int quads[5][4] = {{0, 2, 3, 1}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  m.face.EnableColor();
+  m.face.EnableWedgeTexCoord();
+  auto fi = Alloc::AddFaces(m, 10);
+  for (const auto& q : quads) {
+    const int triangles[2][3] = {{q[0], q[1], q[2]}, {q[0], q[2], q[3]}};
+    for (const auto& t : triangles) {
+      for (int k = 0; k < 3; ++k) {
+        fi->V(k) = &m.vert[std::size_t(t[k])];
+        fi->WT(k).U() = float(t[k]) / 10;
+      }
+      fi->C() = vcg::Color4b(static_cast<unsigned char>(10 * (fi - m.face.begin())), 0, 0, 255);
+      ++fi;
+    }
+  }
 }
 
 std::size_t faces_of_colour(const CMeshO& m, vcg::Color4b c) {
@@ -240,4 +267,41 @@ TEST(FilterActions, detect_reports_what_gap_closing_would_do_and_moves_nothing) 
   options.close_gaps.tolerance = 0;
   const mbm::DetectOutcome off = mbm::detect_singular_defects(mesh, "plate", options, host);
   EXPECT_TRUE(has_line(off.log, "gaps: not closed (weld tolerance 0)")) << off.log;
+}
+
+TEST(WriteRepaired, faces_added_by_hole_filling_come_last_with_default_attributes) {
+  CMeshO mesh;
+  open_box(mesh);
+  const mbm::CMeshSoup soup = mbm::soup_from_cmesh(mesh);
+  meshbridge::RepairOptions options;
+  options.fill_holes.max_edges = 32;
+  const meshbridge::RepairResult result = meshbridge::repair(soup.soup, options);
+  ASSERT_EQ(result.report.holes.faces_added, 2u);
+  mbm::WriteBackOptions write_options;
+  write_options.recompute_normals = false;
+  const mbm::WriteBackReport written =
+      mbm::write_repaired(mesh, soup, result.mesh, {}, write_options);
+  EXPECT_EQ(written.faces_added, 2u);
+  EXPECT_EQ(written.faces_out, 12u);
+  ASSERT_EQ(mesh.fn, 12);
+  for (int f = 0; f < 10; ++f)
+    EXPECT_EQ(mesh.face[std::size_t(f)].cC(),
+              vcg::Color4b(static_cast<unsigned char>(10 * f), 0, 0, 255));
+  for (std::size_t f = 10; f < 12; ++f) {
+    const CFaceO& added = mesh.face[f];
+    EXPECT_EQ(added.cC(), vcg::Color4b(0, 0, 0, 255)) << f;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(added.cV(k)->cP().Z(), 1.0f) << f;  // they close the top
+      EXPECT_EQ(added.cWT(k).U(), float(added.cV(k) - &mesh.vert[0]) / 10) << f;
+    }
+    EXPECT_NEAR(added.cN().Z(), 1.0f, 1e-6f) << "outward normal of face " << f;
+  }
+  // Corner origins that claim an input corner on an added face are refused, mesh untouched.
+  meshbridge::IndexedMesh wrong = result.mesh;
+  wrong.corner_origin.back() = 0;
+  CMeshO other;
+  open_box(other);
+  const mbm::CMeshSoup other_soup = mbm::soup_from_cmesh(other);
+  EXPECT_THROW(mbm::write_repaired(other, other_soup, wrong, {}), std::invalid_argument);
+  EXPECT_EQ(other.fn, 10);
 }

@@ -299,3 +299,24 @@ def test_soup_and_result_pickle_exactly():
     assert again.report == result.report
     np.testing.assert_array_equal(again.vertex_origin, result.vertex_origin)
     np.testing.assert_array_equal(again.vertices, result.vertices)
+
+
+def test_fill_holes_closes_the_cube_and_marks_the_new_triangles():
+    vertices = np.array([[c & 1, (c >> 1) & 1, (c >> 2) & 1] for c in range(8)], dtype=float)
+    quads = np.array([[0, 2, 3, 1], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]])
+    assert meshbridge.REPAIR_OPTIONS["fill_holes"] == 0
+    plain = meshbridge.repair(vertices, quads)
+    assert "holes" not in plain.report and plain.report["after"]["boundary_edges"] == 4
+    for value in (True, 4, np.int64(32)):
+        result = meshbridge.repair(vertices, quads, fill_holes=value)
+        holes = result.report["holes"]
+        assert holes == {"max_edges": 32 if value is True else int(value), "holes_filled": 1,
+                         "faces_added": 2, "holes_left": 0}
+        assert result.report["after"]["watertight"] and result.report["faces_out"] == 7
+        # Mixed arities: a list of polygons; the quads first, as given, then two triangles.
+        assert [len(f) for f in result.faces] == [4, 4, 4, 4, 4, 3, 3]
+        np.testing.assert_array_equal(result.face_origin, [0, 1, 2, 3, 4, -1, -1])
+        np.testing.assert_array_equal(result.corner_origin[20:], [-1] * 6)
+    assert meshbridge.repair(vertices, quads, fill_holes=3).report["holes"]["holes_left"] == 1
+    with pytest.raises(ValueError, match="fill_holes must be"):
+        meshbridge.repair(vertices, quads, fill_holes=-1)

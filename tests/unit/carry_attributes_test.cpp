@@ -40,7 +40,7 @@ TEST(CarryAttributes, split_vertices_and_faces_keep_their_colours_through_a_ply_
   const int fd = mkstemps(name, 4);
   ASSERT_GE(fd, 0);
   close(fd);
-  write_mesh(name, result.mesh, &carried);
+  write_mesh(name, result.mesh, &attributes);  // the input's: write_mesh maps them itself
   MeshAttributes back;
   const Soup reread = read_soup(name, nullptr, &back);
   std::remove(name);
@@ -66,4 +66,32 @@ TEST(CarryAttributes, groups_move_with_their_faces_and_emptied_ones_give_way) {
   EXPECT_EQ(out.face_groups[1].first_face, 3u);
   EXPECT_EQ(out.face_groups[2].name, "g d");  // as in the input: after the last face
   EXPECT_EQ(out.face_groups[2].first_face, 5u);
+}
+
+// write_mesh maps the input's colours through the origins once: a set-aside face shifts every
+// origin by one, and handing it carry_attributes' output (already mapped) broke this.
+TEST(CarryAttributes, write_mesh_maps_input_colours_once_past_a_set_aside_face) {
+  Soup soup;
+  for (const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)})
+    soup.add_vertex(p);
+  soup.add_polygon({0, 0, 1});  // fewer than 3 distinct corners: set aside
+  soup.add_polygon({0, 1, 2});
+  soup.add_polygon({0, 3, 1});
+  MeshAttributes attributes;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f)
+    attributes.face_colors.push_back(colour_of(f));
+  const RepairResult result = repair(soup);
+  ASSERT_EQ(result.mesh.face_origin, (std::vector<Index>{1, 2}));
+
+  char name[] = "/tmp/meshbridge_carry_XXXXXX.off";
+  const int fd = mkstemps(name, 4);
+  ASSERT_GE(fd, 0);
+  close(fd);
+  write_mesh(name, result.mesh, &attributes);
+  MeshAttributes back;
+  read_soup(name, nullptr, &back);
+  std::remove(name);
+  ASSERT_EQ(back.face_colors.size(), 2u);
+  EXPECT_EQ(back.face_colors[0], colour_of(1));
+  EXPECT_EQ(back.face_colors[1], colour_of(2));
 }

@@ -56,12 +56,13 @@ inline ::testing::AssertionResult openmesh_accepts(const IndexedMesh& mesh) {
   return ::testing::AssertionSuccess();
 }
 
-//! The invariants of a repair with cleanup off.
+//! The invariants of a repair with cleanup off. Faces added by hole filling come last, with
+//! origin kNoIndex for the face and each corner.
 inline void expect_repair_invariants(const Soup& input, const RepairResult& result) {
   const IndexedMesh& mesh = result.mesh;
   const RepairReport& report = result.report;
   EXPECT_EQ(report.faces_out + report.faces_set_aside,
-            input.num_faces() + report.faces_added_by_split);
+            input.num_faces() + report.faces_added_by_split + report.holes.faces_added);
   EXPECT_EQ(mesh.soup.num_faces(), report.faces_out);
   EXPECT_EQ(mesh.face_origin.size(), mesh.soup.num_faces());
   EXPECT_EQ(mesh.corner_origin.size(), mesh.soup.num_corners());
@@ -78,7 +79,13 @@ inline void expect_repair_invariants(const Soup& input, const RepairResult& resu
   // Gap closing welds corners into a survivor within its tolerance and inserts T-junction
   // corners (which take the corner starting their side as origin); otherwise corners map exactly.
   std::size_t moved_corners = 0;
-  for (std::size_t c = 0; c < mesh.soup.num_corners(); ++c) {
+  const std::size_t first_added = mesh.soup.num_faces() - report.holes.faces_added;
+  for (std::size_t f = first_added; f < mesh.soup.num_faces(); ++f) {
+    EXPECT_EQ(mesh.face_origin[f], kNoIndex) << "added face " << f;
+    for (Index c = mesh.soup.face_begin[f]; c < mesh.soup.face_begin[f + 1]; ++c)
+      EXPECT_EQ(mesh.corner_origin[c], kNoIndex) << "corner " << c << " of added face " << f;
+  }
+  for (std::size_t c = 0; c < mesh.soup.face_begin[first_added]; ++c) {
     ASSERT_LT(mesh.corner_origin[c], input.num_corners());
     const Index from = input.corner_vertices[mesh.corner_origin[c]];
     const Index to = mesh.vertex_origin[mesh.soup.corner_vertices[c]];

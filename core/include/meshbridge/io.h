@@ -98,8 +98,12 @@ Soup read_soup(const std::string& path, ReadInfo* info = nullptr,
 //! colours through `mesh.face_origin` (the copies of a split vertex and the pieces of a split
 //! face carry their original's colour), OBJ groups moved to the first output face of each (a
 //! group left with no face gives way to the next one that starts there), `double_precision`
-//! kept. An origin outside the input (a face added by repair) gets the default colour.
-//! \pre `mesh.face_origin` is non-decreasing (repair keeps the face order)
+//! kept. An origin outside the input (kNoIndex: a face added by hole filling) gets the default
+//! colour. The result belongs to `mesh` itself, element by element: it is for callers that keep
+//! attributes per output element. write_mesh() takes the input's attributes and maps them itself;
+//! handing it these instead would map them twice.
+//! \pre `mesh.face_origin` is non-decreasing (repair keeps the face order; added faces, marked
+//! kNoIndex, come last)
 MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& mesh);
 
 //! True if `path` has an extension read_soup/write_mesh handle (.obj .off .ply .stl, any case).
@@ -129,7 +133,8 @@ struct WriteOptions {
 //! Writes `mesh` by the format of the extension. Text formats write each coordinate as the
 //! shortest decimal that reads back to the same double. STL gets triangles (polygons fanned).
 //! Colours of `attributes` (of the soup `mesh` came from) are carried through `vertex_origin`
-//! and `face_origin` where the format holds them (OFF faces, PLY vertices and faces).
+//! and `face_origin` where the format holds them (OFF faces, PLY vertices and faces); a face
+//! with origin kNoIndex (added by hole filling) gets the default colour.
 //! The file is written under a unique temporary name beside `path` and renamed on success, so
 //! on any error the previous file at `path` is untouched and no temporary file stays.
 //! \throw WriteError naming the path and the reason

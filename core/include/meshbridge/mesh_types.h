@@ -21,7 +21,8 @@ using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
 
 //! Names of the provenance properties that to_openmesh() adds.
 inline constexpr const char* kVertexOriginProperty = "v:origin";  //!< input vertex (Index)
-inline constexpr const char* kFaceOriginProperty = "f:origin";    //!< input face (Index)
+//! Input face (Index); kNoIndex for a face hole filling added.
+inline constexpr const char* kFaceOriginProperty = "f:origin";
 
 //! An OpenMesh mesh with every vertex and polygon of `mesh`, in order, with the provenance
 //! properties `v:origin` and `f:origin` when `mesh` has origins.

@@ -5,6 +5,7 @@
 
 #include "meshbridge/close_gaps.h"
 #include "meshbridge/defect_report.h"
+#include "meshbridge/fill_holes.h"
 #include "meshbridge/indexed_mesh.h"
 #include "meshbridge/pairing.h"
 #include "meshbridge/progress.h"
@@ -34,6 +35,11 @@ struct RepairOptions {
   //! come from them (components, boundary edges before/after) are 0; everything repair itself
   //! did is still counted. The cleanup options need detection and turn it on.
   bool detect_before_after = true;
+  //! Hole filling after the manifold repair, on the repaired (manifold, oriented) mesh, so it
+  //! cannot create a singular edge: boundary loops of at most `fill_holes.max_edges` edges are
+  //! closed with new triangles (see fill_holes()). Default off (`max_edges` 0);
+  //! kDefaultFillHolesMaxEdges (32) is the suggested value.
+  FillHolesOptions fill_holes;
   //! Told when the stages group, pair and detect start and end (default empty: not called).
   ProgressCallback progress;
 };
@@ -41,7 +47,7 @@ struct RepairOptions {
 //! What repair changed. Every count is exact.
 struct RepairReport {
   std::size_t faces_in = 0;              //!< polygons in the input soup
-  std::size_t faces_out = 0;             //!< polygons in the output
+  std::size_t faces_out = 0;             //!< polygons in the output (with holes.faces_added)
   std::size_t faces_set_aside = 0;       //!< degenerate, < 3 distinct corners (listed in `before`)
   std::size_t faces_split = 0;           //!< pinched polygons split into simple ones
   std::size_t faces_added_by_split = 0;  //!< extra polygons those splits made
@@ -72,9 +78,10 @@ struct RepairReport {
   std::size_t boundary_edges_before = 0;
   std::size_t boundary_edges_after = 0;
   std::size_t nonorientable_components = 0;
-  CloseGapsReport gaps;  //!< what gap closing did before pairing
-  DefectReport before;   //!< detection on the input (before gap closing)
-  DefectReport after;    //!< detection on the result: no singular edge or vertex, ever
+  CloseGapsReport gaps;   //!< what gap closing did before pairing
+  FillHolesReport holes;  //!< what hole filling did after pairing (all 0 when off)
+  DefectReport before;    //!< detection on the input (before gap closing)
+  DefectReport after;     //!< detection on the result (holes filled): no singular edge or vertex
 };
 
 struct RepairResult {
@@ -82,8 +89,11 @@ struct RepairResult {
   RepairReport report;
 };
 
-//! Repairs `soup` into a combinatorial 2-manifold that keeps every face.
+//! Repairs `soup` into a combinatorial 2-manifold that keeps every face; with
+//! `options.fill_holes`, then closes its small holes with new triangles, appended after the
+//! repaired faces and marked kNoIndex in `face_origin` and `corner_origin`.
 //! \pre `soup` passes validate_soup() \throw InvalidSoupError naming the offending element
+//! \throw std::runtime_error if hole filling is asked for in a build without CGAL
 RepairResult repair(const Soup& soup, const RepairOptions& options = {});
 
 //! Text form of the counts (JSON: repair_report_json() in report_json.h).

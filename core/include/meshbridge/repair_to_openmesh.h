@@ -19,11 +19,11 @@ struct OpenMeshRepair {
 
 //! The same result as `to_openmesh(repair(soup, options).mesh)`, faster on clean input.
 //!
-//! When the options ask for no detection reports and no cleanup, the soup is first handed to
-//! OpenMesh as it is: if every add_face succeeds, every vertex is manifold and every closed
-//! component is oriented outward, that mesh *is* the repair (nothing to split, flip or cut), and
-//! the work is OpenMesh's own build plus one linear check. Otherwise (the first refused face
-//! ends the attempt) the full repair runs. `fast_path` tells which way was taken.
+//! When the options ask for no detection reports, no cleanup and no hole filling, the soup is
+//! first handed to OpenMesh as it is: if every add_face succeeds, every vertex is manifold and
+//! every closed component is oriented outward, that mesh *is* the repair (nothing to split, flip
+//! or cut), and the work is OpenMesh's own build plus one linear check. Otherwise (the first
+//! refused face ends the attempt) the full repair runs. `fast_path` tells which way was taken.
 //! \pre `soup` passes validate_soup() \throw InvalidSoupError naming the offending element
 OpenMeshRepair repair_to_openmesh(const Soup& soup, const RepairOptions& options = {});
 

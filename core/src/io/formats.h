@@ -28,7 +28,8 @@
 //   - Write the whole file through `out` (or to `out.temporary_path()`); the dispatcher has
 //     already chosen the format and wraps the call in write_atomically (no renaming here).
 //   - `attributes` (may be null) belong to the input soup: map them through
-//     `mesh.vertex_origin` / `mesh.face_origin` (each may be empty: then identity).
+//     `mesh.vertex_origin` / `mesh.face_origin` (each may be empty: then identity) with
+//     colour_of(), which gives an added face (origin kNoIndex) the default colour.
 //   - Double precision where the format allows (text: std::to_chars shortest round trip).
 //   - Throw WriteError naming `out.target()` if the mesh cannot be written (e.g. an index that
 //     does not fit the format).
@@ -72,9 +73,15 @@ void account_faces(const Soup& soup, ReadInfo& info);
 inline Index input_vertex(const IndexedMesh& mesh, std::size_t v) {
   return mesh.vertex_origin.empty() ? static_cast<Index>(v) : mesh.vertex_origin[v];
 }
-//! The face of the input soup behind output face `f` (identity when the map is empty).
+//! The face of the input soup behind output face `f` (identity when the map is empty); kNoIndex
+//! for a face repair added (a filled hole).
 inline Index input_face(const IndexedMesh& mesh, std::size_t f) {
   return mesh.face_origin.empty() ? static_cast<Index>(f) : mesh.face_origin[f];
+}
+//! The colour of the input element `origin` (from input_vertex / input_face), or the default
+//! colour (opaque black) for an element with no input (kNoIndex: a face added by hole filling).
+inline Rgba colour_of(const std::vector<Rgba>& colours, Index origin) {
+  return origin < colours.size() ? colours[origin] : Rgba{};
 }
 
 }  // namespace meshbridge::detail

@@ -51,8 +51,10 @@ void check_attributes(const std::string& path, const IndexedMesh& mesh,
     if (colours == 0)
       return;
     std::size_t needed = origin.empty() ? count : 0;
-    for (Index o : origin)
-      needed = std::max<std::size_t>(needed, std::size_t(o) + 1);
+    for (Index o : origin) {
+      if (o != kNoIndex)  // a face repair added (hole filling) has no input colour
+        needed = std::max<std::size_t>(needed, std::size_t(o) + 1);
+    }
     if (colours < needed) {
       throw WriteError(path + ": the attributes hold " + std::to_string(colours) + " " + what +
                        " colour(s) but the mesh needs " + std::to_string(needed) +

@@ -19,7 +19,7 @@ void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
     const Point& p = soup.positions[v];
     text.text("v ").number(p[0]).ch(' ').number(p[1]).ch(' ').number(p[2]);
     if (colors) {
-      const Rgba c = attributes->vertex_colors[input_vertex(mesh, v)];
+      const Rgba c = colour_of(attributes->vertex_colors, input_vertex(mesh, v));
       text.ch(' ').number(c.r / 255.0).ch(' ').number(c.g / 255.0).ch(' ').number(c.b / 255.0);
     }
     text.ch('\n');

@@ -29,7 +29,7 @@ void write_off(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
     const Point& p = soup.positions[v];
     text.number(p[0]).ch(' ').number(p[1]).ch(' ').number(p[2]);
     if (vertex_colors)
-      put_color(text, attributes->vertex_colors[input_vertex(mesh, v)]);
+      put_color(text, colour_of(attributes->vertex_colors, input_vertex(mesh, v)));
     text.ch('\n');
   }
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
@@ -37,7 +37,7 @@ void write_off(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
     for (Index v : soup.polygon(f))
       text.ch(' ').number(static_cast<std::uint64_t>(v));
     if (face_colors)
-      put_color(text, attributes->face_colors[input_face(mesh, f)]);
+      put_color(text, colour_of(attributes->face_colors, input_face(mesh, f)));
     text.ch('\n');
   }
   text.flush();
