@@ -336,6 +336,10 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
       count("polygons_triangulated", w.polygons_fanned),
   };
   add_gap_counts(out.counts, r.gaps);
+  out.counts.push_back(count("holes.max_edges", r.holes.max_edges));
+  out.counts.push_back(count("holes.holes_filled", r.holes.holes_filled));
+  out.counts.push_back(count("holes.faces_added", r.holes.faces_added));
+  out.counts.push_back(count("holes.holes_left", r.holes.holes_left));
   if (out.reread) {
     const DefectReport& again = *out.reread;
     out.counts.push_back(count("reread.singular_edges", again.singular_edges.size()));

@@ -169,7 +169,9 @@ struct RepairOutcome {
   //! before.singular_vertices, after.singular_edges, after.singular_vertices, after.watertight
   //! (flag); the write-back's degenerate_faces_kept and polygons_triangulated; gap closing's
   //! gaps.tolerance (real; 0 = off), gaps.vertices_welded, gaps.largest_weld_distance (real),
-  //! gaps.welds_refused, gaps.t_junctions_closed, gaps.sides_split; with `reread` only,
+  //! gaps.welds_refused, gaps.t_junctions_closed, gaps.sides_split; hole filling's
+  //! holes.max_edges (0 = off), holes.holes_filled, holes.faces_added, holes.holes_left; with
+  //! `reread` only,
   //! reread.singular_edges, reread.singular_vertices, reread.boundary_edges, reread.watertight
   //! (flag). Keys as in docs/report-schema.md, nested ones flattened with dots.
   std::vector<FilterCount> counts;

@@ -181,6 +181,17 @@ std::vector<ParameterSpec> make_repair_parameters() {
       "tolerance) splits that side, so both sides of a seam with an extra vertex on one side "
       "stitch (counted in the log). Off: only welding.");
   specs.insert(specs.end(), gaps.begin(), gaps.end());
+  specs.push_back(integer_parameter(
+      parameter::fill_holes, int(defaults.core.fill_holes.max_edges),
+      "Fill holes of at most N edges (0 = off)",
+      "After the repair, close every boundary loop of at most this many edges with new "
+      "triangles between its own vertices (CGAL's hole triangulation, Liepa 2003), oriented "
+      "like the faces around it; longer loops stay open. The log counts holes filled, faces "
+      "added and holes left; the new faces come after every original face, in the default "
+      "colour. 0 (the default): off, no face is added. " +
+          std::to_string(kDefaultFillHolesMaxEdges) +
+          " (the CLI's bare --fill-holes) closes what a broken export leaves and keeps the rims "
+          "of a model that is open on purpose."));
   return specs;
 }
 
@@ -212,6 +223,10 @@ CloseGapsOptions close_gaps_options(double weld_tolerance, bool close_t_junction
   options.tolerance = weld_tolerance < 0 ? kAutoWeldTolerance : weld_tolerance;
   options.close_t_junctions = close_t_junctions;
   return options;
+}
+
+std::size_t fill_holes_max_edges(int fill_holes) {
+  return fill_holes > 0 ? std::size_t(fill_holes) : 0;
 }
 
 const std::vector<FilterId>& all_filters() {

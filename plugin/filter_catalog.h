@@ -52,6 +52,8 @@ inline constexpr const char* recompute_normals = "recompute_normals";
 //! `--weld TOL|auto|0`.
 inline constexpr const char* weld_tolerance = "weld_tolerance";
 inline constexpr const char* close_t_junctions = "close_t_junctions";
+//! Hole filling (Repair only): FillHolesOptions::max_edges, the CLI's `--fill-holes N`; 0 = off.
+inline constexpr const char* fill_holes = "fill_holes";
 }  // namespace parameter
 
 //! One parameter of a filter, of one of four kinds; only the default of its kind is read.
@@ -93,6 +95,9 @@ const std::vector<ParameterSpec>& parameters(FilterId id);
 //! (kAutoWeldTolerance), 0 off, anything else the distance itself.
 CloseGapsOptions close_gaps_options(double weld_tolerance, bool close_t_junctions);
 
+//! The FillHolesOptions::max_edges of a `fill_holes` value: 0 or negative means off.
+std::size_t fill_holes_max_edges(int fill_holes);
+
 //! Reads the gap closing parameters of either filter (getAbsPerc, getBool). A list without them
 //! takes the core's defaults (automatic tolerance, T-junctions closed); MeshLab itself always
 //! passes them (meshlabserver 2020.09 refuses a script that lacks one).
@@ -125,7 +130,7 @@ DetectOptions detect_options(const ParameterList& params) {
 }
 
 //! Reads the repair filter's options from a MeshLab RichParameterList (getBool, getEnum,
-//! getAbsPerc).
+//! getAbsPerc, getInt). A script that predates `fill_holes` gets the default (off).
 template <class ParameterList>
 RepairFilterOptions repair_options(const ParameterList& params) {
   RepairFilterOptions options;
@@ -139,6 +144,8 @@ RepairFilterOptions repair_options(const ParameterList& params) {
   options.core.remove_isolated_vertices = params.getBool(parameter::remove_isolated_vertices);
   options.recompute_normals = params.getBool(parameter::recompute_normals);
   options.core.close_gaps = close_gaps_options(params);
+  if (params.hasParameter(parameter::fill_holes))
+    options.core.fill_holes.max_edges = fill_holes_max_edges(params.getInt(parameter::fill_holes));
   return options;
 }
 

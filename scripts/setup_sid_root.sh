@@ -29,8 +29,10 @@ set -euo pipefail
 root=${1:-${MESHBRIDGE_SID_ROOT:-/var/cache/meshbridge/sid-root}}
 mirror=${MESHBRIDGE_SID_MIRROR:-http://deb.debian.org/debian}
 # Bump when the recipe below changes: a root made by another recipe is completed (steps 2-5).
-recipe=5
+recipe=6
 packages=(nlohmann-json3-dev meshlab g++ cmake make qtbase5-dev libqt5opengl5-dev libeigen3-dev libglew-dev
+          # Hole filling (CGAL PMP, header-only; the plugin's fill_holes parameter).
+          libcgal-dev
           libopenmesh11.0 xz-utils
           # MeshLab's own plugins that Debian's meshlab package does not pull in: without them
           # the GUI opens an "Error while loading plugins" dialog over its main window.

@@ -187,6 +187,17 @@ TEST(FilterCatalog, negative_weld_tolerance_is_automatic_and_zero_is_off) {
   EXPECT_EQ(n.int_default, 0);
 }
 
+TEST(FilterCatalog, repair_takes_fill_holes_off_by_default_and_detect_does_not) {
+  const mbm::ParameterSpec* fill = find_parameter(mbm::FilterId::repair, "fill_holes");
+  ASSERT_NE(fill, nullptr);
+  EXPECT_EQ(fill->kind, mbm::ParameterSpec::Kind::integer);
+  EXPECT_EQ(fill->int_default, 0);
+  EXPECT_EQ(find_parameter(mbm::FilterId::detect, "fill_holes"), nullptr);
+  EXPECT_EQ(mbm::fill_holes_max_edges(0), 0u);
+  EXPECT_EQ(mbm::fill_holes_max_edges(-3), 0u);
+  EXPECT_EQ(mbm::fill_holes_max_edges(32), 32u);
+}
+
 TEST(FilterActions, is_stl_file_name_by_extension_in_any_case) {
   EXPECT_TRUE(mbm::is_stl_file_name("/tmp/part.stl"));
   EXPECT_TRUE(mbm::is_stl_file_name("PART.STL"));

@@ -89,3 +89,22 @@ cube_detect_line="gaps (weld tolerance 5.24521e-05, automatic): Repair would wel
 cube_repair_line="gaps (tolerance 5.24521e-05): 6 vertices welded (largest move 1.32145e-05, 0 refused: same polygon), 0 T-junctions closed (0 sides split)"
 box_detect_line="gaps (weld tolerance 9.53674e-07, automatic): Repair would weld 0 vertices (largest move 0, 0 refused: same polygon) and close 2 T-junction cracks (2 sides split)"
 box_repair_line="gaps (tolerance 9.53674e-07): 0 vertices welded (largest move 0, 0 refused: same polygon), 2 T-junctions closed (2 sides split)"
+
+# write_open_boxes FILE: two open boxes for hole filling, 20 vertices, 13 quads, outward. The
+# unit cube at the origin lacks its top (a hole of 4 edges); the box [3,5]x[0,1]x[0,1], whose
+# bottom, front and back are two quads each, lacks its top too (a hole of 6 edges).
+write_open_boxes() {
+  awk 'BEGIN {
+    print "OFF"; print "20 13 0"
+    for (i = 0; i < 8; ++i) printf "%d %d %d\n", i % 2, int(i / 2) % 2, int(i / 4)
+    for (z = 0; z < 2; ++z) for (y = 0; y < 2; ++y) for (x = 0; x < 3; ++x)
+      printf "%d %d %d\n", 3 + x, y, z
+    print "4 0 4 6 2"; print "4 0 1 5 4"; print "4 0 2 3 1"; print "4 1 3 7 5"; print "4 2 6 7 3"
+    for (i = 8; i < 10; ++i) {
+      printf "4 %d %d %d %d\n", i, i + 3, i + 4, i + 1   # bottom
+      printf "4 %d %d %d %d\n", i, i + 1, i + 7, i + 6   # front
+      printf "4 %d %d %d %d\n", i + 3, i + 9, i + 10, i + 4   # back
+    }
+    print "4 8 14 17 11"; print "4 10 13 19 16"
+  }' >"$1"
+}

@@ -17,6 +17,8 @@
 #                             weld_tolerance / close_t_junctions set in .mlx scripts, on the
 #                             crack models of tests/unit/close_gaps_test.cpp (crack_models.sh):
 #                             exact counts in Detect's and Repair's logs, the repaired file
+#   holes open_boxes          fill_holes set in .mlx scripts on two open boxes (crack_models.sh):
+#                             holes of 4 and 6 edges, exact counts in Repair's log and file
 #   stl-truth MODEL           Repair's "STL re-read" line on MODEL written as STL, checked
 #                             against the STL file meshlabserver then writes
 #   compare-builtin MODEL     ours vs MeshLab's "Repair non Manifold Edges" (both methods):
@@ -316,6 +318,25 @@ case "$mode" in
         ;;
       *) echo "unknown gap model $name"; exit 2 ;;
     esac
+    ;;
+
+  holes)
+    # MeshLab loads the 13 quads as 26 triangles; the holes' rims keep 4 and 6 edges.
+    write_open_boxes boxes.off
+    repair_case off boxes.off
+    expect_in_log "Repair (fill_holes=0, the default)" off.log "holes: not filled (off)"
+    check_expectations off.txt faces=26 boundary_edges=10 boundary_loops=2
+    repair_case four boxes.off fill_holes=4
+    expect_in_log "Repair (fill_holes=4)" four.log \
+      "holes (up to 4 edges): 1 filled with 2 new triangles, 1 left open"
+    expect_in_log "Repair (fill_holes=4)" four.log "boundary edges: 10 -&gt; 6"  # HTML-escaped
+    check_expectations four.txt vertices=20 faces=28 boundary_edges=6 boundary_loops=1 watertight=0
+    repair_case six boxes.off fill_holes=6
+    expect_in_log "Repair (fill_holes=6)" six.log \
+      "holes (up to 6 edges): 2 filled with 6 new triangles, 0 left open"
+    check_expectations six.txt vertices=20 faces=32 boundary_edges=0 singular_edges=0 \
+      inconsistent_edges=0 watertight=1
+    grep -q "Mesh is two-manifold" six.log && pass "MeshLab: Mesh is two-manifold" || fail "MeshLab: not two-manifold"
     ;;
 
   stl-truth)

@@ -20,6 +20,8 @@
 #                             weld_tolerance / close_t_junctions by python name on the crack
 #                             models of tests/unit/close_gaps_test.cpp (crack_models.sh): exact
 #                             counts in the logs and result maps, the repaired layer
+#   holes open_boxes          fill_holes by python name on two open boxes (crack_models.sh): holes
+#                             of 4 and 6 edges, exact counts in the log, result map and file
 #   stl-truth MODEL           Repair's "STL re-read" line and reread.* results on MODEL written
 #                             as STL, checked against the STL file MeshLab then writes
 #   compare-builtin MODEL     ours vs MeshLab's "Repair non Manifold Edges" (both methods)
@@ -122,7 +124,7 @@ case "$mode" in
     expect_eq "$detect_filter parameters" "$(params "$detect_filter" | tr '\n' '|')" \
       "  select_faces : bool = True|  color_faces : bool = False|  defect_layer : str = 'Tubes'|  weld_tolerance : PercentageValue = -57.735%|  close_t_junctions : bool = True|"
     expect_eq "$repair_filter parameters" "$(params "$repair_filter" | tr '\n' '|')" \
-      "  pairing : str = 'Geometric'|  orient : bool = True|  stitch : bool = True|  cut_nonorientable : bool = False|  remove_duplicate_faces : bool = False|  remove_degenerate_faces : bool = False|  remove_isolated_vertices : bool = False|  recompute_normals : bool = True|  weld_tolerance : PercentageValue = -57.735%|  close_t_junctions : bool = True|"
+      "  pairing : str = 'Geometric'|  orient : bool = True|  stitch : bool = True|  cut_nonorientable : bool = False|  remove_duplicate_faces : bool = False|  remove_degenerate_faces : bool = False|  remove_isolated_vertices : bool = False|  recompute_normals : bool = True|  weld_tolerance : PercentageValue = -57.735%|  close_t_junctions : bool = True|  fill_holes : int = 0|"
     ;;
 
   detect)
@@ -401,6 +403,26 @@ case "$mode" in
         ;;
       *) echo "unknown gap model $name"; exit 2 ;;
     esac
+    ;;
+
+  holes)
+    # MeshLab loads the 13 quads as 26 triangles; the holes' rims keep 4 and 6 edges.
+    write_open_boxes boxes.off
+    repair_case off boxes.off
+    expect_in_log "Repair (fill_holes=0, the default)" off.log "log: holes: not filled (off)"
+    expect_results "$repair_filter" off.log holes.max_edges=0 holes.holes_filled=0 \
+      holes.faces_added=0 after.boundary_edges=10
+    repair_case four boxes.off fill_holes=4
+    expect_in_log "Repair (fill_holes=4)" four.log \
+      "log: holes (up to 4 edges): 1 filled with 2 new triangles, 1 left open"
+    expect_results "$repair_filter" four.log holes.max_edges=4 holes.holes_filled=1 \
+      holes.faces_added=2 holes.holes_left=1 faces_in=26 faces_out=28 after.boundary_edges=6
+    check_expectations four.txt vertices=20 faces=28 boundary_edges=6 boundary_loops=1 watertight=0
+    repair_case six boxes.off fill_holes=6
+    expect_results "$repair_filter" six.log holes.max_edges=6 holes.holes_filled=2 \
+      holes.faces_added=6 holes.holes_left=0 faces_out=32 after.boundary_edges=0 after.watertight=True
+    check_expectations six.txt vertices=20 faces=32 boundary_edges=0 singular_edges=0 \
+      inconsistent_edges=0 watertight=1
     ;;
 
   stl-truth)
