@@ -46,9 +46,13 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
 void read_off(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 void read_ply(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
-//! 3MF through lib3mf 1.8 (the v1 C API; it reads `file.path()` itself): every mesh object of the
-//! model in resource order, one after another (vertex indices offset); build items and their
-//! transforms are not applied; no colours.
+//! 3MF through lib3mf 1.8 (the v1 C API; it reads `file.path()` itself): what a slicer prints.
+//! Every build item in file order, its object's triangles placed by the item's transform
+//! (components objects: each component's object under the component's transform, then the
+//! item's, to any depth up to 64); an object placed twice is read twice. Then every mesh object
+//! that no build item reaches, as stored, so that nothing in the file is dropped. Vertex indices
+//! are offset per placement; positions are float32 from the file, transformed in double. No
+//! colours.
 void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 
 void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,

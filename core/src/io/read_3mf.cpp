@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// 3MF reading through lib3mf 1.8's v1 C API: what a slicer prints, the build items with their
+// transforms (3MF Core Specification 1.2, section 3.4: build; 4.1: components).
 #include "io/formats.h"
 
 #include "meshbridge/errors.h"
 
 #include <Model/COM/NMR_DLLInterfaces.h>
 
+#include <array>
+#include <set>
 #include <vector>
 
 namespace meshbridge::detail {
@@ -25,57 +29,196 @@ void check(HRESULT result, const std::string& path, const char* what) {
     throw ReadError(path + ": lib3mf cannot " + what + " (error " + std::to_string(result) + ")");
 }
 
+// An affine map p -> A p + t as lib3mf stores it: row j of `m` gives output coordinate j,
+// m[j][3] is the translation (the file's "m00 m01 m02 m10 ... m32" is m[0][0] m[1][0] m[2][0]
+// m[0][1] ..., row vectors times the matrix as the specification writes them).
+using Affine = std::array<std::array<double, 4>, 3>;
+
+constexpr Affine kIdentity = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
+
+Affine affine(const NMR::MODELTRANSFORM& t) {
+  Affine a{};
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 4; ++i)
+      a[j][i] = t.m_fFields[j][i];
+  return a;
+}
+
+// outer after inner: p -> outer(inner(p)).
+Affine compose(const Affine& outer, const Affine& inner) {
+  Affine c{};
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 4; ++i) {
+      double s = i == 3 ? outer[j][3] : 0.0;
+      for (int k = 0; k < 3; ++k)
+        s += outer[j][k] * inner[k][i];
+      c[j][i] = s;
+    }
+  }
+  return c;
+}
+
+Point apply(const Affine& a, const float p[3]) {
+  Point q;
+  for (int j = 0; j < 3; ++j)
+    q[j] = a[j][0] * p[0] + a[j][1] * p[1] + a[j][2] * p[2] + a[j][3];
+  return q;
+}
+
+// Reads models, their objects and their build into one soup.
+class Reader {
+ public:
+  Reader(const std::string& path, Soup& soup) : path_(path), soup_(soup) {}
+
+  // Appends the triangles of mesh object `object`, its vertices mapped by `placement`.
+  void add_mesh(NMR::PLib3MFModelObjectResource* object, const Affine& placement,
+                bool transformed) {
+    DWORD vertex_count = 0, triangle_count = 0;
+    check(NMR::lib3mf_meshobject_getvertexcount(object, &vertex_count), path_, "count vertices");
+    check(NMR::lib3mf_meshobject_gettrianglecount(object, &triangle_count), path_,
+          "count triangles");
+    vertices_.resize(vertex_count);
+    triangles_.resize(triangle_count);
+    if (vertex_count > 0)
+      check(NMR::lib3mf_meshobject_getvertices(object, vertices_.data(), vertex_count, nullptr),
+            path_, "get vertices");
+    if (triangle_count > 0)
+      check(NMR::lib3mf_meshobject_gettriangleindices(object, triangles_.data(), triangle_count,
+                                                      nullptr),
+            path_, "get triangles");
+    const Index offset = static_cast<Index>(soup_.num_vertices());
+    for (const auto& v : vertices_) {
+      const float* p = v.m_fPosition;
+      soup_.add_vertex(transformed ? apply(placement, p) : Point(p[0], p[1], p[2]));
+    }
+    for (const auto& t : triangles_) {
+      for (DWORD i : t.m_nIndices) {
+        if (i >= vertex_count) {
+          throw ReadError(path_ + ": 3MF triangle " + std::to_string(soup_.num_faces()) +
+                          " uses vertex " + std::to_string(i) + " of an object with " +
+                          std::to_string(vertex_count) + " vertices");
+        }
+      }
+      soup_.add_polygon(
+          {offset + t.m_nIndices[0], offset + t.m_nIndices[1], offset + t.m_nIndices[2]});
+    }
+  }
+
+  // Appends `object` (a mesh, or components placing other objects) under `placement`.
+  void add_object(NMR::PLib3MFModelObjectResource* object, const Affine& placement,
+                  bool transformed, int depth) {
+    DWORD id = 0;
+    check(NMR::lib3mf_resource_getresourceid(object, &id), path_, "get an object's id");
+    if (depth > kMaxDepth) {
+      throw ReadError(path_ + ": 3MF object " + std::to_string(id) +
+                      " nests components more than " + std::to_string(kMaxDepth) + " levels deep");
+    }
+    BOOL is_mesh = false, is_components = false;
+    check(NMR::lib3mf_object_ismeshobject(object, &is_mesh), path_, "tell an object's kind");
+    check(NMR::lib3mf_object_iscomponentsobject(object, &is_components), path_,
+          "tell an object's kind");
+    if (is_mesh) {
+      placed_.insert(id);
+      add_mesh(object, placement, transformed);
+      return;
+    }
+    if (!is_components)
+      return;
+    DWORD count = 0;
+    check(NMR::lib3mf_componentsobject_getcomponentcount(object, &count), path_,
+          "count an object's components");
+    for (DWORD c = 0; c < count; ++c) {
+      Released component, target;
+      check(NMR::lib3mf_componentsobject_getcomponent(object, c, &component.instance), path_,
+            "get a component");
+      check(NMR::lib3mf_component_getobjectresource(component.instance, &target.instance), path_,
+            "get a component's object");
+      BOOL has_transform = false;
+      check(NMR::lib3mf_component_hastransform(component.instance, &has_transform), path_,
+            "get a component's transform");
+      Affine inner = kIdentity;
+      if (has_transform) {
+        NMR::MODELTRANSFORM t;
+        check(NMR::lib3mf_component_gettransform(component.instance, &t), path_,
+              "get a component's transform");
+        inner = affine(t);
+      }
+      add_object(target.instance, compose(placement, inner), transformed || has_transform,
+                 depth + 1);
+    }
+  }
+
+  // Every build item in file order; returns how many there were.
+  std::size_t add_build(NMR::PLib3MFModel* model) {
+    Released items;
+    check(NMR::lib3mf_model_getbuilditems(model, &items.instance), path_, "list the build items");
+    std::size_t count = 0;
+    BOOL more = false;
+    check(NMR::lib3mf_builditemiterator_movenext(items.instance, &more), path_, "iterate");
+    while (more) {
+      Released item, object;
+      check(NMR::lib3mf_builditemiterator_getcurrent(items.instance, &item.instance), path_,
+            "get a build item");
+      check(NMR::lib3mf_builditem_getobjectresource(item.instance, &object.instance), path_,
+            "get a build item's object");
+      BOOL has_transform = false;
+      check(NMR::lib3mf_builditem_hasobjecttransform(item.instance, &has_transform), path_,
+            "get a build item's transform");
+      Affine placement = kIdentity;
+      if (has_transform) {
+        NMR::MODELTRANSFORM t;
+        check(NMR::lib3mf_builditem_getobjecttransform(item.instance, &t), path_,
+              "get a build item's transform");
+        placement = affine(t);
+      }
+      add_object(object.instance, placement, has_transform, 0);
+      ++count;
+      check(NMR::lib3mf_builditemiterator_movenext(items.instance, &more), path_, "iterate");
+    }
+    return count;
+  }
+
+  // Mesh objects that no build item reaches, as stored (nothing in a file is dropped).
+  void add_unplaced(NMR::PLib3MFModel* model) {
+    Released objects;
+    check(NMR::lib3mf_model_getmeshobjects(model, &objects.instance), path_,
+          "list the mesh objects");
+    BOOL more = false;
+    check(NMR::lib3mf_resourceiterator_movenext(objects.instance, &more), path_, "iterate");
+    while (more) {
+      Released object;
+      check(NMR::lib3mf_resourceiterator_getcurrent(objects.instance, &object.instance), path_,
+            "get a mesh object");
+      DWORD id = 0;
+      check(NMR::lib3mf_resource_getresourceid(object.instance, &id), path_, "get an object's id");
+      if (placed_.count(id) == 0)
+        add_mesh(object.instance, kIdentity, false);
+      check(NMR::lib3mf_resourceiterator_movenext(objects.instance, &more), path_, "iterate");
+    }
+  }
+
+ private:
+  static constexpr int kMaxDepth = 64;
+  const std::string& path_;
+  Soup& soup_;
+  std::set<DWORD> placed_;  // mesh objects some build item reached
+  std::vector<NMR::MODELMESHVERTEX> vertices_;
+  std::vector<NMR::MODELMESHTRIANGLE> triangles_;
+};
+
 }  // namespace
 
 void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* /*attributes*/) {
   const std::string& path = file.path();
-  Released model, reader, objects;
+  Released model, reader;
   check(NMR::lib3mf_createmodel(&model.instance), path, "create a model");
   check(NMR::lib3mf_model_queryreader(model.instance, "3mf", &reader.instance), path,
         "create a reader");
   check(NMR::lib3mf_reader_readfromfileutf8(reader.instance, path.c_str()), path,
         "read the file as 3MF");
-  check(NMR::lib3mf_model_getmeshobjects(model.instance, &objects.instance), path,
-        "list the mesh objects");
-  BOOL more = false;
-  check(NMR::lib3mf_resourceiterator_movenext(objects.instance, &more), path, "iterate");
-  std::vector<NMR::MODELMESHVERTEX> vertices;
-  std::vector<NMR::MODELMESHTRIANGLE> triangles;
-  while (more) {
-    Released object;
-    check(NMR::lib3mf_resourceiterator_getcurrent(objects.instance, &object.instance), path,
-          "get a mesh object");
-    DWORD vertex_count = 0, triangle_count = 0;
-    check(NMR::lib3mf_meshobject_getvertexcount(object.instance, &vertex_count), path,
-          "count vertices");
-    check(NMR::lib3mf_meshobject_gettrianglecount(object.instance, &triangle_count), path,
-          "count triangles");
-    vertices.resize(vertex_count);
-    triangles.resize(triangle_count);
-    if (vertex_count > 0)
-      check(NMR::lib3mf_meshobject_getvertices(object.instance, vertices.data(), vertex_count,
-                                               nullptr),
-            path, "get vertices");
-    if (triangle_count > 0)
-      check(NMR::lib3mf_meshobject_gettriangleindices(object.instance, triangles.data(),
-                                                      triangle_count, nullptr),
-            path, "get triangles");
-    const Index offset = static_cast<Index>(soup.num_vertices());
-    for (const auto& v : vertices)
-      soup.add_vertex(Point(v.m_fPosition[0], v.m_fPosition[1], v.m_fPosition[2]));
-    for (const auto& t : triangles) {
-      for (DWORD i : t.m_nIndices) {
-        if (i >= vertex_count) {
-          throw ReadError(path + ": 3MF triangle " + std::to_string(soup.num_faces()) +
-                          " uses vertex " + std::to_string(i) + " of an object with " +
-                          std::to_string(vertex_count) + " vertices");
-        }
-      }
-      soup.add_polygon(
-          {offset + t.m_nIndices[0], offset + t.m_nIndices[1], offset + t.m_nIndices[2]});
-    }
-    check(NMR::lib3mf_resourceiterator_movenext(objects.instance, &more), path, "iterate");
-  }
+  Reader read(path, soup);
+  read.add_build(model.instance);
+  read.add_unplaced(model.instance);
   info.declared_vertices = soup.num_vertices();
   info.declared_faces = soup.num_faces();
 }
