@@ -527,6 +527,23 @@ TEST_F(HostileFile, ply_negative_and_out_of_range_indices) {
                                  "out of range");
 }
 
+TEST_F(HostileFile, binary_ply_negative_index_is_named_as_written) {
+  // The int32 index -5 in a binary file (the fast face path), and a short (the general one).
+  for (const char* type : {"int", "short"}) {
+    std::string file = std::string("ply\nformat binary_little_endian 1.0\nelement vertex 3\n") +
+                       "property float x\nproperty float y\nproperty float z\nelement face 1\n" +
+                       "property list uchar " + type + " vertex_indices\nend_header\n";
+    const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    file.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+    file.push_back(3);
+    const int width = std::string(type) == "int" ? 4 : 2;
+    for (const std::int32_t index : {0, 1, -5})  // little endian: the low bytes come first
+      file.append(reinterpret_cast<const char*>(&index), std::size_t(width));
+    expect_error<ReadError>(std::string("negative_") + type + ".ply", file,
+                            "face 0 refers to vertex index -5");
+  }
+}
+
 TEST_F(HostileFile, ply_header_without_end_or_with_unknown_format) {
   // Without end_header OpenMesh's header parser loops forever.
   expect_error<ReadError>("no_end.ply",

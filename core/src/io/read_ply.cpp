@@ -381,8 +381,10 @@ class PlyReader {
       const unsigned char* p = source.position();
       corners_.resize(n);
       for (unsigned c = 0; c < n; ++c) {
-        corners_[c] = e.properties[0].type == PlyScalar::i32 ? load<std::int32_t>(p + 4 * c, swap)
-                                                             : load<std::uint32_t>(p + 4 * c, swap);
+        // Each branch widened on its own: `?:` would convert a negative int32 to uint32.
+        corners_[c] = e.properties[0].type == PlyScalar::i32
+                          ? std::int64_t{load<std::int32_t>(p + 4 * c, swap)}
+                          : std::int64_t{load<std::uint32_t>(p + 4 * c, swap)};
       }
       source.advance(4 * std::size_t(n));
       add_face(i);
