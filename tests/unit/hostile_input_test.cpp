@@ -13,6 +13,7 @@
 #include "meshbridge/repair.h"
 #include "meshbridge/validate.h"
 
+#include "scratch_folder.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -144,26 +145,9 @@ Outcome read_in_sandbox(const std::string& path) {
   return o;
 }
 
-class HostileFile : public ::testing::Test {
+class HostileFile : public test_support::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    char name[] = "/tmp/meshbridge_hostile_XXXXXX";
-    ASSERT_NE(mkdtemp(name), nullptr);
-    dir_ = name;
-  }
-  void TearDown() override {
-    for (const std::string& f : files_)
-      std::remove(f.c_str());
-    rmdir(dir_.c_str());
-  }
-
-  std::string write(const std::string& name, const std::string& bytes) {
-    const std::string path = dir_ + "/" + name;
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    files_.push_back(path);
-    return path;
-  }
+  HostileFile() : ScratchFolderTest("hostile") {}
 
   //! The file must be rejected with an exception of type E whose message contains `expected`.
   template <class E>
@@ -196,9 +180,6 @@ class HostileFile : public ::testing::Test {
     expect_repair_invariants(soup, repair(soup));
     return soup;
   }
-
-  std::string dir_;
-  std::vector<std::string> files_;
 };
 
 // Little-endian binary helpers.

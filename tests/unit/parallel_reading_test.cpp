@@ -6,6 +6,7 @@
 #include "meshbridge/io.h"
 #include "meshbridge/models/canonical_models.h"
 
+#include "scratch_folder.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -91,22 +92,9 @@ Reading read_with(unsigned threads, const std::string& path) {
   return ::testing::AssertionSuccess();
 }
 
-class ParallelReading : public ::testing::Test {
+class ParallelReading : public test_support::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    char name[] = "/tmp/meshbridge_parallel_XXXXXX";
-    ASSERT_NE(mkdtemp(name), nullptr);
-    dir_ = name;
-  }
-  void TearDown() override {
-    for (const std::string& f : files_)
-      std::remove(f.c_str());
-    rmdir(dir_.c_str());
-  }
-  std::string path(const std::string& name) {
-    files_.push_back(dir_ + "/" + name);
-    return files_.back();
-  }
+  ParallelReading() : ScratchFolderTest("parallel") {}
   // 20 x 20 x 20 checkerboard cubes (48,000 triangles, singular edges everywhere), faces
   // shuffled, one corner at -0 and a facet with one point three times.
   static IndexedMesh test_mesh() {
@@ -124,9 +112,6 @@ class ParallelReading : public ::testing::Test {
     for (unsigned threads : {2u, 3u, 4u, 7u})
       EXPECT_TRUE(same_reading(one, read_with(threads, file))) << file << ", " << threads;
   }
-
-  std::string dir_;
-  std::vector<std::string> files_;
 };
 
 TEST_F(ParallelReading, binary_and_ascii_stl_weld_the_same_in_parts) {

@@ -15,6 +15,7 @@
 #include "meshbridge/repair.h"
 
 #include "openmesh_reference_reader.h"
+#include "scratch_folder.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -40,30 +41,9 @@ using meshbridge::test_support::read_with_openmesh;
 
 namespace {
 
-class PlyStlIo : public ::testing::Test {
+class PlyStlIo : public meshbridge::test_support::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    char name[] = "/tmp/meshbridge_plystl_XXXXXX";
-    ASSERT_NE(mkdtemp(name), nullptr);
-    dir_ = name;
-  }
-  void TearDown() override {
-    if (DIR* d = opendir(dir_.c_str())) {
-      while (dirent* e = readdir(d)) {
-        if (std::strcmp(e->d_name, ".") != 0 && std::strcmp(e->d_name, "..") != 0)
-          std::remove((dir_ + "/" + e->d_name).c_str());
-      }
-      closedir(d);
-    }
-    rmdir(dir_.c_str());
-  }
-  std::string path(const std::string& name) const { return dir_ + "/" + name; }
-  std::string write(const std::string& name, const std::string& bytes) const {
-    std::ofstream out(path(name), std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    return path(name);
-  }
-  std::string dir_;
+  PlyStlIo() : ScratchFolderTest("plystl") {}
 };
 
 template <class T>

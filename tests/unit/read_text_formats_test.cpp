@@ -12,6 +12,8 @@
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 
+#include "scratch_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <dirent.h>
@@ -25,27 +27,9 @@
 namespace meshbridge {
 namespace {
 
-class TextFormats : public ::testing::Test {
+class TextFormats : public test_support::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    char pattern[] = "/tmp/meshbridge_textfmt_XXXXXX";
-    ASSERT_NE(mkdtemp(pattern), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override {
-    for (const std::string& f : files_)
-      std::remove(f.c_str());
-    rmdir(dir_.c_str());
-  }
-  std::string path(const std::string& name) {
-    files_.push_back(dir_ + "/" + name);
-    return files_.back();
-  }
-  std::string write(const std::string& name, const std::string& bytes) {
-    const std::string p = path(name);
-    std::ofstream(p, std::ios::binary) << bytes;
-    return p;
-  }
+  TextFormats() : ScratchFolderTest("textfmt") {}
   std::vector<std::string> directory_entries() const {
     std::vector<std::string> names;
     DIR* d = opendir(dir_.c_str());
@@ -57,9 +41,6 @@ class TextFormats : public ::testing::Test {
     closedir(d);
     return names;
   }
-
-  std::string dir_;
-  std::vector<std::string> files_;
 };
 
 Soup triangle_soup() {
