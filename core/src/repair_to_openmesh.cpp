@@ -7,6 +7,7 @@
 #include "union_find.h"
 #include "working_soup.h"
 
+#include <algorithm>
 #include <cmath>
 #include <new>
 #include <vector>
@@ -15,14 +16,56 @@ namespace meshbridge {
 
 namespace {
 
+// True if no two components' bounding boxes meet, so that no closed component can lie inside
+// another (a cavity, which repair turns inward). A sweep along x; false also when the sweep would
+// compare more than 16 pairs per component (boxes strung along x), which only costs the fast path.
+bool boxes_apart(const Soup& soup, const std::vector<Index>& component, std::size_t count) {
+  if (count < 2)
+    return true;
+  struct Box {
+    Point lo, hi;
+  };
+  std::vector<Box> boxes(count, Box{Point(HUGE_VAL), Point(-HUGE_VAL)});
+  for (Index v : soup.corner_vertices) {  // vertices no face uses stay out of every box
+    Box& b = boxes[component[v]];
+    b.lo.minimize(soup.positions[v]);
+    b.hi.maximize(soup.positions[v]);
+  }
+  std::vector<Index> order(count);
+  for (std::size_t c = 0; c < count; ++c)
+    order[c] = static_cast<Index>(c);
+  std::sort(order.begin(), order.end(),
+            [&](Index a, Index b) { return boxes[a].lo[0] < boxes[b].lo[0]; });
+  std::vector<Index> active;  // boxes whose x range may still reach the next one
+  std::size_t budget = 16 * count;
+  for (Index c : order) {
+    const Box& b = boxes[c];
+    std::size_t kept = 0;
+    for (Index a : active) {
+      if (budget-- == 0)
+        return false;
+      const Box& o = boxes[a];
+      if (o.hi[0] < b.lo[0])
+        continue;  // ends before this one and every later one starts
+      if (o.lo[1] <= b.hi[1] && b.lo[1] <= o.hi[1] && o.lo[2] <= b.hi[2] && b.lo[2] <= o.hi[2])
+        return false;
+      active[kept++] = a;
+    }
+    active.resize(kept);
+    active.push_back(c);
+  }
+  return true;
+}
+
 // Builds `soup` into `mesh` as it is; false at the first polygon OpenMesh refuses or that repeats
-// a vertex, or if the result has a non-manifold vertex or an inward closed component.
+// a vertex, or if the result has a boundary (gap closing and the open-orientation rules decide
+// open parts), a non-manifold vertex, two components whose bounding boxes meet (one could be a
+// cavity of the other) or an inward closed component.
 //
 // Everything beyond the stock build's add_vertex / add_face runs in linear passes (no vertex
 // circulation) and needs one Index per vertex: components are joined through the polygons'
-// vertices (in a mesh whose vertices are manifold, vertex-connected is edge-connected), a vertex
-// with more than one outgoing boundary halfedge is non-manifold (OpenMesh's is_manifold counts
-// the same halfedges, through a circulation), and volumes are summed per component.
+// vertices (in a closed mesh OpenMesh accepted, every vertex is manifold and vertex-connected is
+// edge-connected), and boxes and volumes are summed per component.
 bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
   mesh.reserve(soup.num_vertices(), soup.num_corners() / 2 + soup.num_vertices(), soup.num_faces());
   for (const Point& p : soup.positions)
@@ -48,24 +91,17 @@ bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
   const std::vector<Index> component = std::move(components).take_labels([&](Index) {
     return static_cast<Index>(num_components++);
   });
-  std::vector<char> open(num_components, 0);
-  std::vector<char> boundary_out(soup.num_vertices(), 0);
   for (auto h : mesh.halfedges()) {
-    if (mesh.is_boundary(h)) {
-      const int v = mesh.from_vertex_handle(h).idx();
-      if (boundary_out[v])
-        return false;  // a second gap at v
-      boundary_out[v] = 1;
-      open[component[v]] = 1;
-    }
+    if (mesh.is_boundary(h))
+      return false;  // an open part: repair may weld a crack at it or turn it over
   }
+  if (!boxes_apart(soup, component, num_components))
+    return false;
   // Closed components must not have negative volume (beyond rounding, as repair judges it).
   std::vector<double> volume(num_components, 0.0), magnitude(num_components, 0.0);
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     const PolygonView polygon = soup.polygon(f);
     const Index c = component[polygon[0]];
-    if (open[c])
-      continue;
     const Point& p0 = soup.positions[polygon[0]];
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
       const double term = OpenMesh::dot(
@@ -75,7 +111,7 @@ bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
     }
   }
   for (std::size_t c = 0; c < num_components; ++c) {
-    if (!open[c] && volume[c] < -1e-9 * magnitude[c])
+    if (volume[c] < -1e-9 * magnitude[c])
       return false;
   }
   return true;
