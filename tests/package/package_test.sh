@@ -6,6 +6,12 @@ build=$1
 source=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# README's install: every default component, under the prefix only. DESTDIR catches a file
+# installed to an absolute path (the MeshLab plugin once was, whatever the prefix).
+DESTDIR="$work/dest" cmake --install "$build" --prefix "$work/prefix" >/dev/null
+outside=$(cd "$work/dest" && find . -type f ! -path ".$work/prefix/*")
+[ -z "$outside" ] || { echo "installed outside the prefix: $outside" >&2; exit 1; }
+[ -x "$work/dest$work/prefix/bin/meshbridge" ] || { echo "no bin/meshbridge under the prefix" >&2; exit 1; }
 cmake --install "$build" --prefix "$work/prefix" --component Unspecified >/dev/null
 cmake -S "$source/tests/package" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
 cmake --build "$work/build" >/dev/null
