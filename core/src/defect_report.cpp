@@ -6,10 +6,10 @@
 namespace meshbridge {
 
 bool DefectReport::has_defects() const {
+  // Isolated vertices and zero-area faces are listed, not defects (see the header).
   return !singular_edges.empty() || num_singular_vertices() > 0 || !boundary_edges.empty() ||
-         !isolated_vertices.empty() || !degenerate_faces.empty() || !excluded_faces.empty() ||
-         !duplicate_faces.empty() || !inconsistent_edges.empty() ||
-         num_nonorientable_components > 0;
+         !degenerate_faces.empty() || !excluded_faces.empty() || !duplicate_faces.empty() ||
+         !inconsistent_edges.empty() || num_nonorientable_components > 0;
 }
 
 namespace {

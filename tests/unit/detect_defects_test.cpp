@@ -114,6 +114,15 @@ TEST(DetectDefects, degenerate_zero_area_duplicate_and_isolated_elements) {
   EXPECT_TRUE(r.has_defects());
 }
 
+TEST(DetectDefects, isolated_vertices_are_listed_but_are_no_defect) {
+  Soup soup = models::icosphere(1);
+  const Index lone = soup.add_vertex({5, 5, 5});
+  const DefectReport r = detect_defects(soup);
+  EXPECT_EQ(r.isolated_vertices, std::vector<Index>{lone});
+  EXPECT_TRUE(r.watertight);
+  EXPECT_FALSE(r.has_defects());
+}
+
 TEST(DetectDefects, text_carries_the_counts) {
   const DefectReport r = detect_defects(models::two_cubes_sharing_edge());
   const std::string text = to_text(r);

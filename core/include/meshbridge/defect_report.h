@@ -51,10 +51,11 @@ struct DefectReport {
   std::size_t num_singular_vertices() const {
     return singular_edge_vertices.size() + pinch_vertices.size();
   }
-  //! True if anything above needs attention. Not defects: components, Euler number, and
-  //! zero-area faces with 3 distinct corners (listed only: they are valid topology that repair
-  //! keeps on purpose, so a `check` of a repaired file can exit 0). `check` exits 1 exactly
-  //! when this is true.
+  //! True if anything above needs attention. Not defects: components, Euler number, zero-area
+  //! faces with 3 distinct corners and isolated vertices (listed only: repair keeps both on
+  //! purpose, the faces as valid topology and the vertices as data no face loses, so a `check`
+  //! of a repaired file can exit 0; a vertex only a set-aside face used stays as such a vertex).
+  //! `check` exits 1 exactly when this is true.
   bool has_defects() const;
 };
 
