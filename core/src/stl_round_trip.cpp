@@ -64,17 +64,17 @@ double smallest_stl_separation(const IndexedMesh& mesh) {
   std::map<Index, Index> copies;
   for (Index o : mesh.vertex_origin)
     ++copies[o];
-  double largest = 0;
   bool any = false;
-  for (std::size_t v = 0; v < mesh.soup.num_vertices(); ++v) {
-    if (copies[mesh.vertex_origin[v]] < 2)
-      continue;
-    any = true;
-    for (int a = 0; a < 3; ++a)
-      largest = std::max(largest, std::abs(mesh.soup.positions[v][a]));
-  }
+  for (std::size_t v = 0; v < mesh.soup.num_vertices() && !any; ++v)
+    any = copies[mesh.vertex_origin[v]] >= 2;
   if (!any)
     return 0;
+  // The model's scale, not the copies' own coordinates: copies at the origin would otherwise be
+  // moved by a float32 denormal (1.4e-45), which any tool that welds with a tolerance undoes.
+  double largest = 0;
+  for (const Point& p : mesh.soup.positions)
+    for (int a = 0; a < 3; ++a)
+      largest = std::max(largest, std::abs(p[a]));
   const float at = static_cast<float>(largest);
   const double ulp = static_cast<double>(std::nextafter(at, 2 * at + 1.0f)) - at;
   for (int k = 0; k <= 60; ++k) {

@@ -2,6 +2,7 @@
 // What a repaired mesh becomes through STL, and the smallest separation that survives float32.
 
 #include "meshbridge/stl_round_trip.h"
+#include "meshbridge/models/canonical_models.h"
 #include "meshbridge/repair.h"
 #include "meshbridge/separate_copies.h"
 
@@ -53,6 +54,17 @@ TEST(StlRoundTrip, smallest_separation_at_160_mm_is_one_float_ulp) {
     separate_split_vertices(trial, too_small);
     EXPECT_EQ(singular_elements_after_stl_round_trip(trial.soup), 3u) << too_small;
   }
+}
+
+TEST(StlRoundTrip, copies_at_the_origin_move_by_the_models_float_spacing_not_a_denormal) {
+  // The hourglass's pinch vertex is the origin; the model spans [-1, 1].
+  const RepairResult r = repair(models::hourglass());
+  ASSERT_GT(r.report.vertices_split, 0u);
+  const double smallest = smallest_stl_separation(r.mesh);
+  EXPECT_GE(smallest, std::ldexp(1.0, -23));  // float32 spacing at 1
+  IndexedMesh separated = r.mesh;
+  separate_split_vertices(separated, smallest);
+  EXPECT_EQ(singular_elements_after_stl_round_trip(separated.soup), 0u);
 }
 
 TEST(StlRoundTrip, nothing_split_needs_no_separation) {

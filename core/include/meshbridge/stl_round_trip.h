@@ -21,7 +21,8 @@ std::size_t singular_elements_after_stl_round_trip(const Soup& soup);
 
 //! The smallest `distance` for separate_split_vertices() after which the repaired `mesh` survives
 //! STL: `u * 2^k` (k = 0, 1, ..., 60) where u is the float32 spacing (one unit in the last place)
-//! at the largest absolute coordinate of a split vertex's copies, the first for which
+//! at the largest absolute coordinate of the mesh (its scale: copies near the origin move as far
+//! as copies at its far end, never by a denormal), the first for which
 //! singular_elements_after_stl_round_trip() is 0. 0 when `mesh` has no split vertex.
 //! \pre `mesh.vertex_origin` has one entry per vertex
 //! \throw std::invalid_argument when no such distance exists (float32 merges vertices that are
