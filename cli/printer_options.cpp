@@ -84,11 +84,24 @@ std::string gaps_line(const CloseGapsReport& g, bool would) {
   return out.str();
 }
 
-bool is_stl_path(const std::string& path) {
+namespace {
+
+bool has_extension(const std::string& path, const char* extension) {
   std::string lower = path;
   for (auto& ch : lower)
     ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return lower.size() >= 4 && lower.compare(lower.size() - 4, 4, ".stl") == 0;
+  const std::string e = extension;
+  return lower.size() >= e.size() && lower.compare(lower.size() - e.size(), e.size(), e) == 0;
+}
+
+}  // namespace
+
+bool is_stl_path(const std::string& path) {
+  return has_extension(path, ".stl");
+}
+
+bool holds_triangles_only(const std::string& path) {
+  return has_extension(path, ".stl") || has_extension(path, ".3mf");
 }
 
 double apply_separate(const std::string& text, IndexedMesh& mesh, std::size_t vertices_split,

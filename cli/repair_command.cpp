@@ -110,11 +110,24 @@ int run_repair(RepairArguments& arguments) {
   warn_about_reader(in, info);
 
   std::cout << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
+  if (holds_triangles_only(out)) {
+    // These formats hold triangles only: the writer fans every larger polygon.
+    std::size_t triangles = 0, fanned = 0;
+    for (std::size_t f = 0; f < result.mesh.soup.num_faces(); ++f) {
+      const std::size_t n = result.mesh.soup.arity(f);
+      triangles += n - 2;
+      fanned += n > 3 ? 1 : 0;
+    }
+    if (fanned != 0) {
+      std::cout << "written as " << triangles << " triangles: " << fanned
+                << " polygons fanned (the format holds triangles only)\n";
+    }
+  }
   if (reread) {
     // STL keeps no shared vertices: say what a reader gets back from the written file.
     const std::size_t left = reread->singular_edges.size() + reread->num_singular_vertices();
     std::cout << "as re-read from " << out << ": singular edges " << reread->singular_edges.size()
-              << ", singular vertices " << reread->num_singular_vertices() << ", closed "
+              << ", singular vertices " << reread->num_singular_vertices() << ", watertight "
               << (reread->watertight ? "yes" : "no") << "\n";
     if (left > 0) {
       std::cerr << "meshbridge: warning: STL has no shared vertices; reading " << out

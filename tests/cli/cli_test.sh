@@ -158,6 +158,19 @@ TABLE
   expect_in "$work/err" "--pairing: sideways not in {geometric,combinatorial}"
   ;;
 repair_formats)
+  # A box of 7 quads with two T-junction cracks: closing them makes 2 pentagons, and STL and
+  # 3MF hold triangles only: the summary says how many the file has (16, as check reads it).
+  source "$(dirname "${BASH_SOURCE[0]}")/../meshlab/crack_models.sh"
+  write_t_junction_box "$work/box.off"
+  for ext in stl 3mf; do
+    expect_exit 0 "$mb" repair "$work/box.off" "$work/box.$ext"
+    expect_in "$work/out" "faces: 7 in, 7 out"
+    expect_in "$work/out" "written as 16 triangles: 7 polygons fanned (the format holds triangles only)"
+    expect_exit 0 "$mb" check "$work/box.$ext" --json
+    [ "$(json_field "$work/out" faces)" = 16 ] || fail "$ext: check reads 16 triangles"
+  done
+  expect_exit 0 "$mb" repair "$work/box.off" "$work/box.ply"
+  grep -q "written as" "$work/out" && fail "PLY keeps polygons: no 'written as' line"
   for ext in obj off ply; do
     expect_exit 0 "$mb" repair "$models/prisms24.obj" "$work/p.$ext"
     expect_exit 0 "$mb" check "$work/p.$ext" --json
@@ -173,7 +186,7 @@ stl_warning)
   expect_in "$work/out" "singular edges: 1"
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/s.stl" --separate 1e-4
   expect_in "$work/out" "separated the 2 split vertex copies: moved 4 vertices"
-  expect_in "$work/out" "as re-read from $work/s.stl: singular edges 0, singular vertices 0"
+  expect_in "$work/out" "as re-read from $work/s.stl: singular edges 0, singular vertices 0, watertight yes"
   expect_exit 0 "$mb" check "$work/s.stl"
   expect_in "$work/out" "watertight yes"
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/a.stl" --separate auto
