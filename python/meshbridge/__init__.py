@@ -31,6 +31,7 @@ so threads run those in parallel (file reading and writing take turns within one
 from __future__ import annotations
 
 import json
+import warnings
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -143,15 +144,27 @@ def read(path: Union[str, "os.PathLike[str]"]) -> Soup:
 
 
 def write(path: Union[str, "os.PathLike[str]"], mesh: Any, faces: Optional[Faces] = None) -> None:
-    """Writes a manifold mesh to OBJ, OFF, PLY or STL (chosen by the extension).
+    """Writes a manifold mesh to OBJ, OFF, PLY, STL or 3MF (chosen by the extension).
 
     ``mesh`` is a :class:`Soup`, a :class:`RepairResult`, or vertices with ``faces``. The file is
     written under a temporary name and renamed, so on error the previous file is untouched.
-    STL gets triangles and cannot keep split vertices (every reader welds them again).
+    STL and 3MF get triangles. STL cannot keep split vertices (every reader welds them again):
+    when reading the written STL back re-creates singular edges or vertices, a
+    :class:`UserWarning` says how many (as ``meshbridge repair`` warns); write 3MF, PLY, OBJ or
+    OFF to keep the repair.
 
     Raises :class:`WriteError` naming the file (also for non-manifold input: repair first).
     """
-    _core.write(_path(path), _soup(mesh, faces))
+    target = _path(path)
+    edges, vertices = _core.write(target, _soup(mesh, faces))
+    if edges or vertices:
+        warnings.warn(
+            f"{target}: STL has no shared vertices; reading it welds split vertex copies again "
+            f"and re-creates {edges} singular edges and {vertices} singular vertices. "
+            "Write 3MF, PLY, OBJ or OFF to keep the repair.",
+            UserWarning,
+            stacklevel=2,
+        )
 
 
 def check(

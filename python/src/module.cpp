@@ -12,12 +12,14 @@
 #include "meshbridge/errors.h"
 #include "meshbridge/io.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/stl_round_trip.h"
 #include "meshbridge/validate.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstring>
 #include <memory>
@@ -29,6 +31,16 @@ using namespace meshbridge;
 using namespace meshbridge::python;
 
 namespace {
+
+//! True if `path` ends with ".stl" (any case).
+bool is_stl_file(const std::string& path) {
+  if (path.size() < 4)
+    return false;
+  std::string tail = path.substr(path.size() - 4);
+  for (char& c : tail)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return tail == ".stl";
+}
 
 //! A soup read from a file or built from arrays, with what its file declared.
 struct PySoup {
@@ -221,13 +233,24 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "write",
       [](const std::string& path, const PySoup& soup) {
-        py::gil_scoped_release release;
-        IndexedMesh mesh;
-        mesh.soup = soup.soup;
-        const std::lock_guard<std::mutex> lock(io_lock());
-        write_mesh(path, mesh);
+        std::pair<std::size_t, std::size_t> reread{0, 0};
+        {
+          py::gil_scoped_release release;
+          IndexedMesh mesh;
+          mesh.soup = soup.soup;
+          const std::lock_guard<std::mutex> lock(io_lock());
+          write_mesh(path, mesh);
+          if (is_stl_file(path)) {
+            // What every STL reader gets back: positions welded, split copies merged again.
+            const DefectReport again = detect_defects(stl_round_trip(mesh.soup));
+            reread = {again.singular_edges.size(), again.num_singular_vertices()};
+          }
+        }
+        return reread;
       },
-      py::arg("path"), py::arg("soup"));
+      py::arg("path"), py::arg("soup"),
+      "Writes `soup`; returns (singular edges, singular vertices) of the file as an STL reader "
+      "gets it back ((0, 0) for other formats).");
 
   m.def(
       "check",

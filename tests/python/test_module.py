@@ -4,6 +4,7 @@
 import os
 import sys
 import threading
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -145,6 +146,17 @@ def test_read_write_round_trip(tmp_path):
         assert meshbridge.check(back)["watertight"] is True
     meshbridge.write(str(tmp_path / "plain.off"), result.vertices, result.faces)
     assert meshbridge.read(tmp_path / "plain.off").num_faces == 24
+
+
+def test_stl_that_welds_the_repair_back_warns_with_counts(tmp_path):
+    result = meshbridge.repair(meshbridge.read(MODELS / "twocubes.obj"))
+    with pytest.warns(UserWarning, match=r"re-creates 1 singular edges and 2 singular vertices"):
+        meshbridge.write(tmp_path / "out.stl", result)
+    assert meshbridge.check(meshbridge.read(tmp_path / "out.stl"))["singular_edges"] == 1
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a clean STL and other formats: no warning
+        meshbridge.write(tmp_path / "out.ply", result)
+        meshbridge.write(tmp_path / "ico.stl", meshbridge.read(MODELS / "icosphere.obj"))
 
 
 def test_report_lists_on_request():
