@@ -214,8 +214,19 @@ void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   check(NMR::lib3mf_createmodel(&model.instance), path, "create a model");
   check(NMR::lib3mf_model_queryreader(model.instance, "3mf", &reader.instance), path,
         "create a reader");
-  check(NMR::lib3mf_reader_readfromfileutf8(reader.instance, path.c_str()), path,
-        "read the file as 3MF");
+  const HRESULT status = NMR::lib3mf_reader_readfromfileutf8(reader.instance, path.c_str());
+  if (status != LIB3MF_OK) {
+    // lib3mf's own words ("Could not read ZIP file", "Could not create OPC Part": lib3mf 1.8
+    // refuses a package whose relationships name a part the archive lacks).
+    DWORD code = 0;
+    LPCSTR message = nullptr;
+    NMR::lib3mf_getlasterror(reader.instance, &code, &message);
+    std::string why = message != nullptr && *message != '\0' ? message : "unknown error";
+    if (why == "Could not create OPC Part")
+      why += " (a relationship of the package names a part that is not in the archive?)";
+    throw ReadError(path + ": lib3mf cannot read the file as 3MF: " + why + " (error " +
+                    std::to_string(status) + ", lib3mf code " + std::to_string(code) + ")");
+  }
   Reader read(path, soup);
   read.add_build(model.instance);
   read.add_unplaced(model.instance);
