@@ -255,7 +255,9 @@ Weld weld_vertices(const Soup& soup, double tolerance, const std::vector<Index>&
     candidates.clear();
     grid.for_each_near(p, tolerance, [&](Index u) {
       const double d2 = (soup.positions[u] - p).sqrnorm();
-      if (d2 > 0 && d2 <= tolerance2)
+      // Beyond 1e154 the square overflows (and past 1.3e154 the tolerance's does too): an
+      // infinite d2 is never a weld, so no move is larger than the tolerance it claims.
+      if (d2 > 0 && d2 <= tolerance2 && std::isfinite(d2))
         candidates.push_back({d2, u});
     });
     if (candidates.empty()) {

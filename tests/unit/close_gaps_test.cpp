@@ -199,6 +199,26 @@ TEST(CloseGaps, never_merges_two_corners_of_one_polygon) {
   EXPECT_EQ(closed.soup.num_faces(), 1u);
 }
 
+TEST(CloseGaps, no_weld_moves_farther_than_the_tolerance_at_huge_coordinates) {
+  // At 1e300 the automatic tolerance is 4.8e293 and the squares of distances overflow: two
+  // boundary vertices 1e293 apart were welded with a "largest move" of inf (a fuzz finding).
+  // Distances beyond 1e154 are never welded; every move stays within the tolerance.
+  Soup soup;
+  soup.add_vertex({1e300, 0, 0});
+  soup.add_vertex({0, 1e300, 0});
+  soup.add_vertex({0, 0, 1e300});
+  soup.add_vertex({1.0000001e300, 0, 0});
+  soup.add_vertex({0, -1e300, 0});
+  soup.add_vertex({0, 0, -1e300});
+  soup.add_polygon({0, 1, 2});
+  soup.add_polygon({3, 4, 5});
+  const ClosedGaps closed = close_gaps(soup);
+  EXPECT_GT(closed.report.tolerance, 1e293);
+  EXPECT_TRUE(std::isfinite(closed.report.largest_weld_distance));
+  EXPECT_LE(closed.report.largest_weld_distance, closed.report.tolerance);
+  EXPECT_EQ(closed.report.vertices_welded, 0u);
+}
+
 TEST(CloseGaps, refuses_a_nan_tolerance) {
   CloseGapsOptions options;
   options.tolerance = std::nan("");
