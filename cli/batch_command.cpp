@@ -57,6 +57,7 @@ struct Entry {
   const FileJob* job = nullptr;  //!< null: unreadable, the status, reason and record are final
   FileStatus status = FileStatus::failed;
   std::string reason;
+  std::string reading;  //!< FileJobResult::reading: a warning for stderr, or empty
   std::string record;
   TableRow row;
 };
@@ -64,6 +65,7 @@ struct Entry {
 void take_result(Entry& entry, const FileJobResult& result) {
   entry.status = result.status;
   entry.reason = result.reason;
+  entry.reading = result.reading;
   entry.record = result.record;
   const RepairReport& p = result.report;
   // An STL output counts as it will be re-read (split vertex copies weld again).
@@ -76,7 +78,8 @@ void take_result(Entry& entry, const FileJobResult& result) {
 // writers keep per-call state in process-wide objects, so threads would have to take turns for
 // reading and writing, and a file that crashes its child fails alone instead of ending the run.
 // The child sends its result over a pipe: "status faces_in singular_edges singular_vertices
-// faces_out components_after watertight reason_length\n", the reason, then the record.
+// faces_out components_after watertight reason_length reading_length\n", the reason, the
+// reading note, then the record.
 
 void write_all(int fd, const std::string& data) {
   for (std::size_t done = 0; done < data.size();) {
@@ -100,8 +103,9 @@ void write_all(int fd, const std::string& data) {
   std::ostringstream head;
   head << static_cast<int>(entry.status) << ' ' << r.faces_in << ' ' << r.singular_edges << ' '
        << r.singular_vertices << ' ' << r.faces_out << ' ' << r.components_after << ' '
-       << (r.watertight_after ? 1 : 0) << ' ' << entry.reason.size() << '\n';
-  write_all(fd, head.str() + entry.reason + entry.record);
+       << (r.watertight_after ? 1 : 0) << ' ' << entry.reason.size() << ' ' << entry.reading.size()
+       << '\n';
+  write_all(fd, head.str() + entry.reason + entry.reading + entry.record);
   ::close(fd);
   ::_exit(0);
 }
@@ -113,17 +117,18 @@ bool decode_child(const std::string& data, Entry& entry) {
     return false;
   std::istringstream head(data.substr(0, newline));
   int status = 0, watertight = 0;
-  std::size_t reason_size = 0;
+  std::size_t reason_size = 0, reading_size = 0;
   TableRow& r = entry.row;
   if (!(head >> status >> r.faces_in >> r.singular_edges >> r.singular_vertices >> r.faces_out >>
-        r.components_after >> watertight >> reason_size) ||
-      status < 0 || status > 3 || data.size() < newline + 1 + reason_size) {
+        r.components_after >> watertight >> reason_size >> reading_size) ||
+      status < 0 || status > 3 || data.size() < newline + 1 + reason_size + reading_size) {
     return false;
   }
   r.watertight_after = watertight != 0;
   entry.status = static_cast<FileStatus>(status);
   entry.reason = data.substr(newline + 1, reason_size);
-  entry.record = data.substr(newline + 1 + reason_size);
+  entry.reading = data.substr(newline + 1 + reason_size, reading_size);
+  entry.record = data.substr(newline + 1 + reason_size + reading_size);
   return !entry.record.empty();
 }
 
@@ -197,6 +202,20 @@ void print_table_row(const Entry& e) {
   }
 }
 
+//! The entry's JSON record or table row on stdout; what the reader changed, as a warning on
+//! stderr (as `repair` warns), in either mode.
+void print_entry(const Entry& e, bool json) {
+  if (!e.reading.empty()) {
+    std::cout.flush();
+    std::cerr << "meshbridge: warning: " << e.name << ": " << e.reading << "\n";
+  }
+  if (json) {
+    std::cout << e.record << "\n";
+  } else {
+    print_table_row(e);
+  }
+}
+
 int run_batch(const BatchArguments& arguments) {
   FileJobOptions options;
   options.format = arguments.format;
@@ -251,22 +270,12 @@ int run_batch(const BatchArguments& arguments) {
     failed_so_far += entries[i].status == FileStatus::failed ? 1 : 0;
     done[i] = 1;
     progress.file_done(entries[i].name, ++files_done, failed_so_far);
-    for (; next_to_print < entries.size() && done[next_to_print]; ++next_to_print) {
-      if (arguments.json) {
-        std::cout << entries[next_to_print].record << "\n";
-      } else {
-        print_table_row(entries[next_to_print]);
-      }
-    }
+    for (; next_to_print < entries.size() && done[next_to_print]; ++next_to_print)
+      print_entry(entries[next_to_print], arguments.json);
     std::cout.flush();
   };
-  for (; next_to_print < entries.size() && done[next_to_print]; ++next_to_print) {
-    if (arguments.json) {
-      std::cout << entries[next_to_print].record << "\n";
-    } else {
-      print_table_row(entries[next_to_print]);
-    }
-  }
+  for (; next_to_print < entries.size() && done[next_to_print]; ++next_to_print)
+    print_entry(entries[next_to_print], arguments.json);
   std::cout.flush();
 
   if (arguments.jobs <= 1) {

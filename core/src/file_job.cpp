@@ -196,6 +196,8 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
       soup = read_soup(job.input, &info, &attributes);
     }
     read = true;
+    if (info.changed_anything())
+      result.reading = describe_reading(info);
     RepairResult repaired = repair(soup, options.repair);
     soup = Soup();
     const fs::path folder = fs::path(job.output).parent_path();

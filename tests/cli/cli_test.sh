@@ -273,6 +273,16 @@ batch)
   expect_exit 0 "$mb" batch "$work/in" "$work/res1" --progress --jobs 1
   expect_in "$work/err" "[4/4]"
   expect_in "$work/err" "ETA"
+  # What a reader changed is a warning on stderr in table and JSON mode, with any --jobs.
+  mkdir -p "$work/pinched"
+  printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 1 4 5\nf 1 2\nl 1 3\n' >"$work/pinched/p.obj"
+  for jobs in 1 2; do
+    for mode in "" --json; do
+      expect_exit 0 "$mb" batch "$work/pinched" "$work/pinched_out$jobs$mode" --jobs "$jobs" $mode
+      expect_in "$work/err" \
+        "meshbridge: warning: p.obj: 2 face records: 0 kept, 1 split (pinched: a vertex revisited), 1 set aside (< 3 distinct corners); 1 dangling edge"
+    done
+  done
   printf 'v 0 0 0\nf 1 2 3\n' >"$work/in/broken.obj"
   expect_exit 2 "$mb" batch "$work/in" "$work/res2" --json --quiet
   [ ! -s "$work/err" ] || fail "--quiet printed progress: $(cat "$work/err")"

@@ -74,7 +74,11 @@ BatchPlan plan_batch(const std::string& in_dir, const std::string& out_dir,
 //! The outcome of run_file_job.
 struct FileJobResult {
   FileStatus status = FileStatus::failed;
-  std::string reason;   //!< failed or skipped: why, naming the path; empty otherwise
+  std::string reason;  //!< failed or skipped: why, naming the path; empty otherwise
+  //! What became of the file's records (describe_reading()) when the reader did not keep every
+  //! one as a simple polygon or found dangling edges or lone points; empty otherwise. The CLI
+  //! warns with it, as `repair` does.
+  std::string reading;
   std::string record;   //!< the JSON Lines record (batch_record_json), no trailing newline
   RepairReport report;  //!< clean or repaired: what repair did; empty otherwise
   //! STL output only: detection on the written file as read back (STL keeps no shared vertices,
