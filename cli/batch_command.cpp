@@ -17,6 +17,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -230,6 +231,17 @@ int run_batch(const BatchArguments& arguments) {
     plan = plan_batch(arguments.in_dir, arguments.out_dir, options, arguments.in_place);
   } catch (const std::invalid_argument& error) {
     throw UsageError(error.what());
+  }
+  // One error before any work, not one failed row per file.
+  std::error_code error;
+  std::filesystem::create_directories(arguments.out_dir, error);
+  if (error) {
+    throw UsageError(arguments.out_dir + ": cannot create the output folder (" + error.message() +
+                     ")");
+  }
+  if (::access(arguments.out_dir.c_str(), W_OK) != 0) {
+    throw UsageError(arguments.out_dir + ": cannot write in the output folder (" +
+                     std::strerror(errno) + ")");
   }
 
   std::vector<Entry> entries;

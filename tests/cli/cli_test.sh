@@ -310,6 +310,12 @@ batch_safety)
   cp "$models/twocubes.obj" "$models/icosphere.obj" "$work/in/"
   cp "$models/prisms24.obj" "$work/in/sub/"
   cp "$work/in/twocubes.obj" "$work/original.obj"
+  # An output folder that cannot be made is one error before any work, not a failed row per file.
+  echo "a file" >"$work/plain.txt"
+  expect_exit 2 "$mb" batch "$work/in" "$work/plain.txt/out"
+  expect_in "$work/err" "meshbridge batch: error: $work/plain.txt/out: cannot create the output folder (Not a directory)"
+  [ "$(wc -l <"$work/err")" = 1 ] || fail "one error line: $(cat "$work/err")"
+  [ ! -s "$work/out" ] || fail "no table for a batch that could not start: $(cat "$work/out")"
   expect_exit 2 "$mb" batch "$work/in" "$work/in"
   expect_in "$work/err" "is the input folder"
   expect_exit 2 "$mb" batch "$work/in" "$work/in/sub/out"
@@ -340,11 +346,11 @@ batch_safety)
   expect_exit 0 "$mb" batch "$work/in" "$work/in/fixed" --in-place --json
   [ "$(json_lines "$work/out")" = 3 ] || fail "OUTDIR inside INDIR was read back: $(cat "$work/out")"
   rm -rf "$work/in/fixed"
-  # An OUTDIR that cannot be made: every file fails naming the folder and the reason.
+  # An OUTDIR that cannot be made, in JSON mode too: one error, no record.
   : >"$work/blocker"
   expect_exit 2 "$mb" batch "$work/in" "$work/blocker/res" --json
-  json_line_field "$work/out" 0 reason | grep -q "blocker.*cannot create the folder" \
-    || fail "unmakeable OUTDIR reason: $(cat "$work/out")"
+  expect_in "$work/err" "$work/blocker/res: cannot create the output folder (Not a directory)"
+  [ ! -s "$work/out" ] || fail "records for a batch that could not start: $(cat "$work/out")"
   # Unreadable folders and files are skipped with a warning naming them; the rest goes on.
   # Root reads everything, so as root the run drops to user nobody (setpriv, util-linux).
   mkdir -p "$work/in/locked"
