@@ -25,7 +25,8 @@ Json read_json(const ReadInfo& info) {
               {"faces_split", info.faces_split},
               {"faces_set_aside", info.faces_set_aside},
               {"dangling_edges", info.dangling_edges},
-              {"lone_points", info.lone_points}};
+              {"lone_points", info.lone_points},
+              {"strip_joins", info.strip_joins}};
 }
 
 //! The counts of a detection report, then its element lists on request.

@@ -263,8 +263,8 @@ TEST_F(PlyStlIo, stl_round_trips_are_identical_for_float_positions) {
 
 // --- what OpenMesh's readers lose ------------------------------------------------------------
 
-TEST_F(PlyStlIo, ply_tristrips_with_restarts_alternate_winding_and_set_aside_degenerates) {
-  // Run 1: 0 1 2 3 -> (0 1 2), (2 1 3); run 2: 4 5 6 6 -> (4 5 6), (6 5 6) degenerate.
+TEST_F(PlyStlIo, ply_tristrips_with_restarts_alternate_winding_and_skip_joins) {
+  // Run 1: 0 1 2 3 -> (0 1 2), (2 1 3); run 2: 4 5 6 6 -> (4 5 6), (6 5 6) a join, no face.
   const std::string header =
       "ply\nformat ascii 1.0\nelement vertex 7\nproperty float x\nproperty float y\n"
       "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
@@ -273,10 +273,14 @@ TEST_F(PlyStlIo, ply_tristrips_with_restarts_alternate_winding_and_set_aside_deg
   const std::string file = write("strips.ply", header + vertices + "9 0 1 2 3 -1 4 5 6 6\n");
   ReadInfo info;
   const Soup soup = read_soup(file, &info);
-  EXPECT_EQ(soup.corner_vertices, (std::vector<Index>{0, 1, 2, 2, 1, 3, 4, 5, 6, 6, 5, 6}));
-  EXPECT_EQ(info.declared_faces, 4u);
+  EXPECT_EQ(soup.corner_vertices, (std::vector<Index>{0, 1, 2, 2, 1, 3, 4, 5, 6}));
+  EXPECT_EQ(info.declared_faces, 3u);
   EXPECT_EQ(info.faces_kept, 3u);
-  EXPECT_EQ(info.faces_set_aside, 1u);
+  EXPECT_EQ(info.faces_set_aside, 0u);
+  EXPECT_EQ(info.strip_joins, 1u);
+  EXPECT_FALSE(info.changed_anything());
+  EXPECT_EQ(describe_reading(info),
+            "3 face records: all kept (1 degenerate strip triangle linking runs skipped)");
   EXPECT_FALSE(read_with_openmesh(file).ok && read_with_openmesh(file).soup.num_faces() > 0);
   // The same strip in big-endian binary with a uchar count and uint indices: the same soup.
   std::string binary =
@@ -295,12 +299,23 @@ TEST_F(PlyStlIo, ply_tristrips_with_restarts_alternate_winding_and_set_aside_deg
   MeshAttributes attributes;
   EXPECT_TRUE(
       same_soup(read_soup(write("strips_be.ply", binary), &binary_info, &attributes), soup));
-  EXPECT_EQ(binary_info.faces_set_aside, 1u);
+  EXPECT_EQ(binary_info.strip_joins, 1u);
   EXPECT_TRUE(attributes.double_precision);
-  // Repair keeps the three real triangles and sets the degenerate one aside.
+  // A strip that joins two runs the usual way (0 1 2 3 3 4 4 5 6): two joins' worth of
+  // degenerate triangles (3 3 4, 3 4 4 and 3 4 4 ... as the run goes on), only real ones kept.
+  const std::string joined = write("joined.ply", header + vertices + "9 0 1 2 3 3 4 4 5 6\n");
+  ReadInfo joined_info;
+  const Soup joined_soup = read_soup(joined, &joined_info);
+  EXPECT_EQ(joined_info.strip_joins + joined_info.declared_faces, 7u);  // 9 indices, 7 triangles
+  EXPECT_EQ(joined_info.faces_set_aside, 0u);
+  for (std::size_t f = 0; f < joined_soup.num_faces(); ++f) {
+    const PolygonView p = joined_soup.polygon(f);
+    EXPECT_TRUE(p[0] != p[1] && p[1] != p[2] && p[0] != p[2]) << "face " << f;
+  }
+  // Repair finds nothing set aside.
   const RepairResult result = repair(soup);
   EXPECT_EQ(result.mesh.soup.num_faces(), 3u);
-  EXPECT_EQ(result.report.faces_set_aside, 1u);
+  EXPECT_EQ(result.report.faces_set_aside, 0u);
 }
 
 TEST_F(PlyStlIo, ply_edge_elements_are_counted_as_dangling_edges) {

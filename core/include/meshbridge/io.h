@@ -43,6 +43,10 @@ struct ReadInfo {
   std::size_t dangling_edges = 0;
   //! OBJ 'p' points (each index of a record counts one). Not part of the soup.
   std::size_t lone_points = 0;
+  //! PLY `tristrips`: triangles of a strip that repeat a vertex. Strips link their runs with such
+  //! triangles (a b c c d ...); they are the encoding, not faces: not in the soup, not in
+  //! `declared_faces`, and not a change (changed_anything() ignores them).
+  std::size_t strip_joins = 0;
   //! Declared faces OpenMesh's reader never passed on (only while a format still goes through
   //! OpenMesh; MeshBridge's own readers keep every record and leave this 0).
   std::size_t faces_dropped_by_reader = 0;

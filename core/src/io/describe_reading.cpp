@@ -32,6 +32,11 @@ std::string describe_reading(const ReadInfo& info) {
     if (info.faces_dropped_by_reader > 0)
       text += ", " + std::to_string(info.faces_dropped_by_reader) + " dropped by the reader";
   }
+  if (info.strip_joins > 0) {
+    text += " (" +
+            counted(info.strip_joins, "degenerate strip triangle", "degenerate strip triangles") +
+            " linking runs skipped)";
+  }
   if (info.dangling_edges + info.lone_points > 0) {
     text += "; ";
     if (info.dangling_edges > 0)

@@ -437,7 +437,8 @@ class PlyReader {
 
   //! Strip record i from corners_: -1 restarts; triangle k of a run is (a, b, c) for even k and
   //! (b, a, c) for odd k, so all share the strip's orientation (as MeshLab reads them).
-  //! Degenerate triangles (strips link runs with them) are appended and set aside later.
+  //! Triangles that repeat a vertex only link runs (a b c c d ...): counted as strip joins, not
+  //! faces (MeshLab drops them too).
   void add_strip(std::uint64_t i) {
     std::size_t run = 0;
     Index a = 0, b = 0;
@@ -447,7 +448,9 @@ class PlyReader {
         continue;
       }
       const Index v = vertex_index("tristrips", i, c);
-      if (run >= 2) {
+      if (run >= 2 && (a == b || b == v || a == v)) {
+        ++info_.strip_joins;
+      } else if (run >= 2) {
         ++info_.declared_faces;
         const bool even = run % 2 == 0;
         soup_.add_polygon({even ? a : b, even ? b : a, v});
