@@ -498,4 +498,10 @@ ClosedGaps close_gaps(const Soup& soup, const CloseGapsOptions& options) {
   return result;
 }
 
+CloseGapsReport preview_close_gaps(const Soup& soup, const CloseGapsOptions& options) {
+  ClosedGaps result;
+  detail::close_gaps_if_any(soup, options, result);
+  return result.report;
+}
+
 }  // namespace meshbridge

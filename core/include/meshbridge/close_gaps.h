@@ -73,4 +73,10 @@ double default_weld_tolerance(const Soup& soup);
 //! std::invalid_argument if `options.tolerance` is NaN or +infinite
 ClosedGaps close_gaps(const Soup& soup, const CloseGapsOptions& options = {});
 
+//! What close_gaps(soup, options) would do: its report, without the copy of the soup (and the
+//! identity origins) that close_gaps() returns when nothing changes. A closed mesh, which has no
+//! boundary vertex, costs one pass over the corners. `meshbridge check` prints it.
+//! \pre and \throw as close_gaps()
+CloseGapsReport preview_close_gaps(const Soup& soup, const CloseGapsOptions& options = {});
+
 }  // namespace meshbridge
