@@ -2,6 +2,7 @@
 // Gap closing before pairing: welding rounding-level copies and splitting T-junction cracks.
 
 #include "meshbridge/close_gaps.h"
+#include "meshbridge/detect_defects.h"
 #include "meshbridge/repair.h"
 #include "meshbridge/validate.h"
 
@@ -225,6 +226,14 @@ TEST(CloseGaps, preview_reports_what_close_gaps_would_do) {
     EXPECT_EQ(preview.welds_refused, done.welds_refused);
     EXPECT_EQ(preview.t_junctions_closed, done.t_junctions_closed);
     EXPECT_EQ(preview.sides_split, done.sides_split);
+    const DefectReport detected = detect_defects(soup);
+    const CloseGapsReport told = preview_close_gaps(soup, options, &detected);
+    EXPECT_EQ(told.tolerance, done.tolerance);
+    EXPECT_EQ(told.vertices_welded, done.vertices_welded);
+    EXPECT_EQ(told.largest_weld_distance, done.largest_weld_distance);
+    EXPECT_EQ(told.welds_refused, done.welds_refused);
+    EXPECT_EQ(told.t_junctions_closed, done.t_junctions_closed);
+    EXPECT_EQ(told.sides_split, done.sides_split);
   };
   CloseGapsOptions off;
   off.tolerance = 0;

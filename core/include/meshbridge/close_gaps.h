@@ -4,6 +4,7 @@
 //! Closing rounding-level cracks before pairing: welding near vertices and splitting boundary
 //! sides at T-junctions (DESIGN 8a, "Gaps").
 
+#include "meshbridge/defect_report.h"
 #include "meshbridge/soup.h"
 
 #include <cstddef>
@@ -75,8 +76,11 @@ ClosedGaps close_gaps(const Soup& soup, const CloseGapsOptions& options = {});
 
 //! What close_gaps(soup, options) would do: its report, without the copy of the soup (and the
 //! identity origins) that close_gaps() returns when nothing changes. A closed mesh, which has no
-//! boundary vertex, costs one pass over the corners. `meshbridge check` prints it.
-//! \pre and \throw as close_gaps()
-CloseGapsReport preview_close_gaps(const Soup& soup, const CloseGapsOptions& options = {});
+//! boundary vertex, costs one pass over the corners; none when `detected` (optional) is
+//! detect_defects(soup) and lists no boundary edge and no degenerate face. `meshbridge check`
+//! prints it. \pre as close_gaps(); `detected`, when given, is detect_defects(soup)
+//! \throw as close_gaps()
+CloseGapsReport preview_close_gaps(const Soup& soup, const CloseGapsOptions& options = {},
+                                   const DefectReport* detected = nullptr);
 
 }  // namespace meshbridge
