@@ -41,7 +41,7 @@ int run_check(const CheckArguments& arguments) {
     progress.stage(Stage::detect, 0);
     report = detect_defects(soup);
     if (!arguments.json)  // what repair's gap closing would do (the report is of the file as read)
-      gaps = close_gaps(soup, weld).report;
+      gaps = preview_close_gaps(soup, weld, &report);
   }
   warn_about_reader(path, info);
   if (arguments.json) {

@@ -79,9 +79,11 @@ int run_repair(RepairArguments& arguments) {
                              repair_plan());
     progress.stage(Stage::read, 0);
     MeshAttributes attributes;
-    const Soup soup = read_soup(in, &info, &attributes);
+    Soup soup = read_soup(in, &info, &attributes);
     options.progress = progress.callback();
     result = repair(soup, options);
+    if (arguments.before_after.empty())
+      soup = Soup();  // only the picture reads the input again: freed before the output is written
     progress.stage(Stage::write, 0);
     apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
                    separate_summary);

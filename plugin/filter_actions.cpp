@@ -162,7 +162,7 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
   DetectOutcome out;
   CMeshSoup soup = soup_from_cmesh(mesh);
   out.report = detect_defects(soup.soup);
-  out.gaps = close_gaps(soup.soup, options.close_gaps).report;
+  out.gaps = preview_close_gaps(soup.soup, options.close_gaps);
 
   // Nothing has changed so far; from here on only the selection, face colours and a new layer.
   if (options.colour_faces)

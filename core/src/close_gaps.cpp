@@ -500,4 +500,16 @@ ClosedGaps close_gaps(const Soup& soup, const CloseGapsOptions& options) {
   return result;
 }
 
+CloseGapsReport preview_close_gaps(const Soup& soup, const CloseGapsOptions& options,
+                                   const DefectReport* detected) {
+  ClosedGaps result;
+  // No degenerate polygon: detection grouped the soup's own sides, so its boundary edges are the
+  // boundary sides gap closing would look for.
+  const std::vector<Index> none;
+  const bool closed =
+      detected != nullptr && detected->degenerate_faces.empty() && detected->boundary_edges.empty();
+  detail::close_gaps_if_any(soup, options, result, closed ? &none : nullptr);
+  return result.report;
+}
+
 }  // namespace meshbridge

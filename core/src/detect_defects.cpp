@@ -101,46 +101,64 @@ std::vector<Index> duplicate_polygons(const Soup& soup) {
   return duplicates;
 }
 
-DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped) {
-  const std::vector<Index>& corner_face = grouped.corner_face;
-  const EdgeBridges& bridges = grouped.bridges;
+namespace {
+
+// Detection on `working`, whose sides are grouped into `corner_face` and `bridges`. With `owned`
+// (== &bridges) the grouping is consumed as it is read: its corner_edge array becomes the manifold
+// pairing (every side's entry is read through its edge before it is overwritten) and the bridges
+// are freed once the edges are scanned, so the fans and the rest allocate into their room.
+DefectReport detect_grouped(const WorkingSoup& working, const std::vector<Index>& corner_face,
+                            const EdgeBridges& bridges, EdgeBridges* owned) {
   const Soup& input = working.input();
   const Soup& soup = working.soup();
+  const auto& cv = soup.corner_vertices;
+  const std::size_t num_edges = bridges.num_edges();
   DefectReport report;
   report.num_vertices = input.num_vertices();
   report.num_faces = input.num_faces();
-  report.num_edges = bridges.num_edges();
+  report.num_edges = num_edges;
   report.degenerate_faces = working.degenerate_faces();
   report.excluded_faces = working.excluded_faces();
 
   // Edges: singular, boundary, inconsistent; the manifold pairing for fans and orientation.
-  std::vector<Index> manifold_mate(soup.num_corners(), kNoIndex);
+  std::vector<Index> manifold_mate;
+  if (owned != nullptr)
+    manifold_mate = std::move(owned->corner_edge);  // #C, overwritten below side by side
+  else
+    manifold_mate.resize(soup.num_corners());
   std::vector<char> on_singular_edge(soup.num_vertices(), 0);
   UnionFind boundary_chains(soup.num_vertices());
   UnionFind components(soup.num_faces());
-  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+  for (std::size_t e = 0; e < num_edges; ++e) {
     const Index first = bridges.begin[e];
     const Index k = bridges.num_contenders(e);
     const VertexPair pair{bridges.edge_v0[e], bridges.edge_v1[e]};
     for (Index i = first + 1; i < first + k; ++i) {
       components.unite(corner_face[bridges.contenders[first]], corner_face[bridges.contenders[i]]);
     }
-    if (k == 1) {
-      report.boundary_edges.push_back(pair);
-      boundary_chains.unite(pair.v0, pair.v1);
-    } else if (k == 2) {
+    if (k == 2) {
       const Index a = bridges.contenders[first], b = bridges.contenders[first + 1];
       manifold_mate[a] = b;
       manifold_mate[b] = a;
-      if (runs_along(soup, bridges, a) == runs_along(soup, bridges, b)) {
+      // Both run from the edge's smaller vertex to its larger one, or both the other way.
+      if ((cv[a] == pair.v0) == (cv[b] == pair.v0)) {
         report.inconsistent_edges.push_back(pair);
       }
+      continue;
+    }
+    for (Index i = first; i < first + k; ++i)
+      manifold_mate[bridges.contenders[i]] = kNoIndex;
+    if (k == 1) {
+      report.boundary_edges.push_back(pair);
+      boundary_chains.unite(pair.v0, pair.v1);
     } else {
       report.singular_edges.push_back({pair, k});
       on_singular_edge[pair.v0] = 1;
       on_singular_edge[pair.v1] = 1;
     }
   }
+  if (owned != nullptr)
+    *owned = EdgeBridges();  // not read again: freed before the fans allocate
   {
     std::vector<char> counted(soup.num_vertices(), 0);
     for (const VertexPair& p : report.boundary_edges) {
@@ -155,11 +173,13 @@ DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped) {
   }
 
   // Vertices: isolated, on singular edges, pinched (more than one fan through 2-sided edges).
-  const std::vector<Index> vertex_origin =
-      split_fans(soup, corner_face, manifold_mate).vertex_origin;
   std::vector<char> pinched(soup.num_vertices(), 0);
-  for (std::size_t i = soup.num_vertices(); i < vertex_origin.size(); ++i) {
-    pinched[vertex_origin[i]] = 1;
+  {
+    const std::vector<Index> vertex_origin =
+        split_fans(soup, corner_face, manifold_mate).vertex_origin;
+    for (std::size_t i = soup.num_vertices(); i < vertex_origin.size(); ++i) {
+      pinched[vertex_origin[i]] = 1;
+    }
   }
   std::vector<char> used(soup.num_vertices(), 0);
   for (Index v : soup.corner_vertices)
@@ -177,19 +197,20 @@ DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped) {
   }
 
   // Orientability through 2-sided edges.
-  std::vector<char> flipped;
   if (!report.inconsistent_edges.empty()) {
+    std::vector<char> flipped;
     report.num_nonorientable_components =
         orient_consistently(soup, corner_face, false, manifold_mate, flipped)
             .nonorientable_components;
   }
+  manifold_mate = std::vector<Index>();  // freed before the face checks allocate
 
   for (Index f = 0; f < soup.num_faces(); ++f) {
     if (components.find(f) == f)
       ++report.num_components;
   }
   report.euler_characteristic = static_cast<long long>(used_count) -
-                                static_cast<long long>(bridges.num_edges()) +
+                                static_cast<long long>(num_edges) +
                                 static_cast<long long>(soup.num_faces());
 
   // Faces, in input numbering. Zero area: |vector area|^2 <= (1e-12 * sum of squared sides)^2.
@@ -218,6 +239,16 @@ DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped) {
                       report.singular_edges.empty() && report.num_singular_vertices() == 0 &&
                       report.inconsistent_edges.empty() && report.num_nonorientable_components == 0;
   return report;
+}
+
+}  // namespace
+
+DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped) {
+  return detect_grouped(working, grouped.corner_face, grouped.bridges, nullptr);
+}
+
+DefectReport detect(const WorkingSoup& working, GroupedSides&& grouped) {
+  return detect_grouped(working, grouped.corner_face, grouped.bridges, &grouped.bridges);
 }
 
 }  // namespace detail

@@ -21,25 +21,27 @@ EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face)
   const auto& cv = soup.corner_vertices;
 
   // Counting sort of the sides by their smaller vertex; `high` keeps each side's larger vertex.
-  // Three arrays of one Index per side in all: `sorted` becomes the contenders and `high` is
-  // overwritten with each side's edge, becoming corner_edge (no copies).
+  // Two arrays of one Index per side in all: `sorted` becomes the contenders and `high` is
+  // overwritten with each side's edge, becoming corner_edge (no copies). The smaller vertex is
+  // looked up again in the second pass rather than kept (one array of fresh memory less).
   std::vector<Index> high(num_corners);
   std::vector<Index> bucket_begin(num_vertices + 1, 0);
   std::vector<Index> sorted(num_corners);
   {
-    std::vector<Index> low(num_corners);
     for (std::size_t c = 0; c < num_corners; ++c) {
       const Index a = cv[c];
       const Index b = cv[soup.next_corner(static_cast<Index>(c), corner_face[c])];
-      low[c] = std::min(a, b);
       high[c] = std::max(a, b);
-      ++bucket_begin[low[c] + 1];
+      ++bucket_begin[std::min(a, b) + 1];
     }
     for (std::size_t v = 0; v < num_vertices; ++v)
       bucket_begin[v + 1] += bucket_begin[v];
     std::vector<Index> fill(bucket_begin.begin(), bucket_begin.end() - 1);
-    for (std::size_t c = 0; c < num_corners; ++c)
-      sorted[fill[low[c]]++] = static_cast<Index>(c);
+    for (std::size_t c = 0; c < num_corners; ++c) {
+      const Index a = cv[c];
+      const Index b = cv[soup.next_corner(static_cast<Index>(c), corner_face[c])];
+      sorted[fill[std::min(a, b)]++] = static_cast<Index>(c);
+    }
   }
 
   EdgeBridges bridges;

@@ -148,6 +148,7 @@ RepairResult repair(const Soup& input, const RepairOptions& options) {
   pipeline_options.orient = options.orient;
   pipeline_options.cut_nonorientable = options.cut_nonorientable;
   pipeline_options.stitch = options.stitch;
+  pipeline_options.keep_state = false;  // only the mesh and the counts are read below
   detail::PipelineResult pipeline =
       detail::run_pipeline(working, std::move(grouped), pipeline_options);
 

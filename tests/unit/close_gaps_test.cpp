@@ -2,6 +2,7 @@
 // Gap closing before pairing: welding rounding-level copies and splitting T-junction cracks.
 
 #include "meshbridge/close_gaps.h"
+#include "meshbridge/detect_defects.h"
 #include "meshbridge/repair.h"
 #include "meshbridge/validate.h"
 
@@ -232,6 +233,41 @@ TEST(CloseGaps, closing_twice_changes_nothing_more) {
   EXPECT_EQ(twice.soup.corner_vertices, once.soup.corner_vertices);
   const ClosedGaps box_once = close_gaps(box_with_t_junction());
   EXPECT_FALSE(close_gaps(box_once.soup).report.changed());
+}
+
+// preview_close_gaps() is close_gaps()'s report, field by field, whether gaps close or not.
+TEST(CloseGaps, preview_reports_what_close_gaps_would_do) {
+  const auto expect_same = [](const Soup& soup, const CloseGapsOptions& options) {
+    const CloseGapsReport preview = preview_close_gaps(soup, options);
+    const CloseGapsReport done = close_gaps(soup, options).report;
+    EXPECT_EQ(preview.tolerance, done.tolerance);
+    EXPECT_EQ(preview.vertices_welded, done.vertices_welded);
+    EXPECT_EQ(preview.largest_weld_distance, done.largest_weld_distance);
+    EXPECT_EQ(preview.welds_refused, done.welds_refused);
+    EXPECT_EQ(preview.t_junctions_closed, done.t_junctions_closed);
+    EXPECT_EQ(preview.sides_split, done.sides_split);
+    const DefectReport detected = detect_defects(soup);
+    const CloseGapsReport told = preview_close_gaps(soup, options, &detected);
+    EXPECT_EQ(told.tolerance, done.tolerance);
+    EXPECT_EQ(told.vertices_welded, done.vertices_welded);
+    EXPECT_EQ(told.largest_weld_distance, done.largest_weld_distance);
+    EXPECT_EQ(told.welds_refused, done.welds_refused);
+    EXPECT_EQ(told.t_junctions_closed, done.t_junctions_closed);
+    EXPECT_EQ(told.sides_split, done.sides_split);
+  };
+  CloseGapsOptions off;
+  off.tolerance = 0;
+  for (const CloseGapsOptions& options : {CloseGapsOptions(), off}) {
+    expect_same(cube_written_twice(float_ulp_at_110()), options);  // welds
+    expect_same(cube_written_twice(1e-3), options);                // crack stays open
+    expect_same(box_with_t_junction(), options);                   // T-junctions
+    expect_same(close_gaps(box_with_t_junction()).soup, options);  // closed: nothing to do
+    expect_same(Soup(), options);
+  }
+  EXPECT_EQ(preview_close_gaps(cube_written_twice(float_ulp_at_110())).vertices_welded, 6u);
+  CloseGapsOptions nan;
+  nan.tolerance = std::nan("");
+  EXPECT_THROW(preview_close_gaps(test_support::triangle(), nan), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/models/canonical_models.h"
+#include "meshbridge/repair.h"
+#include "meshbridge/report_json.h"
 
 #include "test_support.h"
 
@@ -128,4 +130,30 @@ TEST(DetectDefects, text_carries_the_counts) {
   const std::string text = to_text(r);
   EXPECT_NE(text.find("singular edges: 1  [3-7 (4 faces)]"), std::string::npos);
   EXPECT_NE(text.find("watertight no"), std::string::npos);
+}
+
+// detect_defects() consumes its grouping of the sides as it goes (its side-to-edge array becomes
+// the manifold pairing, the bridges are freed early); repair() detects the input on a grouping it
+// keeps for the pipeline. Both must report the same elements.
+TEST(DetectDefects, consuming_the_grouping_reports_what_repair_detects) {
+  ReportJsonOptions elements;
+  elements.elements = true;
+  Soup degenerate;
+  for (int i = 0; i < 6; ++i)
+    degenerate.add_vertex({double(i % 3), double(i / 3), 0});
+  degenerate.add_polygon({0, 1, 4});
+  degenerate.add_polygon({4, 1, 0});
+  degenerate.add_polygon({0, 0, 4});
+  degenerate.add_polygon({1, 2, 5, 5});
+  std::vector<Soup> soups = {degenerate};
+  for (const ExpectedReport& x : kExpected) {
+    soups.push_back(x.make());
+    soups.push_back(test_support::shuffled(x.make(), 7));
+  }
+  for (const Soup& soup : soups) {
+    const DefectReport consumed = detect_defects(soup);
+    const DefectReport kept = repair(soup).report.before;
+    EXPECT_EQ(check_report_json("x", consumed, nullptr, elements),
+              check_report_json("x", kept, nullptr, elements));
+  }
 }

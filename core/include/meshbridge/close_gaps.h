@@ -4,6 +4,7 @@
 //! Closing rounding-level cracks before pairing: welding near vertices and splitting boundary
 //! sides at T-junctions (DESIGN 8a, "Gaps").
 
+#include "meshbridge/defect_report.h"
 #include "meshbridge/soup.h"
 
 #include <cstddef>
@@ -72,5 +73,14 @@ double default_weld_tolerance(const Soup& soup);
 //! boundary). \pre `soup` passes validate_soup(); `options.tolerance` is finite or negative \throw
 //! std::invalid_argument if `options.tolerance` is NaN or +infinite
 ClosedGaps close_gaps(const Soup& soup, const CloseGapsOptions& options = {});
+
+//! What close_gaps(soup, options) would do: its report, without the copy of the soup (and the
+//! identity origins) that close_gaps() returns when nothing changes. A closed mesh, which has no
+//! boundary vertex, costs one pass over the corners; none when `detected` (optional) is
+//! detect_defects(soup) and lists no boundary edge and no degenerate face. `meshbridge check`
+//! prints it. \pre as close_gaps(); `detected`, when given, is detect_defects(soup)
+//! \throw as close_gaps()
+CloseGapsReport preview_close_gaps(const Soup& soup, const CloseGapsOptions& options = {},
+                                   const DefectReport* detected = nullptr);
 
 }  // namespace meshbridge

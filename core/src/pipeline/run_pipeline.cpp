@@ -80,8 +80,16 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
   counts.vertices_split = split.vertex_origin.size() - soup.num_vertices();
   for (char f : pairing.flipped)
     counts.faces_flipped += f;
+  if (!options.keep_state) {
+    grouped = GroupedSides();
+    pairing.mate = std::vector<Index>();
+    pairing.stitched = std::vector<char>();
+  }
   result.mesh = emit_mesh(working, std::move(split), pairing.flipped);
-  result.grouped = std::move(grouped);
+  if (options.keep_state)
+    result.grouped = std::move(grouped);
+  else
+    pairing.flipped = std::vector<char>();
   return result;
 }
 

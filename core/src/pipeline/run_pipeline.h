@@ -20,6 +20,10 @@ struct PipelineOptions {
   bool orient = true;
   bool cut_nonorientable = false;
   bool stitch = true;
+  //! Keep the grouping and the pairing in the result (PipelineResult::grouped, ::pairing; default
+  //! true). false frees them before the output mesh is emitted, so the emitted arrays take their
+  //! room instead of adding to it (repair() reads only the mesh and the counts).
+  bool keep_state = true;
 };
 
 //! What the pipeline did, counted in sides (polygon sides) or faces.
@@ -35,9 +39,11 @@ struct PipelineCounts {
 };
 
 struct PipelineResult {
-  GroupedSides grouped;  //!< over the working soup
-  SidePairing pairing;   //!< final pairing and flips of the working soup's sides and faces
-  IndexedMesh mesh;      //!< origins refer to the *input* soup
+  GroupedSides grouped;  //!< over the working soup (empty unless PipelineOptions::keep_state)
+  //! Final pairing and flips of the working soup's sides and faces (empty unless
+  //! PipelineOptions::keep_state)
+  SidePairing pairing;
+  IndexedMesh mesh;  //!< origins refer to the *input* soup
   PipelineCounts counts;
 };
 
