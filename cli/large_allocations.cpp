@@ -14,7 +14,7 @@
 //
 // Only a hint: where the kernel refuses (THP "never", or not available) memory works the same.
 // The library itself does not replace operator new; embedding applications choose their own
-// allocator. Blocks come from malloc or aligned_alloc and are released with free (the default
+// allocator. Blocks come from malloc or posix_memalign and are released with free (the default
 // operator delete), so nothing else changes.
 
 #include <sys/mman.h>
@@ -31,8 +31,12 @@ constexpr std::size_t kHugePage = std::size_t(2) << 20;
 void* allocate(std::size_t bytes) {
   if (bytes < kHugePage)
     return std::malloc(bytes == 0 ? 1 : bytes);
-  // Aligned to 2 MiB, so that no part of the block's start falls on small pages.
-  void* block = std::aligned_alloc(kHugePage, bytes);
+  // Aligned to 2 MiB, so that no part of the block's start falls on small pages. posix_memalign,
+  // not aligned_alloc: C11's aligned_alloc wants the size a multiple of the alignment (and
+  // AddressSanitizer enforces that).
+  void* block = nullptr;
+  if (::posix_memalign(&block, kHugePage, bytes) != 0)
+    block = nullptr;
   if (block != nullptr) {
     const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(block);
     const std::uintptr_t last = (begin + bytes) & ~(kHugePage - 1);
