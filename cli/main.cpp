@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -63,6 +64,17 @@ void wrap_descriptions(CLI::App& app) {
   }
 }
 
+//! MESHBRIDGE_THREADS as the readers take it: unset, `auto` or a whole number >= 1. The core
+//! reads anything else as 1; the tool says so instead of ignoring a typo.
+bool threads_variable_is_valid() {
+  const char* text = std::getenv("MESHBRIDGE_THREADS");
+  if (text == nullptr || std::string(text) == "auto")
+    return true;
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  return end != text && *end == '\0' && value >= 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -89,6 +101,11 @@ int main(int argc, char** argv) {
 
   if (argc < 2) {
     std::cerr << app.help();
+    return kError;
+  }
+  if (!threads_variable_is_valid()) {
+    std::cerr << "meshbridge: error: MESHBRIDGE_THREADS=" << std::getenv("MESHBRIDGE_THREADS")
+              << ": expected a whole number >= 1 or 'auto'\n";
     return kError;
   }
   if (argv[1][0] != '-') {

@@ -14,7 +14,8 @@
 # on a 3D checkerboard of 1.05M triangles, a clean torus of 1.05M and the 5M checkerboard, each
 # as .obj .off .ply .stl. Every row runs ROUNDS times (default 2) interleaved with the others;
 # the table keeps the best wall time, the best CPU time (user + sys) and the largest peak RSS.
-# meshbridge check/repair also run pinned to one core (taskset -c 0): the 1-core figures.
+# meshbridge check/repair also run pinned to one core (taskset -c 0): the 1-core figures; and
+# parse, check and repair with MESHBRIDGE_THREADS=2 (the readers' two-part reading): 2 threads.
 # Ratios are to OpenMesh read (check, parse) and OpenMesh read + write (repair, meshlabserver).
 # Also prints the in-process split (meshbridge-io-bench split: parse vs floor, detect, repair,
 # write; best of 3).
@@ -87,12 +88,15 @@ for model in $models; do
     for ((r = 0; r < rounds; ++r)); do
       run "$model.$fmt floor" "$iobench" floor "$f"
       run "$model.$fmt parse" "$iobench" parse "$f"
+      run "$model.$fmt parse_2threads" env MESHBRIDGE_THREADS=2 "$iobench" parse "$f"
       run "$model.$fmt openmesh_read" "$iobench" openmesh-read "$f"
       run "$model.$fmt check" "$meshbridge" check "$f"
       run "$model.$fmt check_1core" taskset -c 0 "$meshbridge" check "$f"
+      run "$model.$fmt check_2threads" env MESHBRIDGE_THREADS=2 "$meshbridge" check "$f"
       run "$model.$fmt openmesh_rw" "$iobench" openmesh-readwrite "$f" "$tmp/om.$fmt"
       run "$model.$fmt repair" "$meshbridge" repair "$f" "$tmp/mb.$fmt"
       run "$model.$fmt repair_1core" taskset -c 0 "$meshbridge" repair "$f" "$tmp/mb.$fmt"
+      run "$model.$fmt repair_2threads" env MESHBRIDGE_THREADS=2 "$meshbridge" repair "$f" "$tmp/mb.$fmt"
       if [ "$have_meshlab" = 1 ] && [ "$model" != checkerboard_5m ]; then
         run_meshlab "$model.$fmt meshlab" "$f" "$tmp/ml.$fmt"
       fi
@@ -109,7 +113,8 @@ load="$(cut -d' ' -f1-3 /proc/loadavg)"
   echo "Machine: nproc $(nproc), $(awk '/MemTotal/ {printf "%.1f GiB", $2 / 1048576}' /proc/meminfo);" \
     "load average at the end $load (other jobs share the machine: compare the ratios, which are" \
     "measured side by side, not the absolute times). Each row: best of $rounds interleaved" \
-    "runs; CPU = user + sys; peak = largest resident set. *1 core* = pinned with taskset -c 0." \
+    "runs; CPU = user + sys; peak = largest resident set. *1 core* = pinned with taskset -c 0;" \
+    "*MESHBRIDGE_THREADS=2* = binary STL, binary PLY and OBJ read in two parts side by side." \
     "meshlabserver: MeshLab 2020.09 under xvfb-run (X start not timed; not run on 5M)."
   echo
   echo "| file | step | wall s | CPU s | peak MiB | wall / OpenMesh | CPU / OpenMesh | peak / OpenMesh |"
@@ -123,12 +128,17 @@ load="$(cut -d' ' -f1-3 /proc/loadavg)"
       if (!(key in seen)) { seen[key] = 1; order[++n] = key }
     }
     END {
-      split("floor parse openmesh_read check check_1core openmesh_rw repair repair_1core meshlab", steps, " ")
+      split("floor parse parse_2threads openmesh_read check check_1core check_2threads openmesh_rw repair repair_1core repair_2threads meshlab", steps, " ")
       names["floor"] = "mmap + from_chars floor"; names["parse"] = "MeshBridge parse (read_soup)"
       names["openmesh_read"] = "OpenMesh read_mesh"; names["check"] = "meshbridge check"
       names["check_1core"] = "meshbridge check, 1 core"; names["openmesh_rw"] = "OpenMesh read + write"
       names["repair"] = "meshbridge repair IN OUT"; names["repair_1core"] = "meshbridge repair, 1 core"
       names["meshlab"] = "meshlabserver load + save"
+      names["parse_2threads"] = "MeshBridge parse, MESHBRIDGE_THREADS=2"
+      names["check_2threads"] = "meshbridge check, MESHBRIDGE_THREADS=2"
+      names["repair_2threads"] = "meshbridge repair, MESHBRIDGE_THREADS=2"
+      base["parse_2threads"] = "openmesh_read"; base["check_2threads"] = "openmesh_read"
+      base["repair_2threads"] = "openmesh_rw"
       base["floor"] = "openmesh_read"; base["parse"] = "openmesh_read"; base["openmesh_read"] = "openmesh_read"
       base["check"] = "openmesh_read"; base["check_1core"] = "openmesh_read"
       base["openmesh_rw"] = "openmesh_rw"; base["repair"] = "openmesh_rw"
@@ -136,7 +146,7 @@ load="$(cut -d' ' -f1-3 /proc/loadavg)"
       for (i = 1; i <= n; ++i) { split(order[i], kf, " "); if (!(kf[1] in files)) { files[kf[1]] = 1; forder[++nf] = kf[1] } }
       for (j = 1; j <= nf; ++j) {
         f = forder[j]
-        for (s = 1; s <= 9; ++s) {
+        for (s = 1; s <= 12; ++s) {
           st = steps[s]; key = f " " st; b = f " " base[st]
           if (!(key in wall)) continue
           rw = (b in wall) && wall[b] > 0 ? sprintf("%.2f", wall[key] / wall[b]) : "-"

@@ -65,6 +65,9 @@ check_exit_codes)
   expect_in "$work/err" "meshbridge check: error: FILE is required"
   expect_exit 2 "$mb" frobnicate
   expect_exit 0 "$mb" --help
+  MESHBRIDGE_THREADS=abc expect_exit 2 "$mb" check "$models/icosphere.obj"
+  expect_in "$work/err" "meshbridge: error: MESHBRIDGE_THREADS=abc: expected a whole number >= 1 or 'auto'"
+  MESHBRIDGE_THREADS=2 expect_exit 0 "$mb" check "$models/icosphere.obj"
   # An STL facet with one point three times is set aside; the point stays as an isolated vertex
   # of an indexed output, which is listed, not a defect: check of the repaired file exits 0.
   {
