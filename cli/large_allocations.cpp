@@ -17,6 +17,21 @@
 // allocator. Blocks come from malloc or posix_memalign and are released with free (the default
 // operator delete), so nothing else changes.
 
+// Not under AddressSanitizer: its operator delete checks that each block came from its own
+// operator new (alloc-dealloc-mismatch), and the hint is only about speed.
+#if defined(__SANITIZE_ADDRESS__)
+#define MESHBRIDGE_REPLACE_OPERATOR_NEW 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define MESHBRIDGE_REPLACE_OPERATOR_NEW 0
+#endif
+#endif
+#ifndef MESHBRIDGE_REPLACE_OPERATOR_NEW
+#define MESHBRIDGE_REPLACE_OPERATOR_NEW 1
+#endif
+
+#if MESHBRIDGE_REPLACE_OPERATOR_NEW
+
 #include <sys/mman.h>
 
 #include <cstddef>
@@ -71,3 +86,5 @@ void* operator new(std::size_t bytes, const std::nothrow_t&) noexcept {
 void* operator new[](std::size_t bytes, const std::nothrow_t&) noexcept {
   return allocate(bytes);
 }
+
+#endif  // MESHBRIDGE_REPLACE_OPERATOR_NEW
