@@ -50,6 +50,23 @@ void expect_same_as_reference(const Soup& soup, const OpenMeshRepair& got) {
     EXPECT_TRUE(got.mesh.is_manifold(v));
 }
 
+// `part` appended to `soup`: its first `faces` polygons (all by default), scaled by `scale` about
+// the origin, moved by `shift` along x, reversed if `inward`.
+void append_part(Soup& soup, const Soup& part, double scale, double shift, bool inward,
+                 std::size_t faces = std::size_t(-1)) {
+  const Index base = static_cast<Index>(soup.num_vertices());
+  for (const Point& p : part.positions)
+    soup.add_vertex(p * scale + Point(shift, 0, 0));
+  for (std::size_t f = 0; f < part.num_faces() && f < faces; ++f) {
+    std::vector<Index> polygon;
+    for (Index v : part.polygon(f))
+      polygon.push_back(base + v);
+    if (inward)
+      std::reverse(polygon.begin(), polygon.end());
+    soup.add_polygon(polygon);
+  }
+}
+
 }  // namespace
 
 TEST(RepairToOpenMesh, clean_input_takes_the_fast_path_and_matches_repair) {
@@ -118,53 +135,19 @@ TEST(RepairToOpenMesh, pinched_solids_never_take_the_fast_path_in_any_face_order
 TEST(RepairToOpenMesh, one_inward_component_among_others_is_flipped) {
   const Soup sphere = models::icosphere(1);
   Soup soup;
-  const auto append = [&](const Soup& part, double shift, bool inward, std::size_t faces) {
-    const Index base = static_cast<Index>(soup.num_vertices());
-    for (const Point& p : part.positions)
-      soup.add_vertex(p + Point(shift, 0, 0));
-    for (std::size_t f = 0; f < faces; ++f) {
-      std::vector<Index> polygon;
-      for (Index v : part.polygon(f))
-        polygon.push_back(base + v);
-      if (inward)
-        std::reverse(polygon.begin(), polygon.end());
-      soup.add_polygon(polygon);
-    }
-  };
-  append(sphere, 0, false, sphere.num_faces());
-  append(sphere, 5, true, sphere.num_faces());
-  append(sphere, 10, true, 20);  // open: its orientation is kept
+  append_part(soup, sphere, 1.0, 0, false);
+  append_part(soup, sphere, 1.0, 5, true);
+  append_part(soup, sphere, 1.0, 10, true, 20);  // open: its orientation is kept
   const OpenMeshRepair r = repair_to_openmesh(soup, lean());
   EXPECT_FALSE(r.fast_path);
   EXPECT_EQ(r.report.faces_flipped, 80u);
   expect_same_as_reference(soup, r);
 
   Soup outward;  // the closed spheres both outward are clean
-  std::swap(soup, outward);
-  append(sphere, 0, false, sphere.num_faces());
-  append(sphere, 5, false, sphere.num_faces());
-  EXPECT_TRUE(repair_to_openmesh(soup, lean()).fast_path);
+  append_part(outward, sphere, 1.0, 0, false);
+  append_part(outward, sphere, 1.0, 5, false);
+  EXPECT_TRUE(repair_to_openmesh(outward, lean()).fast_path);
 }
-
-namespace {
-
-// `part` appended to `soup`, scaled by `scale` about the origin, moved by `shift` along x,
-// reversed if `inward`.
-void append_part(Soup& soup, const Soup& part, double scale, double shift, bool inward) {
-  const Index base = static_cast<Index>(soup.num_vertices());
-  for (const Point& p : part.positions)
-    soup.add_vertex(p * scale + Point(shift, 0, 0));
-  for (std::size_t f = 0; f < part.num_faces(); ++f) {
-    std::vector<Index> polygon;
-    for (Index v : part.polygon(f))
-      polygon.push_back(base + v);
-    if (inward)
-      std::reverse(polygon.begin(), polygon.end());
-    soup.add_polygon(polygon);
-  }
-}
-
-}  // namespace
 
 TEST(RepairToOpenMesh, a_cavity_wound_outward_is_turned_inward_as_repair_does) {
   // A hollow ball: both shells outward, so the inner one faces into the material.
