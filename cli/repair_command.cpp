@@ -19,6 +19,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -56,6 +57,9 @@ int run_repair(RepairArguments& arguments) {
   options.stitch = !arguments.no_stitch;
   options.close_gaps = parse_weld(arguments.weld);
   options.fill_holes.max_edges = parse_fill_holes(arguments.fill_holes);
+  std::error_code folder_error;
+  if (std::filesystem::is_directory(out, folder_error))
+    check_writable_file(out);  // "OUT: cannot write: it is a folder", not "unknown format"
   if (!is_supported_mesh_file(out)) {
     throw UsageError(out + ": unknown output format (expected .obj, .off, .ply, .stl or .3mf)");
   }

@@ -65,6 +65,9 @@ check_exit_codes)
   expect_in "$work/err" "meshbridge check: error: FILE is required"
   expect_exit 2 "$mb" frobnicate
   expect_exit 0 "$mb" --help
+  mkdir -p "$work/a_folder"
+  expect_exit 2 "$mb" repair "$models/icosphere.obj" "$work/a_folder"
+  expect_in "$work/err" "$work/a_folder: cannot write: it is a folder"
   MESHBRIDGE_THREADS=abc expect_exit 2 "$mb" check "$models/icosphere.obj"
   expect_in "$work/err" "meshbridge: error: MESHBRIDGE_THREADS=abc: expected a whole number >= 1 or 'auto'"
   MESHBRIDGE_THREADS=2 expect_exit 0 "$mb" check "$models/icosphere.obj"
