@@ -93,7 +93,9 @@ const std::vector<Entry> kEntries = {
     {"zero-area face", "A face whose corners lie on one line or one point (area 0)."},
     {"duplicate face",
      "A face whose vertex set an earlier face already has. --remove-duplicates drops them."},
-    {"isolated vertex", "A vertex no face uses. --remove-isolated drops them."},
+    {"isolated vertex",
+     "A vertex no face uses. Listed, not a defect (check can exit 0): repair keeps them; "
+     "--remove-isolated drops them."},
     {"detached",
      "Last resort: faces cut loose (given their own vertices) because OpenMesh could not\n"
      "represent them otherwise. Normally 0."},
