@@ -6,6 +6,7 @@
 #include "detection.h"
 #include "pipeline/fans.h"
 #include "pipeline/orientation.h"
+#include "pipeline/vertex_pairs.h"
 #include "union_find.h"
 
 #include <algorithm>
@@ -103,63 +104,66 @@ std::vector<Index> duplicate_polygons(const Soup& soup) {
 
 namespace {
 
-// Detection on `working`, whose sides are grouped into `corner_face` and `bridges`. With `owned`
-// (== &bridges) the grouping is consumed as it is read: its corner_edge array becomes the manifold
-// pairing (every side's entry is read through its edge before it is overwritten) and the bridges
-// are freed once the edges are scanned, so the fans and the rest allocate into their room.
-DefectReport detect_grouped(const WorkingSoup& working, const std::vector<Index>& corner_face,
-                            const EdgeBridges& bridges, EdgeBridges* owned) {
-  const Soup& input = working.input();
-  const Soup& soup = working.soup();
-  const auto& cv = soup.corner_vertices;
-  const std::size_t num_edges = bridges.num_edges();
-  DefectReport report;
-  report.num_vertices = input.num_vertices();
-  report.num_faces = input.num_faces();
-  report.num_edges = num_edges;
-  report.degenerate_faces = working.degenerate_faces();
-  report.excluded_faces = working.excluded_faces();
+// The per-edge part of detection, fed every vertex pair once in increasing (v0, v1) order with
+// its contenders: edges sorted into singular, boundary, inconsistent; the manifold pairing (a
+// 2-sided edge's sides are each other's mate, every other side has none); and the links that
+// join faces across singular edges, for the components.
+struct EdgeTally {
+  // `mate_storage`: any vector, reused for the manifold pairing (every entry is written).
+  EdgeTally(const WorkingSoup& working, std::vector<Index> mate_storage)
+      : cv(working.soup().corner_vertices),
+        manifold_mate(std::move(mate_storage)),
+        on_singular_edge(working.soup().num_vertices(), 0) {
+    manifold_mate.resize(working.soup().num_corners());
+    report.num_vertices = working.input().num_vertices();
+    report.num_faces = working.input().num_faces();
+    report.degenerate_faces = working.degenerate_faces();
+    report.excluded_faces = working.excluded_faces();
+  }
 
-  // Edges: singular, boundary, inconsistent; the manifold pairing for fans and orientation.
-  std::vector<Index> manifold_mate;
-  if (owned != nullptr)
-    manifold_mate = std::move(owned->corner_edge);  // #C, overwritten below side by side
-  else
-    manifold_mate.resize(soup.num_corners());
-  std::vector<char> on_singular_edge(soup.num_vertices(), 0);
-  UnionFind boundary_chains(soup.num_vertices());
-  UnionFind components(soup.num_faces());
-  for (std::size_t e = 0; e < num_edges; ++e) {
-    const Index first = bridges.begin[e];
-    const Index k = bridges.num_contenders(e);
-    const VertexPair pair{bridges.edge_v0[e], bridges.edge_v1[e]};
-    for (Index i = first + 1; i < first + k; ++i) {
-      components.unite(corner_face[bridges.contenders[first]], corner_face[bridges.contenders[i]]);
-    }
+  void operator()(VertexPair pair, const Index* sides, Index k) {
     if (k == 2) {
-      const Index a = bridges.contenders[first], b = bridges.contenders[first + 1];
+      const Index a = sides[0], b = sides[1];
       manifold_mate[a] = b;
       manifold_mate[b] = a;
       // Both run from the edge's smaller vertex to its larger one, or both the other way.
-      if ((cv[a] == pair.v0) == (cv[b] == pair.v0)) {
+      if ((cv[a] == pair.v0) == (cv[b] == pair.v0))
         report.inconsistent_edges.push_back(pair);
-      }
-      continue;
+      return;
     }
-    for (Index i = first; i < first + k; ++i)
-      manifold_mate[bridges.contenders[i]] = kNoIndex;
+    for (Index i = 0; i < k; ++i)
+      manifold_mate[sides[i]] = kNoIndex;
     if (k == 1) {
       report.boundary_edges.push_back(pair);
-      boundary_chains.unite(pair.v0, pair.v1);
-    } else {
-      report.singular_edges.push_back({pair, k});
-      on_singular_edge[pair.v0] = 1;
-      on_singular_edge[pair.v1] = 1;
+      return;
     }
+    report.singular_edges.push_back({pair, k});
+    on_singular_edge[pair.v0] = 1;
+    on_singular_edge[pair.v1] = 1;
+    for (Index i = 1; i < k; ++i)
+      singular_links.emplace_back(sides[0], sides[i]);
   }
-  if (owned != nullptr)
-    *owned = EdgeBridges();  // not read again: freed before the fans allocate
+
+  const std::vector<Index>& cv;
+  DefectReport report;
+  std::vector<Index> manifold_mate;                     // #C
+  std::vector<char> on_singular_edge;                   // #V
+  std::vector<std::pair<Index, Index>> singular_links;  // sides on one singular edge
+};
+
+// Detection on `working` after its edges went through `tally` (num_edges of them).
+DefectReport detect_tallied(const WorkingSoup& working, const CornerFaces& corner_face,
+                            EdgeTally&& tally, std::size_t num_edges) {
+  const Soup& input = working.input();
+  const Soup& soup = working.soup();
+  DefectReport& report = tally.report;
+  report.num_edges = num_edges;
+  std::vector<Index>& manifold_mate = tally.manifold_mate;
+  const std::vector<char>& on_singular_edge = tally.on_singular_edge;
   {
+    UnionFind boundary_chains(soup.num_vertices());
+    for (const VertexPair& p : report.boundary_edges)
+      boundary_chains.unite(p.v0, p.v1);
     std::vector<char> counted(soup.num_vertices(), 0);
     for (const VertexPair& p : report.boundary_edges) {
       for (Index v : {p.v0, p.v1}) {
@@ -173,14 +177,7 @@ DefectReport detect_grouped(const WorkingSoup& working, const std::vector<Index>
   }
 
   // Vertices: isolated, on singular edges, pinched (more than one fan through 2-sided edges).
-  std::vector<char> pinched(soup.num_vertices(), 0);
-  {
-    const std::vector<Index> vertex_origin =
-        split_fans(soup, corner_face, manifold_mate).vertex_origin;
-    for (std::size_t i = soup.num_vertices(); i < vertex_origin.size(); ++i) {
-      pinched[vertex_origin[i]] = 1;
-    }
-  }
+  const std::vector<char> pinched = multi_fan_vertices(soup, corner_face, manifold_mate);
   std::vector<char> used(soup.num_vertices(), 0);
   for (Index v : soup.corner_vertices)
     used[v] = 1;
@@ -196,6 +193,21 @@ DefectReport detect_grouped(const WorkingSoup& working, const std::vector<Index>
     }
   }
 
+  // Components: faces joined through any edge (the pairing before orientation cuts any of it).
+  {
+    UnionFind components(soup.num_faces());
+    for (Index c = 0; c < manifold_mate.size(); ++c) {
+      if (manifold_mate[c] != kNoIndex && manifold_mate[c] > c)
+        components.unite(corner_face[c], corner_face[manifold_mate[c]]);
+    }
+    for (const auto& [a, b] : tally.singular_links)
+      components.unite(corner_face[a], corner_face[b]);
+    for (Index f = 0; f < soup.num_faces(); ++f) {
+      if (components.find(f) == f)
+        ++report.num_components;
+    }
+  }
+
   // Orientability through 2-sided edges.
   if (!report.inconsistent_edges.empty()) {
     std::vector<char> flipped;
@@ -205,10 +217,6 @@ DefectReport detect_grouped(const WorkingSoup& working, const std::vector<Index>
   }
   manifold_mate = std::vector<Index>();  // freed before the face checks allocate
 
-  for (Index f = 0; f < soup.num_faces(); ++f) {
-    if (components.find(f) == f)
-      ++report.num_components;
-  }
   report.euler_characteristic = static_cast<long long>(used_count) -
                                 static_cast<long long>(num_edges) +
                                 static_cast<long long>(soup.num_faces());
@@ -238,17 +246,41 @@ DefectReport detect_grouped(const WorkingSoup& working, const std::vector<Index>
   report.watertight = soup.num_faces() > 0 && report.boundary_edges.empty() &&
                       report.singular_edges.empty() && report.num_singular_vertices() == 0 &&
                       report.inconsistent_edges.empty() && report.num_nonorientable_components == 0;
-  return report;
+  return std::move(report);
+}
+
+void tally_bridges(const Soup& soup, const GroupedSides& grouped, EdgeTally& tally) {
+  const EdgeBridges& bridges = grouped.bridges;
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    const auto [v0, v1] = bridges.edge_vertices(e, soup, grouped.corner_face);
+    tally(VertexPair{v0, v1}, bridges.contenders.data() + bridges.begin[e],
+          bridges.num_contenders(e));
+  }
 }
 
 }  // namespace
 
 DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped) {
-  return detect_grouped(working, grouped.corner_face, grouped.bridges, nullptr);
+  EdgeTally tally(working, {});
+  tally_bridges(working.soup(), grouped, tally);
+  return detect_tallied(working, grouped.corner_face, std::move(tally),
+                        grouped.bridges.num_edges());
 }
 
 DefectReport detect(const WorkingSoup& working, GroupedSides&& grouped) {
-  return detect_grouped(working, grouped.corner_face, grouped.bridges, &grouped.bridges);
+  // The pairing takes corner_edge's room; the bridges are freed before the fans allocate.
+  EdgeTally tally(working, std::move(grouped.bridges.corner_edge));
+  tally_bridges(working.soup(), grouped, tally);
+  const std::size_t num_edges = grouped.bridges.num_edges();
+  grouped.bridges = EdgeBridges();
+  return detect_tallied(working, grouped.corner_face, std::move(tally), num_edges);
+}
+
+DefectReport detect(const WorkingSoup& working) {
+  const CornerFaces corner_face(working.soup());
+  EdgeTally tally(working, {});
+  const std::size_t num_edges = for_each_vertex_pair(working.soup(), corner_face, tally);
+  return detect_tallied(working, corner_face, std::move(tally), num_edges);
 }
 
 }  // namespace detail
@@ -256,7 +288,7 @@ DefectReport detect(const WorkingSoup& working, GroupedSides&& grouped) {
 DefectReport detect_defects(const Soup& soup) {
   validate_soup(soup);
   const detail::WorkingSoup working(soup);
-  return detail::detect(working, detail::group_sides(working.soup()));
+  return detail::detect(working);
 }
 
 }  // namespace meshbridge

@@ -19,5 +19,8 @@ DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped);
 //! Same, consuming `grouped` as it goes (less memory: its arrays are reused or freed early).
 //! The result is the same as detect(working, grouped); `grouped` is left unspecified.
 DefectReport detect(const WorkingSoup& working, GroupedSides&& grouped);
+//! Same, visiting the sides vertex pair by vertex pair without keeping a grouping (the least
+//! memory: what detect_defects() runs).
+DefectReport detect(const WorkingSoup& working);
 
 }  // namespace meshbridge::detail

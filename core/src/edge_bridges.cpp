@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/edge_bridges.h"
 
+#include "pipeline/grouping.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -15,7 +17,11 @@ std::vector<Index> corner_faces(const Soup& soup) {
   return corner_face;
 }
 
-EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face) {
+namespace {
+
+// FaceOf: anything with operator[](corner) giving the corner's face.
+template <class FaceOf>
+EdgeBridges group_sides_by(const Soup& soup, const FaceOf& corner_face) {
   const std::size_t num_corners = soup.num_corners();
   const std::size_t num_vertices = soup.num_vertices();
   const auto& cv = soup.corner_vertices;
@@ -46,8 +52,6 @@ EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face)
 
   EdgeBridges bridges;
   bridges.begin.reserve(num_corners / 2 + 2);
-  bridges.edge_v0.reserve(num_corners / 2 + 1);
-  bridges.edge_v1.reserve(num_corners / 2 + 1);
 
   // Within a bucket, order by (larger vertex, corner): insertion sort for the usual handful of
   // sides, std::sort for the rare crowded vertex (no quadratic worst case).
@@ -74,9 +78,7 @@ EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face)
     }
     for (Index* i = first; i < last;) {
       const Index other = high[*i];
-      const Index edge = static_cast<Index>(bridges.edge_v0.size());
-      bridges.edge_v0.push_back(static_cast<Index>(v));
-      bridges.edge_v1.push_back(other);
+      const Index edge = static_cast<Index>(bridges.begin.size() - 1);
       // Only later sides of this bucket are compared again: a side's entry can become its edge.
       for (; i < last && high[*i] == other; ++i)
         high[*i] = edge;
@@ -87,5 +89,19 @@ EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face)
   bridges.corner_edge = std::move(high);
   return bridges;
 }
+
+}  // namespace
+
+EdgeBridges group_sides(const Soup& soup, const std::vector<Index>& corner_face) {
+  return group_sides_by(soup, corner_face);
+}
+
+namespace detail {
+
+EdgeBridges group_sides(const Soup& soup, const CornerFaces& corner_face) {
+  return group_sides_by(soup, corner_face);
+}
+
+}  // namespace detail
 
 }  // namespace meshbridge

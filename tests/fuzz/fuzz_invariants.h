@@ -31,13 +31,13 @@ inline void check_every_edge_manifold(const Soup& soup) {
   const EdgeBridges bridges = group_sides(soup, corner_face);
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
     const Index k = bridges.num_contenders(e);
-    check(k <= 2, "output edge with more than two sides", bridges.edge_v0[e], bridges.edge_v1[e]);
+    const auto [v0, v1] = bridges.edge_vertices(e, soup, corner_face);
+    check(k <= 2, "output edge with more than two sides", v0, v1);
     if (k == 2) {
       const Index a = bridges.contenders[bridges.begin[e]];
       const Index b = bridges.contenders[bridges.begin[e] + 1];
       check(soup.corner_vertices[a] != soup.corner_vertices[b],
-            "output edge with two sides running the same way", bridges.edge_v0[e],
-            bridges.edge_v1[e]);
+            "output edge with two sides running the same way", v0, v1);
     }
   }
 }

@@ -3,7 +3,9 @@
 // order independence, provenance.
 
 #include "meshbridge/detect_defects.h"
+#include "meshbridge/models/canonical_models.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/report_json.h"
 
 #include "test_support.h"
 
@@ -81,6 +83,62 @@ TEST(RepairProperties, repair_is_idempotent_on_random_soups) {
     EXPECT_EQ(twice.report.faces_flipped, 0u);
     if (::testing::Test::HasFailure())
       return;
+  }
+}
+
+// The same soup with every polygon fanned into triangles (all of one arity, so the corners'
+// faces are c / 3 rather than a table).
+Soup fanned(const Soup& soup) {
+  Soup triangles;
+  triangles.positions = soup.positions;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const PolygonView p = soup.polygon(f);
+    for (std::size_t i = 1; i + 1 < p.size(); ++i)
+      triangles.add_polygon(std::vector<Index>{p[0], p[i], p[i + 1]});
+  }
+  return triangles;
+}
+
+// `soup` without the faces a coin toss removes (one in four): open fans, pinched vertices and
+// boundary loops cut into canonical solids.
+Soup with_faces_removed(const Soup& soup, std::uint32_t seed) {
+  std::mt19937 random(seed);
+  Soup kept;
+  kept.positions = soup.positions;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    if (random() % 4 != 0)
+      kept.add_polygon(soup.polygon(f));
+  }
+  return kept;
+}
+
+// detect_defects() visits the sides vertex pair by vertex pair without keeping them; repair()'s
+// `before` reads the same soup through the grouping it keeps (EdgeBridges). Both must give every
+// element list and count alike: on random soups (mostly singular edges), on the canonical models
+// and on them with faces removed (open and pinched fans), each also fanned into triangles (one
+// arity: the corners' faces are c / 3, not a table).
+TEST(RepairProperties, detection_without_a_grouping_equals_detection_through_edge_bridges) {
+  ReportJsonOptions everything;
+  everything.elements = true;
+  RepairOptions options;
+  options.close_gaps.tolerance = 0;
+  const auto expect_same = [&](const Soup& soup) {
+    for (const Soup& s : {soup, fanned(soup)}) {
+      const std::string lean = check_report_json("soup", detect_defects(s), nullptr, everything);
+      const std::string grouped =
+          check_report_json("soup", repair(s, options).report.before, nullptr, everything);
+      ASSERT_EQ(lean, grouped);
+    }
+  };
+  for (std::uint32_t seed = 1; seed <= kSoups; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_same(random_soup(seed));
+  }
+  for (const models::NamedModel& model : models::canonical_models()) {
+    SCOPED_TRACE(model.name);
+    expect_same(model.soup);
+    for (std::uint32_t seed = 1; seed <= 20; ++seed)
+      expect_same(with_faces_removed(model.soup, seed));
   }
 }
 

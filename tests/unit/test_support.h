@@ -23,15 +23,17 @@ inline ::testing::AssertionResult every_edge_manifold(const Soup& soup) {
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
     const Index k = bridges.num_contenders(e);
     if (k > 2) {
-      return ::testing::AssertionFailure() << "edge " << bridges.edge_v0[e] << "-"
-                                           << bridges.edge_v1[e] << " has " << k << " sides";
+      const auto [v0, v1] = bridges.edge_vertices(e, soup, corner_face);
+      return ::testing::AssertionFailure()
+             << "edge " << v0 << "-" << v1 << " has " << k << " sides";
     }
     if (k == 2) {
       const Index a = bridges.contenders[bridges.begin[e]];
       const Index b = bridges.contenders[bridges.begin[e] + 1];
       if (soup.corner_vertices[a] == soup.corner_vertices[b]) {
-        return ::testing::AssertionFailure() << "edge " << bridges.edge_v0[e] << "-"
-                                             << bridges.edge_v1[e] << " has two sides one way";
+        const auto [v0, v1] = bridges.edge_vertices(e, soup, corner_face);
+        return ::testing::AssertionFailure()
+               << "edge " << v0 << "-" << v1 << " has two sides one way";
       }
     }
   }

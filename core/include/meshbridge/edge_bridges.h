@@ -20,6 +20,7 @@
 #include "meshbridge/soup.h"
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace meshbridge {
@@ -27,7 +28,7 @@ namespace meshbridge {
 //! All contenders of every edge. A *contender* is a polygon side, identified by its corner c
 //! (the side runs from corner c to the next corner of its polygon).
 //!
-//! Edge e is the vertex pair `edge_vertices[e]` = (v0 < v1) and its contenders are
+//! Edge e is the vertex pair `edge_vertices(e, ...)` = (v0 < v1) and its contenders are
 //! `contenders[begin[e] .. begin[e+1])`, in increasing corner order. Edges are numbered in
 //! increasing (v0, v1) order, so the numbering depends on the vertices only, not on face order.
 //! 1 contender: boundary edge; 2: manifold edge; more: singular edge.
@@ -35,11 +36,21 @@ struct EdgeBridges {
   std::vector<Index> begin{0};     //!< #E+1 offsets into contenders
   std::vector<Index> contenders;   //!< #C corners, grouped by edge
   std::vector<Index> corner_edge;  //!< #C: edge of the side starting at each corner
-  std::vector<Index> edge_v0;      //!< #E smaller vertex of each edge
-  std::vector<Index> edge_v1;      //!< #E larger vertex of each edge
 
   std::size_t num_edges() const { return begin.size() - 1; }
   Index num_contenders(std::size_t e) const { return begin[e + 1] - begin[e]; }
+
+  //! The vertex pair (v0 < v1) of edge e, read off its first contender (not stored: two arrays
+  //! of #E entries less). \param corner_face face of each corner (anything indexable by corner,
+  //! as `corner_faces(soup)`) \pre e < num_edges()
+  template <class CornerFace>
+  std::pair<Index, Index> edge_vertices(std::size_t e, const Soup& soup,
+                                        const CornerFace& corner_face) const {
+    const Index c = contenders[begin[e]];
+    const Index a = soup.corner_vertices[c];
+    const Index b = soup.corner_vertices[soup.next_corner(c, corner_face[c])];
+    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+  }
 };
 
 //! Groups the sides of `soup` by vertex pair in O(#C) (counting sort by smaller vertex).

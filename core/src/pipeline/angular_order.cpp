@@ -32,7 +32,7 @@ bool triangle_normal(const Point& a, const Point& b, const Point& x, Point& n) {
 
 }  // namespace
 
-Point local_normal(const Soup& soup, const std::vector<Index>& corner_face, Index c) {
+Point local_normal(const Soup& soup, const CornerFaces& corner_face, Index c) {
   const Index f = corner_face[c];
   const Index first = soup.face_begin[f];
   const Index last = soup.face_begin[f + 1];
@@ -61,7 +61,8 @@ bool AngularSorter::sort(const Soup& soup, const GroupedSides& grouped, std::siz
   const EdgeBridges& bridges = grouped.bridges;
   order.clear();
   undirected.clear();
-  Point axis = soup.positions[bridges.edge_v1[e]] - soup.positions[bridges.edge_v0[e]];
+  const auto [v0, v1] = bridges.edge_vertices(e, soup, grouped.corner_face);
+  Point axis = soup.positions[v1] - soup.positions[v0];
   const double length = axis.norm();
   if (!(length > 0)) {
     undirected.assign(first, last);
@@ -82,7 +83,7 @@ bool AngularSorter::sort(const Soup& soup, const GroupedSides& grouped, std::siz
   for (const Index* it = first; it != last; ++it) {
     const Index side = *it;
     const Point n = local_normal(soup, grouped.corner_face, side);
-    const bool along = runs_along(soup, bridges, side);
+    const bool along = runs_along(soup, grouped.corner_face, side);
     Point d = OpenMesh::cross(n, axis);
     if (!along)
       d = -d;
@@ -188,8 +189,7 @@ void face_key(const Soup& soup, Index f, std::vector<Index>& key) {
     key.push_back(p[(start + i) % k]);
 }
 
-void sort_by_face_key(const Soup& soup, const std::vector<Index>& corner_face,
-                      std::vector<Index>& sides) {
+void sort_by_face_key(const Soup& soup, const CornerFaces& corner_face, std::vector<Index>& sides) {
   std::vector<std::pair<std::vector<Index>, Index>> keyed;
   keyed.reserve(sides.size());
   for (Index side : sides) {

@@ -19,7 +19,7 @@ struct OrderedSide {
 //! and (previous, a, b) at the side a -> b that agree with the polygon's Newell normal, so a bent
 //! polygon sorts like its triangulation at that edge; the Newell normal if neither does. Zero
 //! when the face is flat against its edge there (see kFlatAngle).
-Point local_normal(const Soup& soup, const std::vector<Index>& corner_face, Index c);
+Point local_normal(const Soup& soup, const CornerFaces& corner_face, Index c);
 
 //! A triangle (a, b, x) is flat against a -> b when x's distance from the line is at most this
 //! times the triangle's longest side (about the angle, in radians, that it leaves the line at).
@@ -57,8 +57,7 @@ class AngularSorter {
 void face_key(const Soup& soup, Index f, std::vector<Index>& key);
 
 //! Orders sides by their faces' keys (face_key()), then by side.
-void sort_by_face_key(const Soup& soup, const std::vector<Index>& corner_face,
-                      std::vector<Index>& sides);
+void sort_by_face_key(const Soup& soup, const CornerFaces& corner_face, std::vector<Index>& sides);
 
 //! `sides` of edge e in the order stitching walks them: the angular order, then the sides
 //! without a direction in face-key order (all in face-key order if the edge has no axis).

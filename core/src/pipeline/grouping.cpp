@@ -5,10 +5,23 @@
 
 namespace meshbridge::detail {
 
+CornerFaces::CornerFaces(const Soup& soup) {
+  const std::size_t num_faces = soup.num_faces();
+  const Index k = num_faces == 0 ? 0 : static_cast<Index>(soup.arity(0));
+  bool uniform = true;
+  for (std::size_t f = 1; f <= num_faces && uniform; ++f)
+    uniform = soup.face_begin[f] - soup.face_begin[f - 1] == k;
+  if (uniform) {
+    arity_ = k;
+  } else {
+    owned_ = corner_faces(soup);
+    table_ = owned_.data();
+  }
+}
+
 GroupedSides group_sides(const Soup& soup) {
-  GroupedSides grouped;
-  grouped.corner_face = corner_faces(soup);
-  grouped.bridges = meshbridge::group_sides(soup, grouped.corner_face);
+  GroupedSides grouped{CornerFaces(soup), EdgeBridges()};
+  grouped.bridges = group_sides(soup, grouped.corner_face);
   return grouped;
 }
 

@@ -20,7 +20,7 @@ template <class Visit>
 std::size_t for_each_crowded_output_edge(const Soup& soup, const GroupedSides& grouped,
                                          const std::vector<Index>& corner_vertex,
                                          const std::vector<Index>& mate, Visit visit) {
-  const std::vector<Index>& corner_face = grouped.corner_face;
+  const CornerFaces& corner_face = grouped.corner_face;
   const EdgeBridges& bridges = grouped.bridges;
   std::vector<std::tuple<Index, Index, Index>> keyed;  // (out low, out high, side)
   std::vector<Index> pairs, open;
@@ -88,7 +88,7 @@ void copy_key(const Soup& soup, Index f, std::vector<Index>& key) {
 std::size_t pair_copies(const Soup& soup, const GroupedSides& grouped, const VertexSplit& split,
                         SidePairing& pairing, ManifoldEdgeCounts& counts, std::size_t& crowded) {
   std::vector<Index>& mate = pairing.mate;
-  const std::vector<Index>& corner_face = grouped.corner_face;
+  const CornerFaces& corner_face = grouped.corner_face;
   // Output vertex each side starts at, as the faces will be written.
   const auto start = [&](Index c) {
     const Index f = corner_face[c];

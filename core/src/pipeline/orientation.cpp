@@ -45,7 +45,7 @@ bool same_way(const Soup& soup, Index c, Index m) {
 // `component` numbers each face's component; `undecided` numbers the components judged here
 // (kNoIndex for the others), `count` of them; reference, volume and noise are per component.
 std::vector<char> open_component_reversal(
-    const Soup& soup, const std::vector<Index>& corner_face, const std::vector<Index>& mate,
+    const Soup& soup, const CornerFaces& corner_face, const std::vector<Index>& mate,
     const std::vector<char>& flipped, const std::vector<Index>& component,
     const std::vector<Index>& undecided, std::size_t count, const std::vector<Point>& reference,
     const std::vector<double>& volume, const std::vector<double>& noise) {
@@ -124,7 +124,7 @@ std::size_t cut_inconsistent_pairs(const Soup& soup, std::vector<Index>& mate) {
   return cut;
 }
 
-OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>& corner_face,
+OrientationCounts orient_consistently(const Soup& soup, const CornerFaces& corner_face,
                                       bool cut_nonorientable, std::vector<Index>& mate,
                                       std::vector<char>& flipped) {
   OrientationCounts counts;
@@ -187,7 +187,7 @@ OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>
 }
 
 void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing) {
-  const std::vector<Index>& corner_face = grouped.corner_face;
+  const CornerFaces& corner_face = grouped.corner_face;
   const std::vector<Index>& mate = pairing.mate;
   std::vector<char>& flipped = pairing.flipped;
   const std::size_t num_faces = soup.num_faces();

@@ -22,7 +22,7 @@ struct OrientationCounts {
 //! impossible is non-orientable: with `cut_nonorientable` its conflicting pairs (the ones the
 //! search meets after the faces are fixed) are cut and its flips kept; without, its faces keep
 //! their direction and every same-running pair of it is cut. `flipped` has one entry per face.
-OrientationCounts orient_consistently(const Soup& soup, const std::vector<Index>& corner_face,
+OrientationCounts orient_consistently(const Soup& soup, const CornerFaces& corner_face,
                                       bool cut_nonorientable, std::vector<Index>& mate,
                                       std::vector<char>& flipped);
 

@@ -18,7 +18,7 @@ void pair(std::vector<Index>& mate, Index a, Index b) {
 
 // Combinatorial rule over `sides` (in the order given): opposite-running sides first come,
 // first paired.
-void pair_opposite_in_order(const Soup& soup, const EdgeBridges& bridges,
+void pair_opposite_in_order(const Soup& soup, const CornerFaces& corner_face,
                             const std::vector<Index>& sides, std::vector<Index>& mate) {
   // Each side takes the earliest still waiting side that runs the other way: the same pairs as
   // "each unpaired side takes the first later opposite one", in linear time.
@@ -27,7 +27,7 @@ void pair_opposite_in_order(const Soup& soup, const EdgeBridges& bridges,
   for (Index side : sides) {
     if (mate[side] != kNoIndex)
       continue;
-    const int along = runs_along(soup, bridges, side) ? 1 : 0;
+    const int along = runs_along(soup, corner_face, side) ? 1 : 0;
     const int other = 1 - along;
     if (head[other] < waiting[other].size()) {
       pair(mate, waiting[other][head[other]++], side);
@@ -102,7 +102,7 @@ std::vector<char> sheets(const Soup& soup, UnionFind& regions) {
 
 std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped,
                                    PairingPolicy policy) {
-  const std::vector<Index>& corner_face = grouped.corner_face;
+  const CornerFaces& corner_face = grouped.corner_face;
   const EdgeBridges& bridges = grouped.bridges;
   std::vector<Index> mate(soup.num_corners(), kNoIndex);
   std::vector<std::size_t> singular;
@@ -122,7 +122,7 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
   const auto combinatorial = [&](std::size_t e) {
     sides.assign(bridges.contenders.begin() + bridges.begin[e],
                  bridges.contenders.begin() + bridges.begin[e + 1]);
-    pair_opposite_in_order(soup, bridges, sides, mate);
+    pair_opposite_in_order(soup, corner_face, sides, mate);
   };
   if (policy == PairingPolicy::combinatorial) {
     for (std::size_t e : singular)
@@ -171,7 +171,7 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
     } else if (k == 2) {
       const Index a = bridges.contenders[first], b = bridges.contenders[first + 1];
       const Index fa = corner_face[a], fb = corner_face[b];
-      const bool opposite = runs_along(soup, bridges, a) != runs_along(soup, bridges, b);
+      const bool opposite = runs_along(soup, corner_face, a) != runs_along(soup, corner_face, b);
       regions.unite(2 * fa, 2 * fb + (opposite ? 0 : 1));
       regions.unite(2 * fa + 1, 2 * fb + (opposite ? 1 : 0));
     }
@@ -213,7 +213,7 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
         sides.push_back(c.side);
     sides.insert(sides.end(), undirected.begin() + undirected_begin[s],
                  undirected.begin() + undirected_begin[s + 1]);
-    pair_opposite_in_order(soup, bridges, sides, mate);
+    pair_opposite_in_order(soup, corner_face, sides, mate);
   }
   return mate;
 }

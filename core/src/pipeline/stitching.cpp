@@ -9,7 +9,7 @@
 namespace meshbridge::detail {
 
 std::size_t stitch(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing) {
-  const std::vector<Index>& corner_face = grouped.corner_face;
+  const CornerFaces& corner_face = grouped.corner_face;
   const EdgeBridges& bridges = grouped.bridges;
   std::vector<Index>& mate = pairing.mate;
   std::vector<char>& flipped = pairing.flipped;
@@ -61,8 +61,8 @@ std::size_t stitch(const Soup& soup, const GroupedSides& grouped, SidePairing& p
         char flip_s = 0, flip_t = 0;
         const Index root_s = components.find(corner_face[s], flip_s);
         const Index root_t = components.find(corner_face[t], flip_t);
-        const bool along_s = runs_along(soup, bridges, s) != (flipped[corner_face[s]] ^ flip_s);
-        const bool along_t = runs_along(soup, bridges, t) != (flipped[corner_face[t]] ^ flip_t);
+        const bool along_s = runs_along(soup, corner_face, s) != (flipped[corner_face[s]] ^ flip_s);
+        const bool along_t = runs_along(soup, corner_face, t) != (flipped[corner_face[t]] ^ flip_t);
         if (root_s == root_t) {
           if (along_s == along_t)
             continue;
