@@ -109,12 +109,10 @@ namespace {
 // 2-sided edge's sides are each other's mate, every other side has none); and the links that
 // join faces across singular edges, for the components.
 struct EdgeTally {
-  // `mate_storage`: any vector, reused for the manifold pairing (every entry is written).
-  EdgeTally(const WorkingSoup& working, std::vector<Index> mate_storage)
+  explicit EdgeTally(const WorkingSoup& working)
       : cv(working.soup().corner_vertices),
-        manifold_mate(std::move(mate_storage)),
+        manifold_mate(working.soup().num_corners()),
         on_singular_edge(working.soup().num_vertices(), 0) {
-    manifold_mate.resize(working.soup().num_corners());
     report.num_vertices = working.input().num_vertices();
     report.num_faces = working.input().num_faces();
     report.degenerate_faces = working.degenerate_faces();
@@ -261,24 +259,15 @@ void tally_bridges(const Soup& soup, const GroupedSides& grouped, EdgeTally& tal
 }  // namespace
 
 DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped) {
-  EdgeTally tally(working, {});
+  EdgeTally tally(working);
   tally_bridges(working.soup(), grouped, tally);
   return detect_tallied(working, grouped.corner_face, std::move(tally),
                         grouped.bridges.num_edges());
 }
 
-DefectReport detect(const WorkingSoup& working, GroupedSides&& grouped) {
-  // The pairing takes corner_edge's room; the bridges are freed before the fans allocate.
-  EdgeTally tally(working, std::move(grouped.bridges.corner_edge));
-  tally_bridges(working.soup(), grouped, tally);
-  const std::size_t num_edges = grouped.bridges.num_edges();
-  grouped.bridges = EdgeBridges();
-  return detect_tallied(working, grouped.corner_face, std::move(tally), num_edges);
-}
-
 DefectReport detect(const WorkingSoup& working) {
   const CornerFaces corner_face(working.soup());
-  EdgeTally tally(working, {});
+  EdgeTally tally(working);
   const std::size_t num_edges = for_each_vertex_pair(working.soup(), corner_face, tally);
   return detect_tallied(working, corner_face, std::move(tally), num_edges);
 }

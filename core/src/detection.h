@@ -16,9 +16,6 @@ std::vector<Index> duplicate_polygons(const Soup& soup);
 
 //! Detection on `working`, whose sides are `grouped` (as from group_sides(working.soup())).
 DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped);
-//! Same, consuming `grouped` as it goes (less memory: its arrays are reused or freed early).
-//! The result is the same as detect(working, grouped); `grouped` is left unspecified.
-DefectReport detect(const WorkingSoup& working, GroupedSides&& grouped);
 //! Same, visiting the sides vertex pair by vertex pair without keeping a grouping (the least
 //! memory: what detect_defects() runs).
 DefectReport detect(const WorkingSoup& working);

@@ -26,10 +26,9 @@ EdgeBridges group_sides_by(const Soup& soup, const FaceOf& corner_face) {
   const std::size_t num_vertices = soup.num_vertices();
   const auto& cv = soup.corner_vertices;
 
-  // Counting sort of the sides by their smaller vertex; `high` keeps each side's larger vertex.
-  // Two arrays of one Index per side in all: `sorted` becomes the contenders and `high` is
-  // overwritten with each side's edge, becoming corner_edge (no copies). The smaller vertex is
-  // looked up again in the second pass rather than kept (one array of fresh memory less).
+  // Counting sort of the sides by their smaller vertex; `high` keeps each side's larger vertex
+  // (freed on return). `sorted` becomes the contenders (no copy). The smaller vertex is looked
+  // up again in the second pass rather than kept (one array of fresh memory less).
   std::vector<Index> high(num_corners);
   std::vector<Index> bucket_begin(num_vertices + 1, 0);
   std::vector<Index> sorted(num_corners);
@@ -78,15 +77,12 @@ EdgeBridges group_sides_by(const Soup& soup, const FaceOf& corner_face) {
     }
     for (Index* i = first; i < last;) {
       const Index other = high[*i];
-      const Index edge = static_cast<Index>(bridges.begin.size() - 1);
-      // Only later sides of this bucket are compared again: a side's entry can become its edge.
-      for (; i < last && high[*i] == other; ++i)
-        high[*i] = edge;
+      while (i < last && high[*i] == other)
+        ++i;
       bridges.begin.push_back(static_cast<Index>(i - sorted.data()));
     }
   }
   bridges.contenders = std::move(sorted);
-  bridges.corner_edge = std::move(high);
   return bridges;
 }
 

@@ -33,9 +33,8 @@ namespace meshbridge {
 //! increasing (v0, v1) order, so the numbering depends on the vertices only, not on face order.
 //! 1 contender: boundary edge; 2: manifold edge; more: singular edge.
 struct EdgeBridges {
-  std::vector<Index> begin{0};     //!< #E+1 offsets into contenders
-  std::vector<Index> contenders;   //!< #C corners, grouped by edge
-  std::vector<Index> corner_edge;  //!< #C: edge of the side starting at each corner
+  std::vector<Index> begin{0};    //!< #E+1 offsets into contenders
+  std::vector<Index> contenders;  //!< #C corners, grouped by edge
 
   std::size_t num_edges() const { return begin.size() - 1; }
   Index num_contenders(std::size_t e) const { return begin[e + 1] - begin[e]; }
