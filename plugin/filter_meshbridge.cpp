@@ -4,6 +4,7 @@
 #include "filter_actions.h"
 #include "filter_catalog.h"
 #include "meshlab_document_host.h"
+#include "rich_parameters.h"
 
 #include <exception>
 #include <string>
@@ -75,28 +76,7 @@ void FilterMeshBridgePlugin::initParameterSet(QAction* action, MeshModel& m,
                                               RichParameterList& params) {
   // Lengths are shown as a distance and as a percentage of this diagonal.
   const float diagonal = m.cm.bbox.IsNull() || !(m.cm.bbox.Diag() > 0) ? 1.0f : m.cm.bbox.Diag();
-  for (const mbm::ParameterSpec& p : mbm::parameters(filter_id(ID(action)))) {
-    const QString tooltip = QString::fromStdString(p.tooltip);
-    switch (p.kind) {
-      case mbm::ParameterSpec::Kind::boolean:
-        params.addParam(RichBool(p.name, p.bool_default, p.label, tooltip));
-        break;
-      case mbm::ParameterSpec::Kind::enumeration: {
-        QStringList values;
-        for (const char* v : p.enum_values)
-          values << v;
-        params.addParam(RichEnum(p.name, p.enum_default, values, p.label, tooltip));
-        break;
-      }
-      case mbm::ParameterSpec::Kind::integer:
-        params.addParam(RichInt(p.name, p.int_default, p.label, tooltip));
-        break;
-      case mbm::ParameterSpec::Kind::length:
-        params.addParam(
-            RichAbsPerc(p.name, float(p.length_default), 0.0f, diagonal, p.label, tooltip));
-        break;
-    }
-  }
+  mbm::add_rich_parameters<RichAbsPerc>(filter_id(ID(action)), diagonal, params);
 }
 
 bool FilterMeshBridgePlugin::applyFilter(QAction* action, MeshDocument& md,

@@ -4,6 +4,7 @@
 #include "filter_actions.h"
 #include "filter_catalog.h"
 #include "meshlab_document_host.h"
+#include "rich_parameters.h"
 
 #include <common/globals.h>
 #include <common/plugins/plugin_manager.h>
@@ -117,28 +118,7 @@ RichParameterList FilterMeshBridgePlugin::initParameterList(const QAction* actio
   const Scalarm diagonal =
       m.cm.bbox.IsNull() || !(m.cm.bbox.Diag() > 0) ? Scalarm(1) : m.cm.bbox.Diag();
   RichParameterList params;
-  for (const mbm::ParameterSpec& p : mbm::parameters(filter_id(ID(action)))) {
-    const QString tooltip = QString::fromStdString(p.tooltip);
-    switch (p.kind) {
-      case mbm::ParameterSpec::Kind::boolean:
-        params.addParam(RichBool(p.name, p.bool_default, p.label, tooltip));
-        break;
-      case mbm::ParameterSpec::Kind::enumeration: {
-        QStringList values;
-        for (const char* v : p.enum_values)
-          values << v;
-        params.addParam(RichEnum(p.name, p.enum_default, values, p.label, tooltip));
-        break;
-      }
-      case mbm::ParameterSpec::Kind::integer:
-        params.addParam(RichInt(p.name, p.int_default, p.label, tooltip));
-        break;
-      case mbm::ParameterSpec::Kind::length:
-        params.addParam(
-            RichPercentage(p.name, Scalarm(p.length_default), 0, diagonal, p.label, tooltip));
-        break;
-    }
-  }
+  mbm::add_rich_parameters<RichPercentage>(filter_id(ID(action)), diagonal, params);
   return params;
 }
 
