@@ -133,16 +133,10 @@ class Reader {
             "get a component");
       check(NMR::lib3mf_component_getobjectresource(component.instance, &target.instance), path_,
             "get a component's object");
-      BOOL has_transform = false;
-      check(NMR::lib3mf_component_hastransform(component.instance, &has_transform), path_,
-            "get a component's transform");
       Affine inner = kIdentity;
-      if (has_transform) {
-        NMR::MODELTRANSFORM t;
-        check(NMR::lib3mf_component_gettransform(component.instance, &t), path_,
-              "get a component's transform");
-        inner = affine(t);
-      }
+      const bool has_transform =
+          transform_of(component.instance, NMR::lib3mf_component_hastransform,
+                       NMR::lib3mf_component_gettransform, "get a component's transform", inner);
       add_object(target.instance, compose(placement, inner), transformed || has_transform,
                  depth + 1);
     }
@@ -153,28 +147,19 @@ class Reader {
     Released items;
     check(NMR::lib3mf_model_getbuilditems(model, &items.instance), path_, "list the build items");
     std::size_t count = 0;
-    BOOL more = false;
-    check(NMR::lib3mf_builditemiterator_movenext(items.instance, &more), path_, "iterate");
-    while (more) {
-      Released item, object;
-      check(NMR::lib3mf_builditemiterator_getcurrent(items.instance, &item.instance), path_,
-            "get a build item");
-      check(NMR::lib3mf_builditem_getobjectresource(item.instance, &object.instance), path_,
-            "get a build item's object");
-      BOOL has_transform = false;
-      check(NMR::lib3mf_builditem_hasobjecttransform(item.instance, &has_transform), path_,
-            "get a build item's transform");
-      Affine placement = kIdentity;
-      if (has_transform) {
-        NMR::MODELTRANSFORM t;
-        check(NMR::lib3mf_builditem_getobjecttransform(item.instance, &t), path_,
-              "get a build item's transform");
-        placement = affine(t);
-      }
-      add_object(object.instance, placement, has_transform, 0);
-      ++count;
-      check(NMR::lib3mf_builditemiterator_movenext(items.instance, &more), path_, "iterate");
-    }
+    for_each(
+        items.instance, NMR::lib3mf_builditemiterator_movenext,
+        NMR::lib3mf_builditemiterator_getcurrent, "get a build item", [&](NMR::PLib3MFBase* item) {
+          Released object;
+          check(NMR::lib3mf_builditem_getobjectresource(item, &object.instance), path_,
+                "get a build item's object");
+          Affine placement = kIdentity;
+          const bool has_transform = transform_of(item, NMR::lib3mf_builditem_hasobjecttransform,
+                                                  NMR::lib3mf_builditem_getobjecttransform,
+                                                  "get a build item's transform", placement);
+          add_object(object.instance, placement, has_transform, 0);
+          ++count;
+        });
     return count;
   }
 
@@ -183,21 +168,47 @@ class Reader {
     Released objects;
     check(NMR::lib3mf_model_getmeshobjects(model, &objects.instance), path_,
           "list the mesh objects");
-    BOOL more = false;
-    check(NMR::lib3mf_resourceiterator_movenext(objects.instance, &more), path_, "iterate");
-    while (more) {
-      Released object;
-      check(NMR::lib3mf_resourceiterator_getcurrent(objects.instance, &object.instance), path_,
-            "get a mesh object");
-      DWORD id = 0;
-      check(NMR::lib3mf_resource_getresourceid(object.instance, &id), path_, "get an object's id");
-      if (placed_.count(id) == 0)
-        add_mesh(object.instance, kIdentity, false);
-      check(NMR::lib3mf_resourceiterator_movenext(objects.instance, &more), path_, "iterate");
-    }
+    for_each(objects.instance, NMR::lib3mf_resourceiterator_movenext,
+             NMR::lib3mf_resourceiterator_getcurrent, "get a mesh object",
+             [&](NMR::PLib3MFBase* object) {
+               DWORD id = 0;
+               check(NMR::lib3mf_resource_getresourceid(object, &id), path_, "get an object's id");
+               if (placed_.count(id) == 0)
+                 add_mesh(object, kIdentity, false);
+             });
   }
 
  private:
+  // Calls visit(instance) for every instance a lib3mf iterator (build items or resources)
+  // yields, releasing each after the visit.
+  template <class Next, class Current, class Visit>
+  void for_each(NMR::PLib3MFBase* iterator, Next next, Current current, const char* what,
+                Visit visit) {
+    BOOL more = false;
+    check(next(iterator, &more), path_, "iterate");
+    while (more) {
+      Released instance;
+      check(current(iterator, &instance.instance), path_, what);
+      visit(instance.instance);
+      check(next(iterator, &more), path_, "iterate");
+    }
+  }
+
+  // The transform of a component or build item into `transform`, when it has one (else
+  // `transform` is left as is); returns whether it has one.
+  template <class Has, class Get>
+  bool transform_of(NMR::PLib3MFBase* instance, Has has, Get get, const char* what,
+                    Affine& transform) {
+    BOOL present = false;
+    check(has(instance, &present), path_, what);
+    if (!present)
+      return false;
+    NMR::MODELTRANSFORM t;
+    check(get(instance, &t), path_, what);
+    transform = affine(t);
+    return true;
+  }
+
   static constexpr int kMaxDepth = 64;
   const std::string& path_;
   Soup& soup_;
