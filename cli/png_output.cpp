@@ -10,7 +10,6 @@
 #include <QString>
 #include <QtGlobal>
 
-#include <cctype>
 #include <iostream>
 #include <string_view>
 
@@ -24,12 +23,6 @@ void filter_qt_message(QtMsgType type, const QMessageLogContext&, const QString&
 }
 
 }  // namespace
-
-bool ends_with_png(std::string path) {
-  for (auto& ch : path)
-    ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".png") == 0;
-}
 
 void write_png_atomically(const std::string& path, const QImage& image) {
   // Encoded in memory first: Qt's PNG writer leaks its row buffer when libpng fails on a full

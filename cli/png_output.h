@@ -11,9 +11,6 @@
 
 namespace meshbridge::cli {
 
-//! True when `path` ends in ".png" (any case).
-bool ends_with_png(std::string path);
-
 //! Writes `image` as PNG under a hidden temporary name beside `path` and renames it into place,
 //! so on any error the previous file at `path` is untouched and nothing half-written is left.
 //! \throw WriteError naming the path and the reason (the OS reason when there is one)
