@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// A picture of a soup's defects, drawn with Qt into an image (no window, no display). The CLI's
-// `snapshot` command writes it as PNG; the core knows nothing of it.
+// A picture of a soup's defects, drawn with Qt into an image (no window, no display). Part of the
+// meshbridge_pictures module (cli/pictures_api.h): the CLI's `snapshot` command and `repair
+// --before-after` get it as PNG bytes; the core knows nothing of it.
 
 #include "meshbridge/defect_report.h"
 #include "meshbridge/soup.h"
