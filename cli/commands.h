@@ -34,7 +34,8 @@ void add_check_command(CLI::App& app, int& exit_code);
 void add_compare_command(CLI::App& app, int& exit_code);
 void add_repair_command(CLI::App& app, int& exit_code);
 void add_batch_command(CLI::App& app, int& exit_code);
-//! Draws the defects with Qt on the "offscreen" platform and writes a PNG (cli/defect_snapshot.h).
+//! Draws the defects with Qt on the "offscreen" platform and writes a PNG; Qt is loaded with the
+//! meshbridge_pictures module for that only (cli/pictures.h, cli/defect_snapshot.h).
 void add_snapshot_command(CLI::App& app, int& exit_code);
 //! Prints what each line and word of the reports means (cli/explain_command.cpp).
 void add_explain_command(CLI::App& app, int& exit_code);

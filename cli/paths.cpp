@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 
@@ -34,6 +35,12 @@ std::string first_missing(const std::string& folder) {
 }
 
 }  // namespace
+
+bool ends_with_png(std::string path) {
+  for (auto& ch : path)
+    ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".png") == 0;
+}
 
 std::string folder_of(const std::string& path) {
   std::string trimmed = path;

@@ -1,18 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "png_output.h"
 
-#include "meshbridge/errors.h"
-#include "meshbridge/io.h"
-
 #include <QBuffer>
-#include <QByteArray>
 #include <QImageWriter>
 #include <QString>
 #include <QtGlobal>
 
-#include <cctype>
 #include <iostream>
-#include <string_view>
 
 namespace meshbridge::cli {
 
@@ -25,23 +19,16 @@ void filter_qt_message(QtMsgType type, const QMessageLogContext&, const QString&
 
 }  // namespace
 
-bool ends_with_png(std::string path) {
-  for (auto& ch : path)
-    ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".png") == 0;
-}
-
-void write_png_atomically(const std::string& path, const QImage& image) {
-  // Encoded in memory first: Qt's PNG writer leaks its row buffer when libpng fails on a full
-  // disk, and our atomic writer names the OS reason for any failure to store the bytes.
+QByteArray encode_png(const QImage& image) {
+  // Encoded in memory: Qt's PNG writer leaks its row buffer when libpng fails on a full disk,
+  // and the executable's atomic writer names the OS reason for any failure to store the bytes.
   QByteArray png;
   QBuffer buffer(&png);
   buffer.open(QIODevice::WriteOnly);
   QImageWriter writer(&buffer, QByteArrayLiteral("png"));
   if (!writer.write(image))
-    throw WriteError(path + ": cannot encode the PNG (" + writer.errorString().toStdString() + ")");
-  write_bytes_atomically(path,
-                         std::string_view(png.constData(), static_cast<std::size_t>(png.size())));
+    throw PngEncodeError("cannot encode the PNG (" + writer.errorString().toStdString() + ")");
+  return png;
 }
 
 OffscreenQt::OffscreenQt() : previous_(qInstallMessageHandler(&filter_qt_message)) {

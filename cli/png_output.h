@@ -1,23 +1,26 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Writing the snapshot PNGs: Qt on the "offscreen" platform (no display needed) and an atomic
-// PNG write that names the cause of a failure.
+// Qt for the snapshot PNGs, inside the meshbridge_pictures module: Qt on the "offscreen" platform
+// (no display needed) and PNG encoding in memory (the executable writes the bytes atomically).
 
+#include <QByteArray>
 #include <QGuiApplication>
 #include <QImage>
 
 #include <memory>
-#include <string>
+#include <stdexcept>
 
 namespace meshbridge::cli {
 
-//! True when `path` ends in ".png" (any case).
-bool ends_with_png(std::string path);
+//! Qt could not encode an image as PNG.
+class PngEncodeError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
-//! Writes `image` as PNG under a hidden temporary name beside `path` and renames it into place,
-//! so on any error the previous file at `path` is untouched and nothing half-written is left.
-//! \throw WriteError naming the path and the reason (the OS reason when there is one)
-void write_png_atomically(const std::string& path, const QImage& image);
+//! `image` as the bytes of a PNG file.
+//! \throw PngEncodeError "cannot encode the PNG (Qt's reason)"
+QByteArray encode_png(const QImage& image);
 
 //! While alive: a QGuiApplication (fonts need one) on the "offscreen" platform unless the user
 //! chose one through QT_QPA_PLATFORM, with Qt's debug output and warnings dropped (offscreen

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
-#include "defect_snapshot.h"
 #include "paths.h"
-#include "png_output.h"
+#include "pictures.h"
 #include "printer_options.h"
 #include "progress.h"
 #include "validators.h"
@@ -72,6 +71,7 @@ int run_repair(RepairArguments& arguments) {
       throw UsageError(arguments.before_after + ": --before-after is written as PNG; name it .png");
     }
     check_writable_file(arguments.before_after);
+    find_pictures_module();  // a missing module is told now, not after the repair
   }
 
   ReadInfo info;
@@ -103,14 +103,17 @@ int run_repair(RepairArguments& arguments) {
               "\n");
     }
     if (!arguments.before_after.empty()) {
-      const OffscreenQt qt;  // fonts for the legends
-      SnapshotOptions picture;
-      picture.title = "before: " + file_name_of(in);
-      const DefectSnapshot before = draw_defect_snapshot(soup, result.report.before, picture);
-      picture.title = "after: " + file_name_of(out);
-      const DefectSnapshot after = draw_defect_snapshot(result.mesh.soup, result.report.after,
-                                                        picture, &soup, &result.report.before);
-      write_png_atomically(arguments.before_after, side_by_side(before, after).image);
+      // The result framed as the input, so the two pictures line up.
+      Picture before, after;
+      before.soup = &soup;
+      before.report = &result.report.before;
+      before.options.title = "before: " + file_name_of(in);
+      after.soup = &result.mesh.soup;
+      after.report = &result.report.after;
+      after.options.title = "after: " + file_name_of(out);
+      after.frame_soup = &soup;
+      after.frame_report = &result.report.before;
+      write_pictures_png(arguments.before_after, {before, after});
     }
   }
   warn_about_reader(in, info);

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
-#include "defect_snapshot.h"
 #include "paths.h"
-#include "png_output.h"
+#include "pictures.h"
 #include "progress.h"
 
 #include "meshbridge/detect_defects.h"
@@ -37,6 +36,7 @@ int run_snapshot(const SnapshotArguments& arguments) {
     throw UsageError(out + ": the snapshot is written as PNG; name it .png");
   check_readable_file(path);
   check_writable_file(out);
+  find_pictures_module();  // a missing module is told now, not after reading
 
   ProgressDisplay progress(path, progress_wanted(arguments.progress), progress_wanted(false),
                            snapshot_plan());
@@ -46,11 +46,12 @@ int run_snapshot(const SnapshotArguments& arguments) {
   progress.stage(Stage::detect, 0);
   const DefectReport report = detect_defects(soup);
 
-  const OffscreenQt qt;  // fonts for the legend
-
   progress.stage(Stage::write, 0);
-  const DefectSnapshot snapshot = draw_defect_snapshot(soup, report, options);
-  write_png_atomically(out, snapshot.image);
+  Picture picture;
+  picture.soup = &soup;
+  picture.report = &report;
+  picture.options = options;
+  const PicturesDrawn snapshot = write_pictures_png(out, {picture});
   progress.finish();
   warn_about_reader(path, info);
   if (options.legend && !snapshot.legend_drawn) {

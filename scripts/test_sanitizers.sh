@@ -17,7 +17,8 @@ flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-po
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMESHBRIDGE_BUILD_TESTS=ON \
   -DMESHBRIDGE_BUILD_CLI=ON -DMESHBRIDGE_BUILD_PLUGIN=OFF -DMESHBRIDGE_BUILD_BENCH=OFF \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
+  -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DCMAKE_MODULE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 
 export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:strict_string_checks=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 # lib3mf's libzip leaks a few blocks per process (tests/lsan_libzip.supp); nothing else is

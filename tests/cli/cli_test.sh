@@ -695,6 +695,32 @@ fill_holes)
   [ "$(json_line_field "$work/out" 0 holes.max_edges)" = 8 ] || fail "batch holes.max_edges"
   [ "$(json_line_field "$work/out" 1 holes.holes_filled)" = 0 ] || fail "batch: icosphere has no hole"
   ;;
+pictures_module)
+  # Qt is loaded with the meshbridge_pictures module, by the commands that draw only: the
+  # executable does not link it, and without the module those commands fail cleanly, naming
+  # the folders they looked in, while the others work.
+  if ldd "$mb" | grep -q 'libQt5'; then
+    fail "meshbridge links Qt: $(ldd "$mb" | grep libQt5)"
+  fi
+  mkdir "$work/alone"
+  cp "$mb" "$work/alone/meshbridge"
+  expect_exit 1 "$work/alone/meshbridge" check "$models/twocubes.obj"
+  expect_in "$work/out" "singular edges: 1"
+  expect_exit 2 "$work/alone/meshbridge" snapshot "$models/twocubes.obj" "$work/a.png"
+  expect_in "$work/err" "meshbridge: error: cannot draw pictures: meshbridge_pictures module not found in $work/alone, "
+  expect_in "$work/err" "/meshbridge (looked for meshbridge_pictures"
+  [ ! -e "$work/a.png" ] || fail "snapshot without the module wrote a PNG"
+  # --before-after is checked before the repair: no output either.
+  expect_exit 2 "$work/alone/meshbridge" repair "$models/twocubes.obj" "$work/a.obj" --before-after "$work/a.png"
+  expect_in "$work/err" "cannot draw pictures: meshbridge_pictures module not found in $work/alone"
+  [ ! -e "$work/a.obj" ] && [ ! -e "$work/a.png" ] || fail "repair without the module wrote output"
+  expect_exit 0 "$work/alone/meshbridge" repair "$models/twocubes.obj" "$work/a.obj"
+  # A module that is not a shared library: the loader's reason, no crash.
+  echo "not a library" >"$work/alone/$(basename "$(ls "$(dirname "$mb")"/meshbridge_pictures.*)")"
+  expect_exit 2 "$work/alone/meshbridge" snapshot "$models/twocubes.obj" "$work/a.png"
+  expect_in "$work/err" "meshbridge: error: cannot draw pictures: $work/alone/meshbridge_pictures"
+  [ ! -e "$work/a.png" ] || fail "snapshot with a broken module wrote a PNG"
+  ;;
 *)
   echo "unknown case $case_name" >&2
   exit 2

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// What a snapshot looks like: the view, the framing, the size and the legend. No Qt here: the
+// commands take these options without Qt, and the drawing (cli/defect_snapshot.h) uses them.
+
+#include <string>
+
+namespace meshbridge::cli {
+
+//! The direction the orthographic camera looks from (always toward the model's centre).
+enum class SnapshotView {
+  //! from about +(1,1,1): azimuth 45 deg (from +x toward +y), elevation 30 deg, +z up; a little
+  //! below the exact isometric (35.26 deg), where a box's back corner hides behind its front one
+  iso,
+  x,  //!< from +x, +z up, +y to the right
+  y,  //!< from +y, +z up, -x to the right
+  z   //!< from +z (top view), +y up, +x to the right
+};
+
+//! What the picture is fitted to.
+enum class SnapshotFocus {
+  whole,   //!< the whole model (default)
+  defects  //!< the bounding box of the singular and boundary edges and pinch vertices (the whole
+           //!< model when there is no such defect)
+};
+
+//! Parses "iso", "x", "y" or "z". \throw std::invalid_argument naming the text otherwise
+SnapshotView parse_snapshot_view(const std::string& text);
+//! "iso", "x", "y" or "z".
+const char* to_string(SnapshotView view);
+
+//! Options of draw_defect_snapshot, every default documented.
+struct SnapshotOptions {
+  //! Width and height of the square image in pixels (default 800); kMinSize .. kMaxSize.
+  int size = 800;
+  static constexpr int kMinSize = 16;
+  static constexpr int kMaxSize = 8192;
+  SnapshotView view = SnapshotView::iso;  //!< default iso
+  //! Blank border on every side, as a fraction of `size` (default 0.05).
+  double margin = 0.05;
+  SnapshotFocus focus = SnapshotFocus::whole;  //!< default whole
+  //! Draw the legend line of counts at the top (default true). It is left out anyway when no
+  //! QGuiApplication exists or text does not render (no font found offscreen).
+  bool legend = true;
+  //! Starts the legend, e.g. the file name (default empty: counts only).
+  std::string title;
+};
+
+}  // namespace meshbridge::cli
