@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "defect_snapshot.h"
+#include "counted.h"
 
 #include "meshbridge/validate.h"
 
@@ -261,10 +262,9 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
 
   // The legend: one line at the top, shrunk until it fits the width.
   const QString counts =
-      QStringLiteral("%1 singular edges, %2 singular vertices, %3 boundary edges")
-          .arg(report.singular_edges.size())
-          .arg(report.num_singular_vertices())
-          .arg(report.boundary_edges.size());
+      QString::fromStdString(counted(report.singular_edges.size(), "singular edge") + ", " +
+                             counted(report.num_singular_vertices(), "singular vertex") + ", " +
+                             counted(report.boundary_edges.size(), "boundary edge"));
   const QString legend = options.title.empty()
                              ? counts
                              : QString::fromLocal8Bit(options.title.c_str()) + ": " + counts;

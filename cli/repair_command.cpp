@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
+#include "counted.h"
 #include "paths.h"
 #include "pictures.h"
 #include "printer_options.h"
@@ -141,9 +142,10 @@ int run_repair(RepairArguments& arguments) {
     if (left > 0) {
       std::cerr << "meshbridge: warning: STL has no shared vertices; reading " << out
                 << " welds the " << result.report.vertices_split
-                << " split vertex copies again and re-creates " << reread->singular_edges.size()
-                << " singular edges and " << reread->num_singular_vertices()
-                << " singular vertices. Use --separate auto, or write 3MF, PLY, OBJ or OFF.\n";
+                << " split vertex copies again and re-creates "
+                << counted(reread->singular_edges.size(), "singular edge") << " and "
+                << counted(reread->num_singular_vertices(), "singular vertex")
+                << ". Use --separate auto, or write 3MF, PLY, OBJ or OFF.\n";
     }
   }
   return kOk;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
+#include "counted.h"
 #include "paths.h"
 #include "pictures.h"
 #include "progress.h"
@@ -59,10 +60,11 @@ int run_snapshot(const SnapshotArguments& arguments) {
               << " has no legend\n";
   }
   std::cout << path << " -> " << out << " (" << options.size << "x" << options.size << ", view "
-            << to_string(options.view) << "): " << report.singular_edges.size()
-            << " singular edges, " << report.num_singular_vertices() << " singular vertices, "
-            << report.boundary_edges.size() << " boundary edges; red pixels " << snapshot.red_pixels
-            << ", green pixels " << snapshot.green_pixels << "\n";
+            << to_string(options.view)
+            << "): " << counted(report.singular_edges.size(), "singular edge") << ", "
+            << counted(report.num_singular_vertices(), "singular vertex") << ", "
+            << counted(report.boundary_edges.size(), "boundary edge") << "; red pixels "
+            << snapshot.red_pixels << ", green pixels " << snapshot.green_pixels << "\n";
   return report.has_defects() || info.faces_dropped_by_reader > 0 ? kDefectsFound : kOk;
 }
 

@@ -160,7 +160,8 @@ def write(path: Union[str, "os.PathLike[str]"], mesh: Any, faces: Optional[Faces
     if edges or vertices:
         warnings.warn(
             f"{target}: STL has no shared vertices; reading it welds split vertex copies again "
-            f"and re-creates {edges} singular edges and {vertices} singular vertices. "
+            f"and re-creates {_counted(edges, 'singular edge')} and "
+            f"{_counted(vertices, 'singular vertex')}. "
             "Write 3MF, PLY, OBJ or OFF to keep the repair.",
             UserWarning,
             stacklevel=2,
@@ -241,6 +242,13 @@ def _repair_options(options: Dict[str, Any]) -> "_core.RepairOptions":
             raise TypeError(f"repair() option {name} must be True or False, got {value!r}")
         setattr(native, name, value if name == "pairing" else bool(value))
     return native
+
+
+def _counted(n: int, noun: str) -> str:
+    """``n`` and ``noun`` in the right number: "1 singular edge", "2 singular vertices"."""
+    if n == 1:
+        return f"{n} {noun}"
+    return f"{n} {noun[:-2]}ices" if noun.endswith("vertex") else f"{n} {noun}s"
 
 
 def _path(path: Any) -> str:

@@ -407,7 +407,7 @@ sys.exit(0 if f==want else "check file %r != %r" % (f, want))' "$work/out" "$wei
   ;;
 snapshot)
   expect_exit 1 "$mb" snapshot "$models/twocubes.obj" "$work/twocubes.png"
-  expect_in "$work/out" "1 singular edges, 2 singular vertices, 0 boundary edges"
+  expect_in "$work/out" "1 singular edge, 2 singular vertices, 0 boundary edges"
   is_png "$work/twocubes.png" || fail "twocubes.png is not a PNG"
   [ "$(png_size "$work/twocubes.png")" = 800x800 ] || fail "size: $(png_size "$work/twocubes.png")"
   [ "$(pixels "$work/out" red)" -gt 0 ] 2>/dev/null || fail "no red pixels: $(cat "$work/out")"

@@ -150,7 +150,7 @@ def test_read_write_round_trip(tmp_path):
 
 def test_stl_that_welds_the_repair_back_warns_with_counts(tmp_path):
     result = meshbridge.repair(meshbridge.read(MODELS / "twocubes.obj"))
-    with pytest.warns(UserWarning, match=r"re-creates 1 singular edges and 2 singular vertices"):
+    with pytest.warns(UserWarning, match=r"re-creates 1 singular edge and 2 singular vertices"):
         meshbridge.write(tmp_path / "out.stl", result)
     assert meshbridge.check(meshbridge.read(tmp_path / "out.stl"))["singular_edges"] == 1
     with warnings.catch_warnings():
