@@ -86,9 +86,14 @@ int run_repair(RepairArguments& arguments) {
     MeshAttributes attributes;
     Soup soup = read_soup(in, &info, &attributes);
     options.progress = progress.callback();
-    result = repair(soup, options);
-    if (arguments.before_after.empty())
-      soup = Soup();  // only the picture reads the input again: freed before the output is written
+    // Only the picture reads the input again. Without one the soup is consumed: an input repair
+    // leaves unchanged becomes the output (no copy), any other is freed before the writing.
+    if (arguments.before_after.empty()) {
+      result = repair(std::move(soup), options);
+      soup = Soup();  // what repair left of it, freed before the output is written
+    } else {
+      result = repair(soup, options);
+    }
     progress.stage(Stage::write, 0);
     apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
                    separate_summary);

@@ -151,7 +151,8 @@ struct EdgeTally {
 
 // Detection on `working` after its edges went through `tally` (num_edges of them).
 DefectReport detect_tallied(const WorkingSoup& working, const CornerFaces& corner_face,
-                            EdgeTally&& tally, std::size_t num_edges) {
+                            EdgeTally&& tally, std::size_t num_edges,
+                            std::vector<Index>* manifold_mate_out = nullptr) {
   const Soup& input = working.input();
   const Soup& soup = working.soup();
   DefectReport& report = tally.report;
@@ -213,6 +214,8 @@ DefectReport detect_tallied(const WorkingSoup& working, const CornerFaces& corne
         orient_consistently(soup, corner_face, false, manifold_mate, flipped)
             .nonorientable_components;
   }
+  if (manifold_mate_out != nullptr)
+    *manifold_mate_out = std::move(manifold_mate);
   manifold_mate = std::vector<Index>();  // freed before the face checks allocate
 
   report.euler_characteristic = static_cast<long long>(used_count) -
@@ -265,11 +268,11 @@ DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped) {
                         grouped.bridges.num_edges());
 }
 
-DefectReport detect(const WorkingSoup& working) {
+DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mate) {
   const CornerFaces corner_face(working.soup());
   EdgeTally tally(working);
   const std::size_t num_edges = for_each_vertex_pair(working.soup(), corner_face, tally);
-  return detect_tallied(working, corner_face, std::move(tally), num_edges);
+  return detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate);
 }
 
 }  // namespace detail

@@ -17,7 +17,9 @@ std::vector<Index> duplicate_polygons(const Soup& soup);
 //! Detection on `working`, whose sides are `grouped` (as from group_sides(working.soup())).
 DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped);
 //! Same, visiting the sides vertex pair by vertex pair without keeping a grouping (the least
-//! memory: what detect_defects() runs).
-DefectReport detect(const WorkingSoup& working);
+//! memory: what detect_defects() runs). With `manifold_mate`, it receives the pairing of the
+//! 2-sided edges (#C: the other side, or kNoIndex; pairs orientation could not make consistent
+//! are cut, as detection counts non-orientable components).
+DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mate = nullptr);
 
 }  // namespace meshbridge::detail

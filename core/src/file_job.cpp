@@ -198,7 +198,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     read = true;
     if (info.changed_anything())
       result.reading = describe_reading(info);
-    RepairResult repaired = repair(soup, options.repair);
+    RepairResult repaired = repair(std::move(soup), options.repair);  // unchanged: no copy
     soup = Soup();
     const fs::path folder = fs::path(job.output).parent_path();
     if (!folder.empty()) {

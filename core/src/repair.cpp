@@ -6,12 +6,15 @@
 
 #include "close_gaps_detail.h"
 #include "detection.h"
+#include "pipeline/orientation.h"
 #include "pipeline/run_pipeline.h"
 #include "release_memory.h"
 #include "working_soup.h"
 
 #include <algorithm>
 #include <memory>
+#include <numeric>
+#include <optional>
 #include <sstream>
 
 namespace meshbridge {
@@ -69,10 +72,10 @@ void tell(const RepairOptions& options, Stage stage, double fraction) {
     options.progress(stage, fraction);
 }
 
-}  // namespace
-
-RepairResult repair(const Soup& input, const RepairOptions& options) {
-  validate_soup(input);
+// Everything repair() does, on a valid soup; `known_before` (when not null) is the detection of
+// `input`, already made (moved from).
+RepairResult repair_valid(const Soup& input, const RepairOptions& options,
+                          DefectReport* known_before) {
   tell(options, Stage::group, 0);
   RepairResult result;
   RepairReport& report = result.report;
@@ -94,8 +97,10 @@ RepairResult repair(const Soup& input, const RepairOptions& options) {
   report.gaps = gaps.report;
   const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
   const bool detecting = options.detect_before_after || filtering;
-  if (detecting)
-    report.before = detail::detect(input_simple, grouped);
+  if (detecting) {
+    report.before =
+        known_before != nullptr ? std::move(*known_before) : detail::detect(input_simple, grouped);
+  }
   // The simple polygons actually built; their grouping is reused below when nothing is removed.
   std::unique_ptr<detail::WorkingSoup> closed_simple;
   if (gaps_closed) {
@@ -206,6 +211,83 @@ RepairResult repair(const Soup& input, const RepairOptions& options) {
   report.components_after = report.after.num_components;
   report.boundary_edges_before = report.before.boundary_edges.size();
   report.boundary_edges_after = report.after.boundary_edges.size();
+  detail::release_free_memory();
+  return result;
+}
+
+// When repair() would return `soup` itself, its report (and `before` is left empty); otherwise
+// nothing, with `before` holding the detection of `soup` when repair() makes one. repair()
+// returns the soup unchanged exactly when it is a closed, consistently oriented 2-manifold (no
+// degenerate polygon, every edge with two opposite sides, no pinch vertex), every component of
+// which already faces the way orientation turns it, with nothing the options would remove or
+// fill: pairing takes the two sides of every edge, orientation and stitching change nothing,
+// every vertex has one fan, and gap closing finds no boundary to work on.
+std::optional<RepairReport> report_if_unchanged(const Soup& soup, const RepairOptions& options,
+                                                DefectReport& before) {
+  const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
+  if (!options.detect_before_after && !filtering)
+    return std::nullopt;  // no detection asked for: the pipeline's own path
+  const detail::WorkingSoup working(soup);
+  std::vector<Index> mate;
+  before = detail::detect(working, &mate);
+  if (!working.is_identity() || !before.watertight || options.fill_holes.max_edges > 0 ||
+      (options.remove_duplicate_faces && !before.duplicate_faces.empty()) ||
+      (options.remove_isolated_vertices && !before.isolated_vertices.empty()))
+    return std::nullopt;
+  if (options.orient) {
+    detail::SidePairing pairing;
+    pairing.mate = std::move(mate);
+    pairing.flipped.assign(soup.num_faces(), 0);
+    const detail::GroupedSides grouped{detail::CornerFaces(soup), EdgeBridges()};
+    detail::orient_components(soup, grouped, pairing);
+    if (std::find(pairing.flipped.begin(), pairing.flipped.end(), 1) != pairing.flipped.end())
+      return std::nullopt;
+  }
+  mate = std::vector<Index>();
+  RepairReport report;
+  ClosedGaps gaps;
+  const std::vector<Index> no_boundary;
+  detail::close_gaps_if_any(soup, options.close_gaps, gaps, &no_boundary);  // the tolerance
+  report.gaps = gaps.report;
+  report.faces_in = report.faces_out = soup.num_faces();
+  report.vertices_in = report.vertices_out = soup.num_vertices();
+  report.components_before = report.components_after = before.num_components;
+  report.boundary_edges_before = report.boundary_edges_after = before.boundary_edges.size();
+  report.before = std::move(before);
+  report.after = report.before;
+  return report;
+}
+
+}  // namespace
+
+RepairResult repair(const Soup& input, const RepairOptions& options) {
+  validate_soup(input);
+  return repair_valid(input, options, nullptr);
+}
+
+RepairResult repair(Soup&& soup, const RepairOptions& options) {
+  validate_soup(soup);
+  DefectReport before;
+  std::optional<RepairReport> unchanged = report_if_unchanged(soup, options, before);
+  if (!unchanged) {
+    const bool detected = options.detect_before_after || options.remove_duplicate_faces ||
+                          options.remove_degenerate_faces;
+    return repair_valid(soup, options, detected ? &before : nullptr);
+  }
+  for (Stage stage : {Stage::group, Stage::pair, Stage::detect}) {
+    tell(options, stage, 0);
+    tell(options, stage, 1);
+  }
+  RepairResult result;
+  result.report = std::move(*unchanged);
+  IndexedMesh& mesh = result.mesh;
+  mesh.vertex_origin.resize(soup.num_vertices());
+  std::iota(mesh.vertex_origin.begin(), mesh.vertex_origin.end(), Index(0));
+  mesh.face_origin.resize(soup.num_faces());
+  std::iota(mesh.face_origin.begin(), mesh.face_origin.end(), Index(0));
+  mesh.corner_origin.resize(soup.num_corners());
+  std::iota(mesh.corner_origin.begin(), mesh.corner_origin.end(), Index(0));
+  mesh.soup = std::move(soup);
   detail::release_free_memory();
   return result;
 }

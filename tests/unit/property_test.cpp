@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <sstream>
 
 using namespace meshbridge;
 using meshbridge::test_support::expect_repair_invariants;
@@ -183,4 +184,108 @@ TEST(RepairProperties, repair_counts_do_not_depend_on_face_order_or_polygon_star
     }
   }
   EXPECT_EQ(differing, 0u);
+}
+
+namespace {
+
+// `soup` with every polygon's corner order reversed (every component turned inside out).
+Soup reversed(const Soup& soup) {
+  Soup out = soup;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    std::reverse(out.corner_vertices.begin() + soup.face_begin[f],
+                 out.corner_vertices.begin() + soup.face_begin[f + 1]);
+  }
+  return out;
+}
+
+// `outer` and, inside it, `inner` shrunk to half about `outer`'s vertex centroid: a solid with
+// a cavity when `inner` is wound the other way, two outward shells otherwise.
+Soup nested(const Soup& outer, const Soup& inner) {
+  Point centre(0, 0, 0);
+  for (const Point& p : outer.positions)
+    centre += p / static_cast<double>(outer.positions.size());
+  Soup out = outer;
+  const Index offset = static_cast<Index>(out.num_vertices());
+  for (const Point& p : inner.positions)
+    out.add_vertex(centre + (p - centre) * 0.5);
+  for (std::size_t f = 0; f < inner.num_faces(); ++f) {
+    std::vector<Index> polygon;
+    for (Index v : inner.polygon(f))
+      polygon.push_back(v + offset);
+    out.add_polygon(polygon);
+  }
+  return out;
+}
+
+std::string mesh_digest(const IndexedMesh& mesh) {
+  std::ostringstream out;
+  out.precision(17);
+  for (const Point& p : mesh.soup.positions)
+    out << p[0] << ' ' << p[1] << ' ' << p[2] << ';';
+  for (const auto* list : {&mesh.soup.corner_vertices, &mesh.soup.face_begin, &mesh.vertex_origin,
+                           &mesh.face_origin, &mesh.corner_origin}) {
+    out << '|';
+    for (Index i : *list)
+      out << i << ',';
+  }
+  return out.str();
+}
+
+}  // namespace
+
+// repair(Soup&&) returns the soup itself when nothing changes (no grouping, no copy) and runs
+// the full repair otherwise; either way its mesh and report equal repair(const Soup&)'s. Closed
+// repaired canonical models must take the shortcut (the output owns the input's buffer); turned
+// inside out, with a cavity wound either way, fanned, with an isolated vertex, and under each
+// option that can change a closed soup, the results must still be the same.
+TEST(RepairProperties, consuming_repair_equals_repair_and_keeps_unchanged_soups_as_they_are) {
+  ReportJsonOptions everything;
+  everything.elements = true;
+  std::vector<std::pair<std::string, RepairOptions>> option_sets(6);
+  option_sets[0].first = "defaults";
+  option_sets[1].first = "no orientation";
+  option_sets[1].second.orient = false;
+  option_sets[2].first = "remove isolated vertices";
+  option_sets[2].second.remove_isolated_vertices = true;
+  option_sets[3].first = "remove duplicates and degenerate faces";
+  option_sets[3].second.remove_duplicate_faces = true;
+  option_sets[3].second.remove_degenerate_faces = true;
+  option_sets[4].first = "no reports";
+  option_sets[4].second.detect_before_after = false;
+  option_sets[5].first = "no gap closing";
+  option_sets[5].second.close_gaps.tolerance = 0;
+  std::size_t kept = 0;
+  for (const models::NamedModel& model : models::canonical_models()) {
+    const Soup closed = repair(model.soup).mesh.soup;
+    Soup with_isolated = closed;
+    with_isolated.add_vertex({1e3, 1e3, 1e3});
+    const std::vector<std::pair<std::string, Soup>> soups = {
+        {"input", model.soup},
+        {"repaired", closed},
+        {"repaired, inside out", reversed(closed)},
+        {"repaired, fanned", fanned(closed)},
+        {"repaired, isolated vertex", with_isolated},
+        {"repaired, with a cavity", nested(closed, reversed(closed))},
+        {"repaired, with an outward shell inside", nested(closed, closed)},
+    };
+    for (const auto& [soup_name, soup] : soups) {
+      for (const auto& [options_name, options] : option_sets) {
+        SCOPED_TRACE(model.name + ", " + soup_name + ", " + options_name);
+        const RepairResult copied = repair(soup, options);
+        Soup consumed = soup;
+        const Point* buffer = consumed.positions.data();
+        const RepairResult moved = repair(std::move(consumed), options);
+        ASSERT_EQ(mesh_digest(moved.mesh), mesh_digest(copied.mesh));
+        ASSERT_EQ(repair_report_json("in", "out", moved.report, nullptr, everything),
+                  repair_report_json("in", "out", copied.report, nullptr, everything));
+        const bool shortcut = moved.mesh.soup.positions.data() == buffer;
+        kept += shortcut ? 1 : 0;
+        if (copied.report.after.watertight && soup_name == "repaired" &&
+            !closed.positions.empty() && options.detect_before_after) {
+          EXPECT_TRUE(shortcut) << "a closed repaired soup went through the full repair";
+        }
+      }
+    }
+  }
+  EXPECT_GT(kept, 0u);
 }

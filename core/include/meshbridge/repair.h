@@ -96,6 +96,15 @@ struct RepairResult {
 //! \throw std::runtime_error if hole filling is asked for in a build without CGAL
 RepairResult repair(const Soup& soup, const RepairOptions& options = {});
 
+//! The same result as repair(const Soup&, options), consuming `soup`: when repair changes
+//! nothing (a closed, consistently oriented 2-manifold whose components already face outward,
+//! cavities inward, with nothing the options remove or fill) the soup itself becomes the
+//! output, with identity origins, found by one detection pass: no grouping, pairing or copy, so
+//! the peak memory is detection's. Otherwise the full repair runs (that detection pass is its
+//! `before`) and `soup` is left valid but unspecified.
+//! \pre `soup` passes validate_soup() \throw as repair(const Soup&, options)
+RepairResult repair(Soup&& soup, const RepairOptions& options = {});
+
 //! Text form of the counts (JSON: repair_report_json() in report_json.h).
 std::string to_text(const RepairReport& report);
 
