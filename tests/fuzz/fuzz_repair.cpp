@@ -160,11 +160,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::check(result.report.before.num_components == before.num_components,
                 "report.before differs from detect_defects");
   }
-  // Deterministic: the same input gives the same output.
-  const RepairResult again = repair(input.soup, input.options);
-  fuzz::check(again.mesh.soup.corner_vertices == result.mesh.soup.corner_vertices &&
-                  again.mesh.vertex_origin == result.mesh.vertex_origin,
-              "repair is not deterministic");
+  // Deterministic, and the consuming repair (which returns a soup it leaves unchanged as it is,
+  // without the pipeline) gives the same mesh and counts.
+  const RepairResult again = repair(Soup(input.soup), input.options);
+  const IndexedMesh& m = again.mesh;
+  fuzz::check(m.soup.corner_vertices == result.mesh.soup.corner_vertices &&
+                  m.soup.face_begin == result.mesh.soup.face_begin &&
+                  m.soup.positions == result.mesh.soup.positions &&
+                  m.vertex_origin == result.mesh.vertex_origin &&
+                  m.face_origin == result.mesh.face_origin &&
+                  m.corner_origin == result.mesh.corner_origin,
+              "repair is not deterministic, or repair(Soup&&) differs from repair(const Soup&)");
+  const RepairReport& r = again.report;
+  const RepairReport& q = result.report;
+  fuzz::check(
+      r.faces_out == q.faces_out && r.vertices_out == q.vertices_out &&
+          r.faces_flipped == q.faces_flipped && r.vertices_split == q.vertices_split &&
+          r.sides_cut == q.sides_cut && r.sides_stitched == q.sides_stitched &&
+          r.components_after == q.components_after && r.after.watertight == q.after.watertight &&
+          r.gaps.tolerance == q.gaps.tolerance && r.gaps.vertices_welded == q.gaps.vertices_welded,
+      "repair(Soup&&) reports other counts than repair(const Soup&)");
   fuzz::check_idempotent(input.options, result);
   return 0;
 }
