@@ -315,17 +315,21 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
   const double tolerance = 3 / std::max(frame.scale, 1e-300);
   const auto same = [](const VertexPair& pair) { return pair; };
   const auto vertices_of = [](const SingularEdge& edge) { return edge.vertices; };
-  // Defect edges shorter than kDenseLength pixels on screen (median) are too dense to draw one
-  // by one: they tint the surface instead (not counted as defect pixels), their hidden parts
-  // and vertex dots are left out, so the shape stays visible.
+  // Many defect edges (kFewestDense or more) shorter than kDenseLength pixels on screen (median)
+  // are too dense to draw one by one: they tint the surface instead (not counted as defect
+  // pixels), their hidden parts and vertex dots are left out, so the shape stays visible. Fewer
+  // are drawn at full width with their dots however short they look (an edge seen end on).
   constexpr double kDenseLength = 6;
+  constexpr std::size_t kFewestDense = 100;
   constexpr std::size_t kMostHiddenDrawn = 20000;
   const auto draw_edges = [&](const auto& edges, const auto& pair_of, double width, QRgb color,
                               QRgb hidden) {
     const double median = median_length(canvas_points, edges, pair_of);
-    const bool dense = !edges.empty() && median < kDenseLength;
-    // Thinner where the edges are short on screen: a grid of defects stays a grid.
-    const double shown = std::max(1.0, std::min(width * pen_scale, median / 4));
+    const bool few = edges.size() < kFewestDense;
+    const bool dense = !few && median < kDenseLength;
+    // Thinner where many edges are short on screen: a grid of defects stays a grid.
+    const double shown =
+        few ? width * pen_scale : std::max(1.0, std::min(width * pen_scale, median / 4));
     if (dense || edges.size() > kMostHiddenDrawn)
       hidden = qRgba(0, 0, 0, 0);
     for (const auto& edge : edges) {

@@ -423,6 +423,9 @@ snapshot)
   [ "$(png_size "$work/hole.png")" = 64x64 ] || fail "--size=64: $(png_size "$work/hole.png")"
   [ "$(pixels "$work/out" green)" -gt 0 ] 2>/dev/null || fail "no green pixels for cube_with_hole"
   [ "$(pixels "$work/out" red)" = 0 ] || fail "red pixels for cube_with_hole"
+  # Seen end on from +z, the singular edge is a point on screen: still drawn (its vertex's dot).
+  expect_exit 1 "$mb" snapshot "$models/twocubes.obj" "$work/twocubes-z.png" --view z
+  [ "$(pixels "$work/out" red)" -ge 20 ] 2>/dev/null || fail "edge seen end on not drawn: $(cat "$work/out")"
   for view in iso x y z; do
     expect_exit 1 "$mb" snapshot "$models/prisms24.obj" "$work/p-$view.png" --view "$view" --size 99
     [ "$(pixels "$work/out" red)" -gt 0 ] 2>/dev/null || fail "no red pixels in prisms24, $view"
