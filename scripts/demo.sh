@@ -5,6 +5,8 @@
 # layer and the repaired mesh under out/. Then the same through the command-line tool.
 # Usage: bash scripts/demo.sh [MODEL.off]
 set -euo pipefail
+# MeshLab's log escapes < > & as HTML entities; print them as written.
+unescape_html() { sed -e 's/&lt;/</g' -e 's/&gt;/>/g' -e 's/&amp;/\&/g'; }
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -27,13 +29,13 @@ echo "== meshlabserver: Detect Singular Defects (Bridged Half-Edge) on $model"
 bash scripts/meshlab_private_root.sh run "$meshlab_root" -i "$model" \
   -o "$out/$name.defects.obj" -l x -m vc -s resources/scripts/detect.mlx \
   >"$out/$name.detect.log" 2>&1
-grep -v "^LOG:" "$out/$name.detect.log" | grep -E "MeshBridge|singular|boundary|vertices|faces|components|watertight|Defect layer" | awk '!seen[$0]++' || true
+grep -v "^LOG:" "$out/$name.detect.log" | grep -E "MeshBridge|singular|boundary|vertices|faces|components|watertight|Defect layer" | awk '!seen[$0]++' | unescape_html || true
 echo
 echo "== meshlabserver: Repair Singular Defects (Bridged Half-Edge) on $model"
 bash scripts/meshlab_private_root.sh run "$meshlab_root" -i "$model" \
   -o "$out/$name.repaired.ply" -m vc fc fq -s resources/scripts/repair.mlx \
   >"$out/$name.repair.log" 2>&1
-grep -v "^LOG:" "$out/$name.repair.log" | grep -E "MeshBridge|faces|vertices|sides|components|after|Layer now" | awk '!seen[$0]++' || true
+grep -v "^LOG:" "$out/$name.repair.log" | grep -E "MeshBridge|faces|vertices|sides|components|after|Layer now" | awk '!seen[$0]++' | unescape_html || true
 echo
 echo "== meshbridge check $out/$name.repaired.ply"
 "$tool" check "$out/$name.repaired.ply" || [ $? -eq 1 ]
