@@ -63,6 +63,17 @@ TEST(ValidateSoup, broken_offsets_are_rejected) {
   EXPECT_EQ(error_of(soup), "soup: face offsets do not cover the corner list");
 }
 
+TEST(ValidateSoup, offsets_that_decrease_are_named_not_read_past) {
+  Soup soup = triangle();
+  soup.add_polygon({0, 1, 2});  // offsets {0, 3, 6}
+  soup.face_begin[1] = 7;       // face 0 would span 7 of the 6 corners
+  EXPECT_EQ(error_of(soup),
+            "face 0 has corners past the end of the corner list (face offsets must not decrease)");
+  soup.add_polygon({0, 1, 2});
+  soup.face_begin = {0, 4, 3, 9};  // face 0 has 4 corners, face 1 ends before it begins
+  EXPECT_EQ(error_of(soup), "face 1 has a negative corner count");
+}
+
 TEST(ValidateSoup, repeated_vertex_is_accepted_and_reported) {
   Soup soup = triangle();
   soup.add_polygon({0, 0, 1});

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Every face record as kept, split or set aside: the same rule as repair's WorkingSoup.
+// Every face record as kept, split or set aside: the same rule as repair's WorkingSoup. The same
+// walk checks each face as validate_soup() does, so reading makes one pass over the corners.
 
 #include "io/formats.h"
+#include "validate_faces.h"
 
 #include <algorithm>
 #include <vector>
@@ -9,15 +11,23 @@
 namespace meshbridge::detail {
 
 void account_faces(const Soup& soup, ReadInfo& info) {
+  validate_layout(soup);
+  const Index* corners = soup.corner_vertices.data();
+  const std::size_t vertices = soup.num_vertices();
   std::vector<Index> loop;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const PolygonView polygon = soup.polygon(f);
-    // Fast path: a triangle with three different corners (almost every face).
-    if (polygon.size() == 3 && polygon[0] != polygon[1] && polygon[1] != polygon[2] &&
-        polygon[0] != polygon[2]) {
-      ++info.faces_kept;
-      continue;
+    // Fast path: a valid triangle with three different corners (almost every face).
+    const Index begin = soup.face_begin[f];
+    if (soup.face_begin[f + 1] == begin + 3) {
+      const Index a = corners[begin], b = corners[begin + 1], c = corners[begin + 2];
+      if (a < vertices && b < vertices && c < vertices && a != b && b != c && a != c) {
+        ++info.faces_kept;
+        continue;
+      }
     }
+    if (!face_is_valid(soup, f))
+      throw_invalid_face(soup, f);
+    const PolygonView polygon = soup.polygon(f);
     // Collapse consecutive repeats (cyclically), as WorkingSoup does.
     loop.clear();
     for (Index v : polygon) {

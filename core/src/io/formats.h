@@ -68,9 +68,10 @@ void write_stl(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
 void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
                const WriteOptions& options);
 
-//! Classifies every soup face as kept, split (pinched) or set aside (< 3 distinct corners) the
-//! way repair's WorkingSoup does, and adds the counts to `info` (faces_without_corners are added
-//! to faces_set_aside too). Called by the dispatcher after every reader.
+//! Checks `soup` as validate_soup() does and, in the same walk over the faces, classifies every
+//! face as kept, split (pinched) or set aside (< 3 distinct corners) the way repair's WorkingSoup
+//! does, adding the counts to `info` (faces_without_corners are added to faces_set_aside too).
+//! Called by the dispatcher after every reader. \throw InvalidSoupError as validate_soup()
 void account_faces(const Soup& soup, ReadInfo& info);
 
 //! The vertex of the input soup behind output vertex `v` (identity when the map is empty).

@@ -8,7 +8,6 @@
 #include "io/formats.h"
 #include "io/mapped_file.h"
 #include "meshbridge/errors.h"
-#include "meshbridge/validate.h"
 
 #include <algorithm>
 #include <cctype>
@@ -114,11 +113,10 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
         ")");
   }
   try {
-    validate_soup(soup);
+    detail::account_faces(soup, counts);  // validates the soup on the way
   } catch (const InvalidSoupError& error) {
     throw InvalidSoupError(path + ": " + error.what());
   }
-  detail::account_faces(soup, counts);
   if (info != nullptr)
     *info = counts;
   return soup;
