@@ -4,6 +4,8 @@
 // (transparent huge pages in "madvise" mode), so filling 100 MB takes 50 page faults, not 25,000,
 // and random access into it misses the TLB far less.
 
+#include "meshbridge/soup.h"
+
 #include <sys/mman.h>
 #include <cstddef>
 #include <cstdint>
@@ -26,6 +28,13 @@ template <class T>
 void reserve_huge(std::vector<T>& v, std::size_t n) {
   v.reserve(n);
   advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+}
+
+//! Reserves a soup's three arrays for the counts a file declares, on huge pages where granted.
+inline void reserve_huge(Soup& soup, std::size_t vertices, std::size_t faces, std::size_t corners) {
+  reserve_huge(soup.positions, vertices);
+  reserve_huge(soup.face_begin, faces + 1);
+  reserve_huge(soup.corner_vertices, corners);
 }
 
 }  // namespace meshbridge::detail

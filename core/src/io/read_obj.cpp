@@ -254,12 +254,6 @@ RecordCounts count_records(const char* p, const char* end) {
   return n;
 }
 
-void reserve(Soup& soup, const RecordCounts& n) {
-  reserve_huge(soup.positions, n.vertices);
-  reserve_huge(soup.face_begin, n.faces + 1);
-  reserve_huge(soup.corner_vertices, n.corners);
-}
-
 // The start of the line at or after `p` that does not continue the line before it (a line
 // before it ending in a backslash, '\r' aside).
 const char* line_start_after(const char* p, const char* first, const char* end) {
@@ -353,14 +347,14 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
     total.faces += part.counts.faces;
     total.corners += part.counts.corners;
   }
-  reserve(soup, total);
+  reserve_huge(soup, total.vertices, total.faces, total.corners);
   run_parts(n, [&](unsigned k) {
     ObjPart& part = parts[k];
     try {
       if (k == 0) {
         ObjReader(file, part.first, part.last, soup, info, attributes).read();
       } else {
-        reserve(part.soup, part.counts);
+        reserve_huge(part.soup, part.counts.vertices, part.counts.faces, part.counts.corners);
         ObjReader(file, part.first, part.last, part.soup, part.info,
                   attributes != nullptr ? &part.attributes : nullptr, &part.relative)
             .read();
@@ -390,7 +384,8 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
     if (attributes != nullptr)
       *attributes = MeshAttributes();
   }
-  reserve(soup, count_records(file.data(), file.end()));
+  const RecordCounts counts = count_records(file.data(), file.end());
+  reserve_huge(soup, counts.vertices, counts.faces, counts.corners);
   file.release_between(file.data(), file.end());  // the counting pass touched every page
   ObjReader(file, file.data(), file.end(), soup, info, attributes).read();
 }

@@ -3,6 +3,7 @@
 // word can start, vertex colours (COFF) and face colours kept, counts checked against the file.
 
 #include "io/formats.h"
+#include "io/huge_pages.h"
 #include "io/text_scanner.h"
 #include "meshbridge/errors.h"
 
@@ -160,8 +161,8 @@ class OffReader {
     in_.next_line();
     info_.declared_vertices = static_cast<std::size_t>(nv);
     info_.declared_faces = static_cast<std::size_t>(nf);
-    soup_.reserve(static_cast<std::size_t>(nv), static_cast<std::size_t>(nf),
-                  3 * static_cast<std::size_t>(nf));
+    reserve_huge(soup_, static_cast<std::size_t>(nv), static_cast<std::size_t>(nf),
+                 3 * static_cast<std::size_t>(nf));
     const bool want_colors = attributes_ != nullptr;
     if (want_colors && h.colors)
       attributes_->vertex_colors.reserve(static_cast<std::size_t>(nv));
@@ -295,7 +296,7 @@ class OffReader {
     }
     info_.declared_vertices = nv;
     info_.declared_faces = nf;
-    soup_.reserve(nv, nf, 3 * std::size_t(nf));
+    reserve_huge(soup_, nv, nf, 3 * std::size_t(nf));
     const bool colors = attributes_ != nullptr && h.colors;
     for (std::uint32_t v = 0; v < nv; ++v) {
       float values[11];
