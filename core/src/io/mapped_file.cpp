@@ -56,6 +56,24 @@ void MappedFile::release_between(const char* from, const char* upto) const {
     ::madvise(const_cast<char*>(data_) + first, last - first, MADV_DONTNEED);
 }
 
+void MappedFile::prefault_between(const char* from, const char* upto) const {
+#ifdef MADV_POPULATE_READ
+  static const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+  if (from < data_)
+    from = data_;
+  if (upto > data_ + size_)
+    upto = data_ + size_;
+  if (upto <= from)
+    return;
+  const std::size_t first = static_cast<std::size_t>(from - data_) / page * page;
+  ::madvise(const_cast<char*>(data_) + first, static_cast<std::size_t>(upto - data_) - first,
+            MADV_POPULATE_READ);
+#else
+  (void)from;
+  (void)upto;
+#endif
+}
+
 MappedFile::~MappedFile() {
   if (data_ != nullptr)
     ::munmap(const_cast<char*>(data_), size_);

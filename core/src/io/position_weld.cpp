@@ -127,6 +127,7 @@ struct Part {
   WeldTable table;
   std::vector<FloatKey> keys;  //!< the part's vertices in order of first appearance in it
   std::vector<Index> vertex;   //!< part vertex -> soup vertex (parts after the first)
+  std::vector<Index> corners;  //!< corner -> part vertex (parts after the first)
 
   // A closed triangle mesh has about half as many vertices as triangles.
   Part(std::size_t first_corner, std::size_t last_corner)
@@ -135,7 +136,7 @@ struct Part {
 
 constexpr std::size_t kBlock = 48;  // corners looked up while the next block's slots arrive
 
-//! The positions met last, one per hash bucket (64 KiB, stays in the L2 cache). A file lists
+//! The positions met last, one per hash bucket (256 KiB, stays in the L2 cache). A file lists
 //! the triangles around a vertex close together (a tessellation, a scan, a grid), so most
 //! corners find their vertex here and never touch the big table.
 class RecentPositions {
@@ -151,7 +152,7 @@ class RecentPositions {
   }
 
  private:
-  static constexpr int kBits = 12;
+  static constexpr int kBits = 14;
   static constexpr std::size_t kSize = std::size_t(1) << kBits;
   std::vector<Slot> slots_;
 };
@@ -162,20 +163,22 @@ Point to_point(const FloatKey& key) {
   return Point(xyz[0], xyz[1], xyz[2]);
 }
 
-//! Welds the part's corners into its table; `out[c]` becomes corner c's part vertex. The part's
-//! new positions go to `positions` if given (the first part: its numbers are the soup's), else
-//! to `part.keys`.
-void weld_part(const CornerKeys& corner_keys, Part& part, Index* out,
+//! Welds the part's corners into its table, appending each corner's part vertex to `out`. The
+//! part's new positions go to `positions` if given (the first part: its numbers are the soup's),
+//! else to `part.keys`.
+void weld_part(const CornerKeys& corner_keys, Part& part, std::vector<Index>& out,
                std::vector<Point>* positions) {
   FloatKey keys[2][kBlock];
   std::uint32_t hashes[2][kBlock];
+  Index found[2][kBlock];  // the vertex `recent` knew when the block was loaded, or kNoIndex
   RecentPositions recent;
   const auto load = [&](std::size_t c, int b) {
     const std::size_t n = std::min(kBlock, part.last - c);
     corner_keys(c, n, keys[b]);
     for (std::size_t i = 0; i < n; ++i) {
       hashes[b][i] = float_key_hash(keys[b][i]);
-      if (recent.find(keys[b][i], hashes[b][i]) == kNoIndex)
+      found[b][i] = recent.find(keys[b][i], hashes[b][i]);
+      if (found[b][i] == kNoIndex)
         part.table.prefetch(hashes[b][i]);
     }
     return n;
@@ -188,18 +191,21 @@ void weld_part(const CornerKeys& corner_keys, Part& part, Index* out,
     const std::size_t next = c + n;
     const std::size_t following = next < part.last ? load(next, b ^ 1) : 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const FloatKey& key = keys[b][i];
-      Index v = recent.find(key, hashes[b][i]);
-      if (v == kNoIndex) {
-        bool added = false;
-        v = part.table.find_or_add(key, hashes[b][i], added);
-        if (added && positions != nullptr)
-          positions->push_back(to_point(key));
-        else if (added)
-          part.keys.push_back(key);
-        recent.remember(key, hashes[b][i], v);
+      Index v = found[b][i];
+      if (v == kNoIndex) {  // (a position of this block may have come in since the load)
+        const FloatKey& key = keys[b][i];
+        v = recent.find(key, hashes[b][i]);
+        if (v == kNoIndex) {
+          bool added = false;
+          v = part.table.find_or_add(key, hashes[b][i], added);
+          if (added && positions != nullptr)
+            positions->push_back(to_point(key));
+          else if (added)
+            part.keys.push_back(key);
+          recent.remember(key, hashes[b][i], v);
+        }
       }
-      out[c + i] = v;
+      out.push_back(v);
     }
     c = next;
     n = following;
@@ -246,11 +252,6 @@ void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, S
   const unsigned n = static_cast<unsigned>(
       std::clamp<std::size_t>(corners / kLeastPart, 1, std::max(threads, 1u)));
   reserve_huge(soup.corner_vertices, corners);
-  soup.corner_vertices.resize(corners);
-  reserve_huge(soup.face_begin, triangles + 1);
-  soup.face_begin.resize(triangles + 1);
-  Index* out = soup.corner_vertices.data();
-
   // A closed triangle mesh has about half as many vertices as triangles, a part border a few more.
   reserve_huge(soup.positions, corners / 5 + 16);
   std::vector<Part> parts;
@@ -258,25 +259,27 @@ void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, S
   for (unsigned k = 0; k < n; ++k)
     parts.emplace_back(3 * part_begin(triangles, n, k), 3 * part_begin(triangles, n, k + 1));
   run_parts(n, [&](unsigned k) {
-    weld_part(corner_keys, parts[k], out, k == 0 ? &soup.positions : nullptr);
-    // The face offsets of the part's triangles, while its corners are in cache.
-    for (std::size_t f = parts[k].first / 3; f < parts[k].last / 3; ++f)
-      soup.face_begin[f] = static_cast<Index>(3 * f);
+    Part& part = parts[k];
+    if (k == 0) {
+      weld_part(corner_keys, part, soup.corner_vertices, &soup.positions);
+      return;
+    }
+    reserve_huge(part.corners, part.last - part.first);
+    weld_part(corner_keys, part, part.corners, nullptr);
   });
-  soup.face_begin[triangles] = static_cast<Index>(3 * triangles);
-
   merge_parts(parts, soup.positions);
   for (Part& part : parts) {
     part.table.release();
     std::vector<FloatKey>().swap(part.keys);
+    for (const Index v : part.corners)
+      soup.corner_vertices.push_back(part.vertex[v]);
+    std::vector<Index>().swap(part.corners);
   }
-  run_parts(n, [&](unsigned k) {
-    if (k == 0)
-      return;
-    const std::vector<Index>& vertex = parts[k].vertex;
-    for (std::size_t c = parts[k].first; c < parts[k].last; ++c)
-      out[c] = vertex[out[c]];
-  });
+  // Corner c of the file is soup corner c: triangle f begins at corner 3f.
+  soup.face_begin.clear();
+  reserve_huge(soup.face_begin, triangles + 1);
+  for (std::size_t f = 0; f <= triangles; ++f)
+    soup.face_begin.push_back(static_cast<Index>(3 * f));
 }
 
 }  // namespace meshbridge::detail

@@ -35,6 +35,9 @@ bool equals_ignoring_case(std::string_view word, std::string_view lower) {
   return true;
 }
 
+//! The stretch of the file a binary STL reader keeps mapped behind and ahead of it.
+constexpr std::size_t kWindow = std::size_t(8) << 20;
+
 void read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup, ReadInfo& info) {
   const auto* bytes = reinterpret_cast<const unsigned char*>(file.data()) + 84;
   info.declared_faces = triangles;
@@ -56,15 +59,17 @@ void read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup, Re
         out[i][k] = bits[k] == 0x80000000u ? 0 : bits[k];  // -0 is +0 (float_key)
     }
     // Every 8 MiB of the file, the 8 MiB read before go back to the kernel (see release_before),
-    // so the map adds a window to the peak memory, not the whole file. (At the start of a part
-    // that window may end another part; a page it still reads is read back from the cache.)
-    constexpr std::size_t kWindow = std::size_t(8) << 20;
+    // so the map adds a window to the peak memory, not the whole file, and the 8 MiB after the
+    // next are mapped in one call. (At the start of a part that window may end another part; a
+    // page it still reads is read back from the cache.)
     const std::size_t from = 84 + 50 * (first / 3), to = 84 + 50 * ((first + count + 2) / 3);
     if (from / kWindow != to / kWindow) {
       const char* border = file.data() + to / kWindow * kWindow;
       file.release_between(border - kWindow, border);
+      file.prefault_between(border + kWindow, border + 2 * kWindow);
     }
   };
+  file.prefault_between(file.data(), file.data() + 2 * kWindow);
   weld_triangle_corners(3 * std::size_t(triangles), keys, soup, reading_threads());
 }
 
