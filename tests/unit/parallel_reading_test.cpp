@@ -265,6 +265,36 @@ TEST_F(ParallelReading, obj_with_relative_indices_groups_and_colours_reads_the_s
   expect_same_for_every_thread_count(file);
 }
 
+TEST_F(ParallelReading, obj_whose_faces_the_size_estimate_misses_reads_every_record) {
+  // Over 8 MiB, so the reader estimates its records from 32 stretches of 64 KiB, one at the
+  // start of each 32nd of the file. Every face here lies between two stretches: the estimate
+  // counts none, and the arrays must grow as the faces come.
+  constexpr std::size_t kStratum = 300 * 1024, kSize = 32 * kStratum;
+  std::string text;
+  std::size_t vertices = 0, faces = 0;
+  while (text.size() < kSize) {
+    const std::size_t at = text.size() % kStratum;
+    if (text.size() / kStratum == 5 && at > 100 * 1024 && at < 290 * 1024) {
+      text += "f 1 2 " + std::to_string(vertices) + "\n";
+      ++faces;
+    } else {
+      text += "v " + std::to_string(vertices) + " 0.5 0.25\n";
+      ++vertices;
+    }
+  }
+  const std::string file = path("faces_between_samples.obj");
+  std::ofstream(file, std::ios::binary) << text;
+  const Reading one = read_with(1, file);
+  ASSERT_EQ(one.error, "");
+  EXPECT_EQ(one.soup.num_vertices(), vertices);
+  EXPECT_EQ(one.soup.num_faces(), faces);
+  EXPECT_GT(faces, 5000u);
+  EXPECT_EQ(one.info.faces_kept, faces);
+  EXPECT_EQ(one.soup.polygon(faces - 1)[0], 0u);
+  EXPECT_EQ(one.soup.polygon(faces - 1)[2], one.soup.polygon(0)[2]);  // the last vertex before
+  expect_same_for_every_thread_count(file);
+}
+
 TEST_F(ParallelReading, obj_errors_in_later_parts_are_named_as_by_one_thread) {
   const Soup board = models::checkerboard_cubes(30);
   const std::string clean = path("clean.obj");

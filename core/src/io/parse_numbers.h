@@ -25,6 +25,15 @@ inline const char* parse_double(const char* first, const char* last, double& val
 //! Parses a decimal integer (optional '+' or '-') at [first, last) into a 64-bit value.
 //! Returns the end of the number, or nullptr if none starts there or it overflows int64.
 inline const char* parse_integer(const char* first, const char* last, std::int64_t& value) {
+  // Fast path: up to 18 digits (no overflow possible), not followed by another digit.
+  std::uint64_t digits = 0;
+  const char* p = first;
+  while (p != last && p - first < 18 && static_cast<unsigned>(*p - '0') < 10)
+    digits = 10 * digits + static_cast<unsigned>(*p++ - '0');
+  if (p != first && (p == last || static_cast<unsigned>(*p - '0') >= 10)) {
+    value = static_cast<std::int64_t>(digits);
+    return p;
+  }
   if (first != last && *first == '+') {
     ++first;
     if (first != last && (*first == '-' || *first == '+'))

@@ -228,7 +228,7 @@ class ObjReader {
 };
 
 // Counts 'v' and 'f' records (and the blanks of the 'f' lines, a bound on their corners) with
-// memchr, so the soup is allocated once: a few percent of the parse instead of reallocations.
+// memchr, so the soup is allocated once (see estimate_records).
 struct RecordCounts {
   std::size_t vertices = 0, faces = 0, corners = 0;
 };
@@ -270,6 +270,35 @@ const char* line_start_after(const char* p, const char* first, const char* end) 
     const char* next = static_cast<const char*>(std::memchr(p, '\n', end - p));
     p = next == nullptr ? end : next + 1;
   }
+}
+
+// The record counts of [first, last), to reserve the soup once. A small range is counted; a
+// large one is counted in kSlices stretches spread evenly over it (about 2 MiB in all) and scaled
+// to its size with a margin, so the file is read once, not twice. (A file whose lines differ
+// much from one stretch to the next can still exceed the estimate: the arrays then grow.)
+RecordCounts estimate_records(const char* first, const char* last) {
+  constexpr std::size_t kCountBelow = std::size_t(8) << 20;
+  constexpr std::size_t kSlices = 32, kSlice = std::size_t(64) << 10;
+  const std::size_t size = static_cast<std::size_t>(last - first);
+  if (size <= kCountBelow)
+    return count_records(first, last);
+  RecordCounts sampled;
+  std::size_t sampled_bytes = 0;
+  for (std::size_t k = 0; k < kSlices; ++k) {
+    const char* a = line_start_after(first + size / kSlices * k, first, last);
+    const char* b = line_start_after(std::min(a + kSlice, last), first, last);
+    const RecordCounts n = count_records(a, b);
+    sampled.vertices += n.vertices;
+    sampled.faces += n.faces;
+    sampled.corners += n.corners;
+    sampled_bytes += static_cast<std::size_t>(b - a);
+  }
+  const double scale = 1.2 * static_cast<double>(size) /
+                       static_cast<double>(std::max<std::size_t>(sampled_bytes, 1));
+  const auto scaled = [scale](std::size_t n) {
+    return static_cast<std::size_t>(scale * static_cast<double>(n)) + 64;
+  };
+  return {scaled(sampled.vertices), scaled(sampled.faces), scaled(sampled.corners)};
 }
 
 //! One part of the file read on its own thread (parts after the first).
@@ -338,8 +367,7 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
   std::vector<bool> failed(n, false);
   run_parts(n, [&](unsigned k) {
     ObjPart& part = parts[k];
-    part.counts = count_records(part.first, part.last);
-    file.release_between(part.first, part.last);  // the count touched every page
+    part.counts = estimate_records(part.first, part.last);
   });
   RecordCounts total;
   for (const ObjPart& part : parts) {
@@ -384,9 +412,8 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
     if (attributes != nullptr)
       *attributes = MeshAttributes();
   }
-  const RecordCounts counts = count_records(file.data(), file.end());
+  const RecordCounts counts = estimate_records(file.data(), file.end());
   reserve_huge(soup, counts.vertices, counts.faces, counts.corners);
-  file.release_between(file.data(), file.end());  // the counting pass touched every page
   ObjReader(file, file.data(), file.end(), soup, info, attributes).read();
 }
 
