@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "defect_snapshot.h"
-#include "counted.h"
+#include "meshbridge/counted.h"
 
 #include "meshbridge/validate.h"
 

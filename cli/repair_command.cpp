@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
-#include "counted.h"
+#include "meshbridge/counted.h"
 #include "paths.h"
 #include "pictures.h"
 #include "printer_options.h"

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/repair.h"
 
+#include "meshbridge/counted.h"
+
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/validate.h"
 
@@ -296,20 +298,21 @@ std::string to_text(const RepairReport& r) {
   std::ostringstream out;
   const CloseGapsReport& g = r.gaps;
   if (g.tolerance > 0) {
-    out << "gaps (tolerance " << g.tolerance << "): " << g.vertices_welded
-        << " vertices welded (largest move " << g.largest_weld_distance << ", " << g.welds_refused
-        << " refused: same polygon), " << g.t_junctions_closed << " T-junctions closed ("
-        << g.sides_split << " sides split)\n";
+    out << "gaps (tolerance " << g.tolerance << "): " << counted(g.vertices_welded, "vertex")
+        << " welded (largest move " << g.largest_weld_distance << ", " << g.welds_refused
+        << " refused: same polygon), " << counted(g.t_junctions_closed, "T-junction") << " closed ("
+        << counted(g.sides_split, "side") << " split)\n";
   } else {
     out << "gaps: not closed (tolerance 0)\n";
   }
   out << "faces: " << r.faces_in << " in, " << r.faces_out << " out (" << r.faces_set_aside
       << " set aside, " << r.faces_split << " split into " << r.faces_added_by_split << " more, "
-      << r.duplicate_faces_removed << " duplicates and " << r.degenerate_faces_removed
+      << counted(r.duplicate_faces_removed, "duplicate") << " and " << r.degenerate_faces_removed
       << " degenerate removed, " << r.faces_flipped << " flipped, " << r.faces_detached
       << " detached)\n";
-  out << "vertices: " << r.vertices_in << " in, " << r.vertices_out << " out (" << r.vertices_split
-      << " copies from split fans, " << r.isolated_vertices_removed << " isolated removed)\n";
+  out << "vertices: " << r.vertices_in << " in, " << r.vertices_out << " out ("
+      << counted(r.vertices_split, "copy") << " from split fans, " << r.isolated_vertices_removed
+      << " isolated removed)\n";
   out << "sides: " << r.sides_cut << " cut on singular edges, " << r.sides_cut_for_orientation
       << " cut for orientation, " << r.sides_cut_to_stay_manifold << " cut to stay manifold ("
       << r.sides_paired_with_copies << " paired with copies instead), " << r.sides_stitched
@@ -317,7 +320,7 @@ std::string to_text(const RepairReport& r) {
   const FillHolesReport& h = r.holes;
   if (h.max_edges > 0) {
     out << "holes (up to " << h.max_edges << " edges): " << h.holes_filled << " filled with "
-        << h.faces_added << " new triangles, " << h.holes_left << " left open\n";
+        << counted(h.faces_added, "new triangle") << ", " << h.holes_left << " left open\n";
   } else {
     out << "holes: not filled (off)\n";
   }

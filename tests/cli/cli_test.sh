@@ -684,7 +684,7 @@ fill_holes)
   # Face colours: the input's stay with their faces, the new triangle takes the default colour.
   printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 200 0 0 255\n3 0 1 3 0 200 0 255\n3 0 3 2 0 0 200 255\n' >"$work/tet.off"
   expect_exit 0 "$mb" repair "$work/tet.off" "$work/tet_out.off" --fill-holes
-  expect_in "$work/out" "1 filled with 1 new triangles"
+  expect_in "$work/out" "1 filled with 1 new triangle,"
   [ "$(sed -n 7,10p "$work/tet_out.off" | awk '{print $5, $6, $7, $8}' | tr '\n' ' ')" = \
     "200 0 0 255 0 200 0 255 0 0 200 255 0 0 0 255 " ] || fail "face colours: $(cat "$work/tet_out.off")"
   # batch: the filled file counts as repaired and is closed; a closed one stays clean.

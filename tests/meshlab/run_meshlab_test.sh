@@ -349,7 +349,7 @@ case "$mode" in
     server log.txt -i in.stl -o repaired.stl -s "$scripts/repair.mlx" || status=$?
     cat log.txt
     expect_eq "meshlabserver status" "$status" 0
-    split=$(sed -n 's/^.*vertices: [0-9]* in, [0-9]* out (\([0-9]*\) copies from split fans.*/\1/p' log.txt | tail -n1)
+    split=$(sed -n 's/^.*vertices: [0-9]* in, [0-9]* out (\([0-9]*\) cop[a-z]* from split fans.*/\1/p' log.txt | tail -n1)
     # The STL meshlabserver wrote, read back as every STL reader does: the log must have said so.
     "$MLCHECK" to-off repaired.stl reread.off
     "$MLCHECK" report reread.off >reread.txt
