@@ -80,7 +80,7 @@ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DMESHBRIDGE_BUILD_BENCH=O
   -DMESHLAB_SDK_DIR="$sdk_dir" "${launcher[@]}" \
   | grep "meshbridge-bench" >&2 || true
 targets=(meshbridge-bench)
-[ "$io" -gt 0 ] && targets+=(meshbridge meshbridge-io-bench)
+[ "$io" -gt 0 ] && targets+=(meshbridge meshbridge-io-bench meshbridge-parse-bench)
 cmake --build "$build_dir" --target "${targets[@]}" --parallel "$(nproc)" >/dev/null
 
 # --- 3. run ----------------------------------------------------------------------------------

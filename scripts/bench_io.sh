@@ -4,7 +4,8 @@
 # every tool reads (and writes) the same file as its own process, side by side in one run:
 #
 #   floor              mmap + one pass (text: every number through std::from_chars)
-#   MeshBridge parse   read_soup alone (meshbridge-io-bench parse)
+#   MeshBridge parse   read_soup alone (meshbridge-parse-bench parse: built with the CLI's
+#                      operator new, so it allocates as `meshbridge check` does)
 #   OpenMesh read      stock OpenMesh::IO::read_mesh into a PolyMesh
 #   meshbridge check   the CLI: read + detect + print
 #   OpenMesh r+w       read_mesh + write_mesh (binary PLY/STL)
@@ -17,11 +18,12 @@
 # meshbridge check/repair also run pinned to one core (taskset -c 0): the 1-core figures; and
 # parse, check and repair with MESHBRIDGE_THREADS=2 (the readers' two-part reading): 2 threads.
 # Ratios are to OpenMesh read (check, parse) and OpenMesh read + write (repair, meshlabserver).
-# Also prints the in-process split (meshbridge-io-bench split: parse vs floor, detect, repair,
-# write; best of 3).
+# Also prints the in-process split (meshbridge-parse-bench split: parse vs floor alternating 9
+# times, then detect, repair, write, best of 3).
 #
-# Usage: scripts/bench_io.sh BUILD_DIR OUT.md [--quick]   (BUILD_DIR has cli/meshbridge and
-#        bench/meshbridge-io-bench; --quick: 1M files only, PLY and STL, one round)
+# Usage: scripts/bench_io.sh BUILD_DIR OUT.md [--quick]   (BUILD_DIR has cli/meshbridge,
+#        bench/meshbridge-io-bench and bench/meshbridge-parse-bench; --quick: 1M files only, PLY
+#        and STL, one round)
 # Environment: ROUNDS, DATA_DIR (default /tmp/meshbridge_bench_io), FORMATS, MODELS.
 set -euo pipefail
 
@@ -30,6 +32,7 @@ out="${2:?usage: scripts/bench_io.sh BUILD_DIR OUT.md [--quick]}"
 quick="${3:-}"
 meshbridge="$build/cli/meshbridge"
 iobench="$build/bench/meshbridge-io-bench"
+parsebench="$build/bench/meshbridge-parse-bench"
 data="${DATA_DIR:-/tmp/meshbridge_bench_io}"
 rounds="${ROUNDS:-2}"
 formats="${FORMATS:-obj off ply stl}"
@@ -39,7 +42,7 @@ if [ "$quick" = "--quick" ]; then
   formats="ply stl"
   models="checkerboard_1m torus_1m"
 fi
-for tool in "$meshbridge" "$iobench" /usr/bin/time; do
+for tool in "$meshbridge" "$iobench" "$parsebench" /usr/bin/time; do
   [ -x "$tool" ] || { echo "bench_io: missing $tool" >&2; exit 1; }
 done
 have_meshlab=0
@@ -86,9 +89,9 @@ for model in $models; do
     [ -f "$f" ] || continue
     echo "bench_io: $model.$fmt" >&2
     for ((r = 0; r < rounds; ++r)); do
-      run "$model.$fmt floor" "$iobench" floor "$f"
-      run "$model.$fmt parse" "$iobench" parse "$f"
-      run "$model.$fmt parse_2threads" env MESHBRIDGE_THREADS=2 "$iobench" parse "$f"
+      run "$model.$fmt floor" "$parsebench" floor "$f"
+      run "$model.$fmt parse" "$parsebench" parse "$f"
+      run "$model.$fmt parse_2threads" env MESHBRIDGE_THREADS=2 "$parsebench" parse "$f"
       run "$model.$fmt openmesh_read" "$iobench" openmesh-read "$f"
       run "$model.$fmt check" "$meshbridge" check "$f"
       run "$model.$fmt check_1core" taskset -c 0 "$meshbridge" check "$f"
@@ -102,7 +105,7 @@ for model in $models; do
       fi
       rm -f "$tmp/om.$fmt" "$tmp/mb.$fmt" "$tmp/ml.$fmt"
     done
-    "$iobench" split "$f" 3 >>"$tmp/split" 2>&1 || echo "split $f failed" >>"$tmp/split"
+    "$parsebench" split "$f" 3 >>"$tmp/split" 2>&1 || echo "split $f failed" >>"$tmp/split"
   done
 done
 
