@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# README's main job: installs what is missing, builds everything, and runs Debian's real
-# meshlabserver (MeshLab 2020.09) with the MeshBridge plugin on the bundled 24-prism model (the
-# paper's model 2): the detection report and the repair counts from MeshLab's log, the defect
-# layer and the repaired mesh under out/. Then the same through the command-line tool.
+# README's main job: installs what is missing, builds everything (core, CLI, MeshLab plugin,
+# bench, Python module; no tests) into build/release, and runs Debian's real meshlabserver
+# (MeshLab 2020.09) with the MeshBridge plugin on the bundled 24-prism model (the paper's
+# model 2): the detection report and the repair counts from MeshLab's log, the defect layer and
+# the repaired mesh under out/. Then the same through the command-line tool and the Python module.
 # Usage: bash scripts/demo.sh [MODEL.off]
 set -euo pipefail
 # MeshLab's log escapes < > & as HTML entities; print them as written.
@@ -16,7 +17,8 @@ jobs="$(nproc 2>/dev/null || echo 2)"
 bash scripts/install_deps.sh
 sdk="$(bash scripts/setup_meshlab_sdk.sh | tail -n 1)"
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DMESHBRIDGE_BUILD_TESTS=OFF \
-  -DMESHBRIDGE_BUILD_PLUGIN=ON -DMESHLAB_SDK_DIR="$sdk" >/dev/null
+  -DMESHBRIDGE_BUILD_CLI=ON -DMESHBRIDGE_BUILD_PLUGIN=ON -DMESHBRIDGE_BUILD_BENCH=ON \
+  -DMESHBRIDGE_BUILD_PYTHON=ON -DMESHLAB_SDK_DIR="$sdk" >/dev/null
 cmake --build build/release --parallel "$jobs" >/dev/null
 tool=build/release/cli/meshbridge
 name="$(basename "${model%.*}")"
@@ -46,6 +48,22 @@ echo
 echo "== meshbridge snapshot: the defects as a picture, before and after repair"
 "$tool" snapshot "$model" "$out/$name.defects.png" || [ $? -eq 1 ]
 "$tool" snapshot "$out/$name.repaired.ply" "$out/$name.repaired.png" || [ $? -eq 1 ]
+echo
+echo "== python: meshbridge.read + check + repair on numpy arrays (build/release/python)"
+PYTHONPATH="$root/build/release/python" /usr/bin/python3 - "$model" <<'PYTHON'
+import sys
+import meshbridge
+
+soup = meshbridge.read(sys.argv[1])
+before = meshbridge.check(soup)
+vertices, faces, report = meshbridge.repair(soup.vertices, soup.faces)
+after = meshbridge.check(vertices, faces)
+print(f"read {len(soup.faces)} faces: {before['singular_edges']} singular edges, "
+      f"{before['singular_vertices']} singular vertices")
+print(f"repaired: {report['faces_out']} faces, {report['vertices_out']} vertices "
+      f"({report['vertices_split']} copies from split fans); after: {after['singular_edges']} "
+      f"singular edges, {after['singular_vertices']} singular vertices")
+PYTHON
 echo
 echo "wrote $out/$name.defects.obj (defect layer), $out/$name.repaired.ply (repaired mesh),"
 echo "$out/$name.defects.png and $out/$name.repaired.png (pictures)"
