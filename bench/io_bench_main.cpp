@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
     if (command == "floor" && argc == 3)
       return floor_pass(argv[2]);
     if (command == "split" && (argc == 3 || argc == 4))
-      return split(argv[2], argc == 4 ? std::atoi(argv[3]) : 5);
+      return split(argv[2], std::max(1, argc == 4 ? std::atoi(argv[3]) : 5));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "meshbridge-io-bench %s: %s\n", command.c_str(), e.what());
     return 1;

@@ -59,7 +59,7 @@ void throw_invalid_face(const Soup& soup, std::size_t f) {
 void validate_soup(const Soup& soup) {
   detail::validate_layout(soup);
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    if (!detail::face_is_valid(soup, f))
+    if (!detail::is_valid_face(soup, f))
       detail::throw_invalid_face(soup, f);
   }
 }

@@ -15,7 +15,7 @@ void validate_layout(const Soup& soup);
 
 //! Face f has at least 3 corners, within the corner list, each naming a vertex of the soup.
 //! \pre validate_layout(soup) passed; f < soup.num_faces()
-inline bool face_is_valid(const Soup& soup, std::size_t f) {
+inline bool is_valid_face(const Soup& soup, std::size_t f) {
   const Index begin = soup.face_begin[f], end = soup.face_begin[f + 1];
   if (end < begin || end - begin < 3 || end > soup.corner_vertices.size())
     return false;
@@ -28,7 +28,7 @@ inline bool face_is_valid(const Soup& soup, std::size_t f) {
 }
 
 //! Throws the InvalidSoupError that names what is wrong with face f.
-//! \pre validate_layout(soup) passed; !face_is_valid(soup, f)
+//! \pre validate_layout(soup) passed; !is_valid_face(soup, f)
 [[noreturn]] void throw_invalid_face(const Soup& soup, std::size_t f);
 
 }  // namespace meshbridge::detail

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/repair.h"
+#include "meshbridge/counted.h"
 #include "meshbridge/models/canonical_models.h"
 
 #include "test_support.h"
@@ -56,6 +57,19 @@ TEST(Repair, hourglass_splits_the_pinch_vertex) {
   EXPECT_EQ(r.mesh.soup.num_faces(), 8u);
   EXPECT_EQ(r.report.components_after, 2u);
   expect_closed_outward(r);
+}
+
+TEST(Repair, report_text_gives_each_count_its_noun_in_the_right_number) {
+  EXPECT_EQ(counted(1, "copy"), "1 copy");
+  EXPECT_EQ(counted(2, "copy"), "2 copies");
+  EXPECT_EQ(counted(2, "key"), "2 keys");
+  EXPECT_EQ(counted(0, "singular vertex"), "0 singular vertices");
+  EXPECT_EQ(counted(1, "new triangle"), "1 new triangle");
+  const RepairResult r = repair(models::hourglass());
+  ASSERT_EQ(r.report.vertices_split, 1u);
+  EXPECT_NE(to_text(r.report).find("(1 copy from split fans, 0 isolated removed)"),
+            std::string::npos)
+      << to_text(r.report);
 }
 
 TEST(Repair, bowtie_becomes_two_triangles) {

@@ -17,15 +17,15 @@ void account_faces(const Soup& soup, ReadInfo& info) {
   std::vector<Index> loop;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     // Fast path: a valid triangle with three different corners (almost every face).
-    const Index begin = soup.face_begin[f];
-    if (soup.face_begin[f + 1] == begin + 3) {
+    const std::size_t begin = soup.face_begin[f];
+    if (soup.face_begin[f + 1] == begin + 3 && begin + 3 <= soup.corner_vertices.size()) {
       const Index a = corners[begin], b = corners[begin + 1], c = corners[begin + 2];
       if (a < vertices && b < vertices && c < vertices && a != b && b != c && a != c) {
         ++info.faces_kept;
         continue;
       }
     }
-    if (!face_is_valid(soup, f))
+    if (!is_valid_face(soup, f))
       throw_invalid_face(soup, f);
     const PolygonView polygon = soup.polygon(f);
     // Collapse consecutive repeats (cyclically), as WorkingSoup does.

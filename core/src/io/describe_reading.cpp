@@ -3,20 +3,14 @@
 
 #include "meshbridge/io.h"
 
+#include "meshbridge/counted.h"
+
 #include <string>
 
 namespace meshbridge {
 
-namespace {
-
-std::string counted(std::size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
-}  // namespace
-
 std::string describe_reading(const ReadInfo& info) {
-  std::string text = counted(info.declared_faces, "face record", "face records") + ": ";
+  std::string text = counted(info.declared_faces, "face record") + ": ";
   if (info.faces_split + info.faces_set_aside + info.faces_dropped_by_reader == 0) {
     text += "all kept";
   } else {
@@ -33,18 +27,17 @@ std::string describe_reading(const ReadInfo& info) {
       text += ", " + std::to_string(info.faces_dropped_by_reader) + " dropped by the reader";
   }
   if (info.strip_joins > 0) {
-    text += " (" +
-            counted(info.strip_joins, "degenerate strip triangle", "degenerate strip triangles") +
-            " linking runs skipped)";
+    text +=
+        " (" + counted(info.strip_joins, "degenerate strip triangle") + " linking runs skipped)";
   }
   if (info.dangling_edges + info.lone_points > 0) {
     text += "; ";
     if (info.dangling_edges > 0)
-      text += counted(info.dangling_edges, "dangling edge", "dangling edges");
+      text += counted(info.dangling_edges, "dangling edge");
     if (info.dangling_edges > 0 && info.lone_points > 0)
       text += ", ";
     if (info.lone_points > 0)
-      text += counted(info.lone_points, "lone point", "lone points");
+      text += counted(info.lone_points, "lone point");
     text += " (not part of the surface, not written back)";
   }
   return text;

@@ -21,7 +21,7 @@
 //     more than the file holds) are a ReadError, checked BEFORE reserving memory: reserve at
 //     most what the remaining bytes can hold. Never read outside [file.data(), file.end()).
 //   - Indices may be out of range or coordinates non-finite: store them as they are (index
-//     kNoIndex for negative ones that do not resolve); the dispatcher's validate_soup names them.
+//     kNoIndex for negative ones that do not resolve); the dispatcher's account_faces names them.
 //
 // WRITERS  `void write_FMT(AtomicOutput& out, const IndexedMesh& mesh,
 //                           const MeshAttributes* attributes, const WriteOptions& options)`

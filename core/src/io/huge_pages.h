@@ -30,7 +30,8 @@ void reserve_huge(std::vector<T>& v, std::size_t n) {
   advise_huge_pages(v.data(), v.capacity() * sizeof(T));
 }
 
-//! Reserves a soup's three arrays for the counts a file declares, on huge pages where granted.
+//! Reserves a soup's three arrays for the counts a file declares (or a reader estimates), on huge
+//! pages where granted.
 inline void reserve_huge(Soup& soup, std::size_t vertices, std::size_t faces, std::size_t corners) {
   reserve_huge(soup.positions, vertices);
   reserve_huge(soup.face_begin, faces + 1);

@@ -115,7 +115,7 @@ class ObjReader {
   }
 
   // One corner "v", "v/vt", "v//vn" or "v/vt/vn": the vertex index, 0-based (kNoIndex if a
-  // relative index points before the first vertex; validate_soup names out-of-range ones).
+  // relative index points before the first vertex; account_faces names out-of-range ones).
   Index corner(const char* what) {
     const std::string_view text = in_.word();
     const char* first = text.data();
@@ -228,7 +228,7 @@ class ObjReader {
 };
 
 // Counts 'v' and 'f' records (and the blanks of the 'f' lines, a bound on their corners) with
-// memchr, so the soup is allocated once (see estimate_records).
+// memchr, to reserve the soup (see estimate_records).
 struct RecordCounts {
   std::size_t vertices = 0, faces = 0, corners = 0;
 };
@@ -286,7 +286,7 @@ RecordCounts estimate_records(const char* first, const char* last) {
   std::size_t sampled_bytes = 0;
   for (std::size_t k = 0; k < kSlices; ++k) {
     const char* a = line_start_after(first + size / kSlices * k, first, last);
-    const char* b = line_start_after(std::min(a + kSlice, last), first, last);
+    const char* b = line_start_after(a + std::min<std::size_t>(kSlice, last - a), first, last);
     const RecordCounts n = count_records(a, b);
     sampled.vertices += n.vertices;
     sampled.faces += n.faces;
@@ -364,7 +364,7 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
                                                   file.data(), file.end());
     parts[k].last = std::max(parts[k].last, parts[k].first);
   }
-  std::vector<bool> failed(n, false);
+  std::vector<char> failed(n, 0);  // one byte per part: written by the parts' threads
   run_parts(n, [&](unsigned k) {
     ObjPart& part = parts[k];
     part.counts = estimate_records(part.first, part.last);
@@ -388,7 +388,7 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
             .read();
       }
     } catch (const ReadError&) {
-      failed[k] = true;
+      failed[k] = 1;
     }
   });
   for (unsigned k = 0; k < n; ++k) {

@@ -58,18 +58,20 @@ void read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup, Re
       for (int k = 0; k < 3; ++k)
         out[i][k] = bits[k] == 0x80000000u ? 0 : bits[k];  // -0 is +0 (float_key)
     }
-    // Every 8 MiB of the file, the 8 MiB read before go back to the kernel (see release_before),
-    // so the map adds a window to the peak memory, not the whole file, and the 8 MiB after the
-    // next are mapped in one call. (At the start of a part that window may end another part; a
-    // page it still reads is read back from the cache.)
+    // Every 8 MiB of the file, the 8 MiB read before go back to the kernel (see
+    // MappedFile::release_before), so the map adds a window to the peak memory, not the whole file,
+    // and the 8 MiB after the next are mapped in one call. (At the start of a part that window may
+    // end another part; a page it still reads is read back from the cache.)
     const std::size_t from = 84 + 50 * (first / 3), to = 84 + 50 * ((first + count + 2) / 3);
     if (from / kWindow != to / kWindow) {
       const char* border = file.data() + to / kWindow * kWindow;
       file.release_between(border - kWindow, border);
-      file.prefault_between(border + kWindow, border + 2 * kWindow);
+      if (static_cast<std::size_t>(file.end() - border) > kWindow)  // (no pointer past the map)
+        file.prefault_between(border + kWindow,
+                              border + std::min<std::size_t>(2 * kWindow, file.end() - border));
     }
   };
-  file.prefault_between(file.data(), file.data() + 2 * kWindow);
+  file.prefault_between(file.data(), file.data() + std::min(file.size(), 2 * kWindow));
   weld_triangle_corners(3 * std::size_t(triangles), keys, soup, reading_threads());
 }
 
