@@ -131,15 +131,14 @@ int main(int argc, char** argv) {
     return app.exit(version);
   } catch (const CLI::ParseError& error) {
     const std::string command = command_name(app);
-    std::cerr << command << ": error: " << error.what() << "\n"
-              << "(see `" << command << " --help`)\n";
+    std::cerr << command << ": error: " << error.what() << " (see `" << command << " --help`)\n";
     return kError;
   } catch (const UsageError& error) {
     std::cerr << command_name(app) << ": error: " << error.what() << "\n";
   } catch (const std::bad_alloc&) {
-    std::cerr << "meshbridge: error: out of memory\n";
+    std::cerr << command_name(app) << ": error: out of memory\n";
   } catch (const std::exception& error) {
-    std::cerr << "meshbridge: error: " << error.what() << "\n";
+    std::cerr << command_name(app) << ": error: " << error.what() << "\n";
   }
   return kError;
 }

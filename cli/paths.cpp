@@ -2,12 +2,14 @@
 #include "paths.h"
 
 #include "meshbridge/errors.h"
+#include "meshbridge/io.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cctype>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 
 namespace meshbridge::cli {
@@ -81,9 +83,15 @@ void check_readable_file(const std::string& path) {
 }
 
 void check_writable_file(const std::string& path) {
-  const std::string folder = folder_of(path);
   struct stat info;
   int error = 0;
+  if (written_in_place(path)) {
+    // A device or pipe (/dev/stdout, a FIFO) is written in place: it only has to take writing.
+    if (::access(path.c_str(), W_OK) != 0)
+      throw WriteError(path + ": cannot write (" + std::strerror(errno) + ")");
+    return;
+  }
+  const std::string folder = folder_of(replaced_file(path));
   if (!stat_path(folder, info, error)) {
     if (error == ENOENT) {
       throw WriteError(path + ": cannot write: the folder '" + first_missing(folder) +
@@ -94,12 +102,17 @@ void check_writable_file(const std::string& path) {
   }
   if (!S_ISDIR(info.st_mode))
     throw WriteError(path + ": cannot write: '" + folder + "' is not a folder");
-  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+  if (stat_path(path, info, error) && S_ISDIR(info.st_mode))
+    throw WriteError(path + ": cannot write: it is a folder");
+  // Creating a file is the test: access() lets root pass where creating still fails (/proc).
+  std::string probe = folder + "/.meshbridge-probe-XXXXXX";
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0) {
     throw WriteError(path + ": cannot write into the folder '" + folder + "' (" +
                      std::strerror(errno) + ")");
   }
-  if (stat_path(path, info, error) && S_ISDIR(info.st_mode))
-    throw WriteError(path + ": cannot write: it is a folder");
+  ::close(fd);
+  ::unlink(probe.c_str());
 }
 
 }  // namespace meshbridge::cli

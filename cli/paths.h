@@ -23,7 +23,9 @@ bool ends_with_png(std::string path);
 void check_readable_file(const std::string& path);
 
 //! Throws WriteError naming `path` when a file cannot be created there: its folder does not
-//! exist or is not a folder, the folder refuses writing (the OS reason), or `path` is a folder.
+//! exist or is not a folder, creating a file in it fails (the OS reason; tried with a probe
+//! file that is removed at once), or `path` is a folder. An existing device or pipe (/dev/stdout,
+//! a FIFO) only has to be writable: it is written in place.
 void check_writable_file(const std::string& path);
 
 }  // namespace meshbridge::cli

@@ -98,7 +98,8 @@ int run_repair(RepairArguments& arguments) {
     apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
                    separate_summary);
     write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
-    if (is_stl_path(out))
+    std::error_code status_error;               // (a device or pipe cannot be read back)
+    if (is_stl_path(out) && std::filesystem::is_regular_file(out, status_error))
       reread = detect_as_reread(out);
     if (!arguments.report.empty()) {
       ReportJsonOptions json;

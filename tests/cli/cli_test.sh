@@ -60,9 +60,9 @@ check_exit_codes)
   expect_exit 1 "$mb" check "$models/twocubes.obj"
   expect_in "$work/out" "singular edges: 1"
   expect_exit 2 "$mb" check "$work/missing.obj"
-  expect_in "$work/err" "missing.obj: cannot read: no such file"
+  expect_in "$work/err" "meshbridge check: error: $work/missing.obj: cannot read: no such file"
   expect_exit 2 "$mb" check
-  expect_in "$work/err" "meshbridge check: error: FILE is required"
+  expect_in "$work/err" "meshbridge check: error: FILE is required (see \`meshbridge check --help\`)"
   expect_exit 2 "$mb" frobnicate
   expect_exit 0 "$mb" --help
   mkdir -p "$work/a_folder"
@@ -264,6 +264,31 @@ atomic_output)
   ls -a "$work" | grep -q tmp && fail "temporary file left behind"
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/keep.obj"
   expect_in "$work/keep.obj" "v "
+  # A pipe or a device is written in place, never replaced by a file (as root, renaming over
+  # /dev/stdout or a device node would replace it); a symbolic link stays one.
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/plain.ply"
+  mkfifo "$work/pipe.ply"
+  cat "$work/pipe.ply" >"$work/from_pipe.ply" &
+  reader=$!
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/pipe.ply"
+  wait "$reader"
+  [ -p "$work/pipe.ply" ] || fail "the FIFO was replaced by a file"
+  cmp -s "$work/plain.ply" "$work/from_pipe.ply" || fail "the FIFO got other bytes than the file"
+  "$mb" repair "$models/twocubes.obj" "$work/r.ply" --report /dev/stdout 2>"$work/err" |
+    cat >"$work/piped.txt" || fail "repair --report /dev/stdout failed: $(cat "$work/err")"
+  head -n 1 "$work/piped.txt" >"$work/report_line.json"
+  [ "$(json_field "$work/report_line.json" kind)" = repair ] || fail "no report on the pipe"
+  expect_in "$work/piped.txt" "$work/r.ply"  # the summary follows it
+  [ -L /dev/stdout ] || fail "/dev/stdout is no longer a symbolic link"
+  echo "old content" >"$work/real.obj"
+  ln -s real.obj "$work/link.obj"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/link.obj"
+  [ -L "$work/link.obj" ] || fail "the symbolic link was replaced by a file"
+  expect_in "$work/real.obj" "v "
+  # A report that cannot be created is found before anything is written.
+  expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/early.ply" --report /proc/report.json
+  expect_in "$work/err" "meshbridge repair: error: /proc/report.json: cannot write into the folder '/proc'"
+  [ ! -e "$work/early.ply" ] || fail "the mesh was written though the report cannot be"
   ;;
 batch)
   mkdir -p "$work/in/sub"
@@ -710,7 +735,7 @@ pictures_module)
   expect_exit 1 "$work/alone/meshbridge" check "$models/twocubes.obj"
   expect_in "$work/out" "singular edges: 1"
   expect_exit 2 "$work/alone/meshbridge" snapshot "$models/twocubes.obj" "$work/a.png"
-  expect_in "$work/err" "meshbridge: error: cannot draw pictures: meshbridge_pictures module not found in $work/alone, "
+  expect_in "$work/err" "meshbridge snapshot: error: cannot draw pictures: meshbridge_pictures module not found in $work/alone, "
   expect_in "$work/err" "/meshbridge (looked for meshbridge_pictures"
   [ ! -e "$work/a.png" ] || fail "snapshot without the module wrote a PNG"
   # --before-after is checked before the repair: no output either.
@@ -721,7 +746,7 @@ pictures_module)
   # A module that is not a shared library: the loader's reason, no crash.
   echo "not a library" >"$work/alone/$(basename "$(ls "$(dirname "$mb")"/meshbridge_pictures.*)")"
   expect_exit 2 "$work/alone/meshbridge" snapshot "$models/twocubes.obj" "$work/a.png"
-  expect_in "$work/err" "meshbridge: error: cannot draw pictures: $work/alone/meshbridge_pictures"
+  expect_in "$work/err" "meshbridge snapshot: error: cannot draw pictures: $work/alone/meshbridge_pictures"
   [ ! -e "$work/a.png" ] || fail "snapshot with a broken module wrote a PNG"
   ;;
 *)

@@ -110,14 +110,23 @@ Soup read_soup(const std::string& path, ReadInfo* info = nullptr,
 //! kNoIndex, come last)
 MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& mesh);
 
+//! True if write_mesh and write_file_atomically write `path` in place rather than through a
+//! temporary file renamed over it: a path under /dev/ (/dev/stdout, /dev/null) or an existing
+//! file that is neither a regular file nor a folder (a device, a FIFO).
+bool written_in_place(const std::string& path);
+//! The file that writing `path` replaces: the file a symbolic link at `path` points to (the
+//! link stays), else `path` itself.
+std::string replaced_file(const std::string& path);
+
 //! True if `path` has an extension read_soup/write_mesh handle (.obj .off .ply .stl, any case).
 bool is_supported_mesh_file(const std::string& path);
 
 //! Writes a file the way write_mesh does (MeshBridge's one atomic-write helper): `fill` writes
 //! the whole content to the temporary path it is given (a unique name beside `path`), which is
 //! then renamed over `path`. If `fill` throws, the temporary file is removed, `path` is
-//! untouched and the exception is passed on. For callers that write through a library taking a
-//! file name (a PNG through Qt, a report).
+//! untouched and the exception is passed on. A device or pipe `path` is written in place (`fill`
+//! is given `path` itself). For callers that write through a library taking a file name (a PNG
+//! through Qt, a report).
 //! \throw WriteError naming `path` (no directory, no permission, rename failed)
 void write_file_atomically(const std::string& path,
                            const std::function<void(const std::string& temporary_path)>& fill);
@@ -140,7 +149,9 @@ struct WriteOptions {
 //! and `face_origin` where the format holds them (OFF faces, PLY vertices and faces); a face
 //! with origin kNoIndex (added by hole filling) gets the default colour.
 //! The file is written under a unique temporary name beside `path` and renamed on success, so
-//! on any error the previous file at `path` is untouched and no temporary file stays.
+//! on any error the previous file at `path` is untouched and no temporary file stays. A `path`
+//! that is a device or a pipe (/dev/stdout, a FIFO) is written in place, never replaced
+//! (written_in_place()); through a symbolic link, the file it points to is replaced.
 //! \throw WriteError naming the path and the reason
 void write_mesh(const std::string& path, const IndexedMesh& mesh,
                 const MeshAttributes* attributes = nullptr, const WriteOptions& options = {});

@@ -2,14 +2,40 @@
 #include "io/atomic_write.h"
 
 #include "meshbridge/errors.h"
+#include "meshbridge/io.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <random>
+
+namespace meshbridge {
+
+bool written_in_place(const std::string& path) {
+  if (path.rfind("/dev/", 0) == 0)
+    return true;
+  struct stat info {};
+  return ::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode);
+}
+
+std::string replaced_file(const std::string& path) {
+  struct stat info {};
+  if (::lstat(path.c_str(), &info) != 0 || !S_ISLNK(info.st_mode))
+    return path;
+  char* resolved = ::realpath(path.c_str(), nullptr);
+  if (resolved == nullptr)  // a dangling link: the rename replaces the link itself
+    return path;
+  std::string target(resolved);
+  std::free(resolved);
+  return target;
+}
+
+}  // namespace meshbridge
 
 namespace meshbridge::detail {
 
@@ -83,7 +109,14 @@ void AtomicOutput::close() {
 }
 
 void write_atomically(const std::string& path, const std::function<void(AtomicOutput&)>& fill) {
-  const std::string temporary = create_temporary(path);
+  if (written_in_place(path)) {  // never replace a device node or /dev/stdout with a file
+    AtomicOutput output(path, path);
+    fill(output);
+    output.close();
+    return;
+  }
+  const std::string target = replaced_file(path);  // a symbolic link stays one
+  const std::string temporary = create_temporary(target);
   try {
     AtomicOutput output(temporary, path);
     fill(output);
@@ -92,7 +125,7 @@ void write_atomically(const std::string& path, const std::function<void(AtomicOu
     std::remove(temporary.c_str());
     throw;
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+  if (std::rename(temporary.c_str(), target.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
     std::remove(temporary.c_str());
     throw WriteError(path + ": cannot move the written file into place (" + reason + ")");

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The one way MeshBridge writes a file: under a unique temporary name beside the target, renamed
-// over the target only when everything was written.
+// over the target only when everything was written. A target that is a device or a pipe
+// (/dev/null, /dev/stdout, a FIFO) is written in place instead: renaming over it would replace
+// the device node with a file. A symbolic link stays one: the file it points to is replaced.
 
 #include <cstddef>
 #include <cstdio>
@@ -41,6 +43,8 @@ class AtomicOutput {
 //! temporary file is `.<name>.<pid>.<counter>.<random>.tmp.<ext>` in the target's directory
 //! (unique per process and call, created with O_EXCL), then it is renamed over `path`.
 //! If `fill` throws or any step fails, the temporary file is removed and `path` is untouched.
+//! A `path` that written_in_place() is written directly, with no temporary file (what reached a
+//! pipe before a failure stays there); a symbolic link's target (replaced_file()) is replaced.
 //! \throw WriteError naming `path` and the reason (whatever `fill` throws is passed on)
 void write_atomically(const std::string& path, const std::function<void(AtomicOutput&)>& fill);
 
