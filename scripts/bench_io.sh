@@ -160,8 +160,9 @@ load="$(cut -d' ' -f1-3 /proc/loadavg)"
       }
     }' "$tmp/raw"
   echo
-  echo "In one process, best of 3 (meshbridge-io-bench split): parse next to its floor, and the"
-  echo "parse / compute / write split of \`repair\` (detect is the report \`check\` prints)."
+  echo "In one process (meshbridge-parse-bench split): parse next to its floor, alternating 9 times"
+  echo "(fastest of each, medians in brackets), then the parse / compute / write split of \`repair\`,"
+  echo "best of 3 (detect is the report \`check\` prints)."
   echo
   sed 's/^/    /' "$tmp/split"
 } >"$out"
