@@ -82,6 +82,12 @@ void check_readable_file(const std::string& path) {
     throw ReadError(path + ": cannot read (" + std::strerror(errno) + ")");
 }
 
+bool is_standard_output(const std::string& path) {
+  struct stat file, output;
+  return ::stat(path.c_str(), &file) == 0 && ::fstat(STDOUT_FILENO, &output) == 0 &&
+         file.st_dev == output.st_dev && file.st_ino == output.st_ino;
+}
+
 void check_writable_file(const std::string& path) {
   struct stat info;
   int error = 0;

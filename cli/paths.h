@@ -22,6 +22,10 @@ bool ends_with_png(std::string path);
 //! problems (format, content) are left to the reader.
 void check_readable_file(const std::string& path);
 
+//! True if `path` is the file, pipe or terminal standard output goes to (/dev/stdout, or the file
+//! stdout is redirected into).
+bool is_standard_output(const std::string& path);
+
 //! Throws WriteError naming `path` when a file cannot be created there: its folder does not
 //! exist or is not a folder, creating a file in it fails (the OS reason; tried with a probe
 //! file that is removed at once), or `path` is a folder. An existing device or pipe (/dev/stdout,

@@ -65,7 +65,10 @@ int run_repair(RepairArguments& arguments) {
   }
   check_readable_file(in);
   check_writable_file(out);
-  if (!arguments.report.empty())
+  // A report on standard output ('-', /dev/stdout or the file stdout goes to) is printed there,
+  // and the summary moves to standard error, so that stdout holds the JSON alone.
+  const bool report_to_stdout = arguments.report == "-" || is_standard_output(arguments.report);
+  if (!arguments.report.empty() && !report_to_stdout)
     check_writable_file(arguments.report);
   if (!arguments.before_after.empty()) {
     if (!ends_with_png(arguments.before_after)) {
@@ -104,10 +107,13 @@ int run_repair(RepairArguments& arguments) {
     if (!arguments.report.empty()) {
       ReportJsonOptions json;
       json.elements = arguments.elements;
-      write_text_atomically(
-          arguments.report,
+      const std::string text =
           repair_report_json(in, out, result.report, &info, json, reread ? &*reread : nullptr) +
-              "\n");
+          "\n";
+      if (report_to_stdout)
+        std::cout << text << std::flush;
+      else
+        write_text_atomically(arguments.report, text);
     }
     if (!arguments.before_after.empty()) {
       // The result framed as the input, so the two pictures line up.
@@ -125,7 +131,8 @@ int run_repair(RepairArguments& arguments) {
   }
   warn_about_reader(in, info);
 
-  std::cout << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
+  std::ostream& summary = report_to_stdout ? std::cerr : std::cout;
+  summary << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
   if (holds_triangles_only(out)) {
     // These formats hold triangles only: the writer fans every larger polygon.
     std::size_t triangles = 0, fanned = 0;
@@ -135,16 +142,16 @@ int run_repair(RepairArguments& arguments) {
       fanned += n > 3 ? 1 : 0;
     }
     if (fanned != 0) {
-      std::cout << "written as " << triangles << " triangles: " << fanned
-                << " polygons fanned (the format holds triangles only)\n";
+      summary << "written as " << triangles << " triangles: " << fanned
+              << " polygons fanned (the format holds triangles only)\n";
     }
   }
   if (reread) {
     // STL keeps no shared vertices: say what a reader gets back from the written file.
     const std::size_t left = reread->singular_edges.size() + reread->num_singular_vertices();
-    std::cout << "as re-read from " << out << ": singular edges " << reread->singular_edges.size()
-              << ", singular vertices " << reread->num_singular_vertices() << ", watertight "
-              << (reread->watertight ? "yes" : "no") << "\n";
+    summary << "as re-read from " << out << ": singular edges " << reread->singular_edges.size()
+            << ", singular vertices " << reread->num_singular_vertices() << ", watertight "
+            << (reread->watertight ? "yes" : "no") << "\n";
     if (left > 0) {
       std::cerr << "meshbridge: warning: STL has no shared vertices; reading " << out
                 << " welds the " << result.report.vertices_split
@@ -175,7 +182,8 @@ void add_repair_command(CLI::App& app, int& exit_code) {
       ->required();
   command->add_option("--report", arguments->report,
                       "also write the repair report as JSON to this file "
-                      "(docs/report-schema.md)");
+                      "(docs/report-schema.md); '-' or /dev/stdout: to standard output, the "
+                      "summary then going to standard error");
   command->add_flag("--elements", arguments->elements,
                     "with --report: also list the defective elements before and after; default "
                     "counts only");

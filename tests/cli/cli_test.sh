@@ -274,11 +274,20 @@ atomic_output)
   wait "$reader"
   [ -p "$work/pipe.ply" ] || fail "the FIFO was replaced by a file"
   cmp -s "$work/plain.ply" "$work/from_pipe.ply" || fail "the FIFO got other bytes than the file"
+  # A report on standard output ('-', /dev/stdout, piped or redirected) is the JSON alone there;
+  # the summary goes to standard error.
   "$mb" repair "$models/twocubes.obj" "$work/r.ply" --report /dev/stdout 2>"$work/err" |
-    cat >"$work/piped.txt" || fail "repair --report /dev/stdout failed: $(cat "$work/err")"
-  head -n 1 "$work/piped.txt" >"$work/report_line.json"
-  [ "$(json_field "$work/report_line.json" kind)" = repair ] || fail "no report on the pipe"
-  expect_in "$work/piped.txt" "$work/r.ply"  # the summary follows it
+    cat >"$work/piped.json" || fail "repair --report /dev/stdout failed: $(cat "$work/err")"
+  [ "$(json_field "$work/piped.json" kind)" = repair ] || fail "no report alone on the pipe"
+  expect_in "$work/err" "twocubes.obj -> $work/r.ply"
+  for target in /dev/stdout -; do
+    "$mb" repair "$models/twocubes.obj" "$work/r.ply" --report "$target" >"$work/redirected.json" \
+      2>"$work/err" || fail "repair --report $target failed: $(cat "$work/err")"
+    [ "$(json_field "$work/redirected.json" after.singular_edges)" = 0 ] ||
+      fail "--report $target into a redirected stdout is not the JSON alone"
+    expect_in "$work/err" "after: singular edges 0"
+  done
+  [ ! -e "./-" ] && [ ! -e "$work/-" ] || fail "--report - wrote a file named '-'"
   [ -L /dev/stdout ] || fail "/dev/stdout is no longer a symbolic link"
   echo "old content" >"$work/real.obj"
   ln -s real.obj "$work/link.obj"
