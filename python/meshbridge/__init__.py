@@ -66,6 +66,8 @@ REPAIR_OPTIONS: Dict[str, Any] = {
     "remove_isolated_vertices": False,
     "detect_before_after": True,
     "fill_holes": 0,
+    "weld": "auto",
+    "close_t_junctions": True,
 }
 
 Faces = Union[np.ndarray, Sequence[Sequence[int]]]
@@ -200,7 +202,11 @@ def repair(
     ``remove_duplicate_faces``, ``remove_degenerate_faces``, ``remove_isolated_vertices``,
     ``detect_before_after`` (False skips the before/after detection: faster, fewer counts),
     ``fill_holes`` (after the repair, close holes of at most this many edges with new
-    triangles; ``True`` = 32, ``0``/``False`` = off, the default; as ``--fill-holes``).
+    triangles; ``True`` = 32, ``0``/``False`` = off, the default; as ``--fill-holes``),
+    ``weld`` (gap closing before pairing: vertices closer than this distance, in the mesh's
+    length unit, become one; ``'auto'``, the default, derives it from the mesh's size and
+    coordinates; ``0`` = off; as ``--weld``), ``close_t_junctions`` (also split a boundary side
+    where another boundary vertex lies on it within that distance; default True).
     Faces added by hole filling come last, with ``face_origin`` and ``corner_origin`` -1.
 
     Returns a :class:`RepairResult`: ``(vertices (n', 3) float64, faces (m', k) int32 or
@@ -229,6 +235,18 @@ def _repair_options(options: Dict[str, Any]) -> "_core.RepairOptions":
                 value = getattr(_core.PairingPolicy, value.lower())
             elif not isinstance(value, _core.PairingPolicy):
                 raise ValueError(f"pairing must be 'geometric' or 'combinatorial', got {value!r}")
+        elif name == "weld":
+            if isinstance(value, str) and value.lower() == "auto":
+                value = _core.AUTO_WELD_TOLERANCE
+            elif (
+                isinstance(value, (bool, np.bool_))
+                or not isinstance(value, (int, float, np.integer, np.floating))
+                or not np.isfinite(value)
+                or value < 0
+            ):
+                raise ValueError(f"weld must be 'auto' or a distance >= 0, got {value!r}")
+            setattr(native, name, float(value))
+            continue
         elif name == "fill_holes":
             if isinstance(value, (bool, np.bool_)):
                 value = _core.DEFAULT_FILL_HOLES_MAX_EDGES if value else 0

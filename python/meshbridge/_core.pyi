@@ -30,9 +30,12 @@ class RepairOptions:
     remove_isolated_vertices: bool
     detect_before_after: bool
     fill_holes: int  # FillHolesOptions::max_edges; 0 = off
+    weld: float  # CloseGapsOptions::tolerance; AUTO_WELD_TOLERANCE = automatic, 0 = off
+    close_t_junctions: bool  # CloseGapsOptions::close_t_junctions
     def __init__(self) -> None: ...
 
 DEFAULT_FILL_HOLES_MAX_EDGES: int
+AUTO_WELD_TOLERANCE: float
 HAS_HOLE_FILLING: bool
 
 class Soup:

@@ -116,7 +116,16 @@ PYBIND11_MODULE(_core, m) {
       // FillHolesOptions::max_edges, flattened: 0 = off.
       .def_property(
           "fill_holes", [](const RepairOptions& o) { return o.fill_holes.max_edges; },
-          [](RepairOptions& o, std::size_t max_edges) { o.fill_holes.max_edges = max_edges; });
+          [](RepairOptions& o, std::size_t max_edges) { o.fill_holes.max_edges = max_edges; })
+      // CloseGapsOptions, flattened: the tolerance (kAutoWeldTolerance = automatic, 0 = off).
+      .def_property(
+          "weld", [](const RepairOptions& o) { return o.close_gaps.tolerance; },
+          [](RepairOptions& o, double tolerance) { o.close_gaps.tolerance = tolerance; })
+      .def_property(
+          "close_t_junctions",
+          [](const RepairOptions& o) { return o.close_gaps.close_t_junctions; },
+          [](RepairOptions& o, bool close) { o.close_gaps.close_t_junctions = close; });
+  m.attr("AUTO_WELD_TOLERANCE") = kAutoWeldTolerance;
   m.attr("DEFAULT_FILL_HOLES_MAX_EDGES") = kDefaultFillHolesMaxEdges;
   m.attr("HAS_HOLE_FILLING") = has_hole_filling();
 

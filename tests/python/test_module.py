@@ -313,6 +313,24 @@ def test_soup_and_result_pickle_exactly():
     np.testing.assert_array_equal(again.vertices, result.vertices)
 
 
+def test_weld_closes_a_crack_at_the_distance_given():
+    # Two triangles that should share the edge 0-2; the second has its own copy of vertex 2,
+    # 0.001 away: a crack.
+    vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [1.001, 1, 0]], dtype=float)
+    faces = np.array([[0, 1, 2], [0, 4, 3]])
+    assert meshbridge.REPAIR_OPTIONS["weld"] == "auto"
+    apart = meshbridge.repair(vertices, faces, weld=0)  # vertex 0 alone joins them: it is split
+    assert len(apart.vertices) == 6 and apart.report["after"]["boundary_edges"] == 6
+    for weld in (0.01, np.float32(0.01), 1):
+        closed = meshbridge.repair(vertices, faces, weld=weld)
+        assert closed.report["gaps"]["vertices_welded"] == 1
+        assert len(closed.vertices) == 4 and closed.report["after"]["boundary_edges"] == 4
+    assert meshbridge.repair(vertices, faces, weld="auto").report["gaps"]["tolerance"] < 0.001
+    for bad in (-1, float("nan"), float("inf"), "far", True):
+        with pytest.raises(ValueError, match="weld must be 'auto' or a distance >= 0"):
+            meshbridge.repair(vertices, faces, weld=bad)
+
+
 def test_fill_holes_closes_the_cube_and_marks_the_new_triangles():
     vertices = np.array([[c & 1, (c >> 1) & 1, (c >> 2) & 1] for c in range(8)], dtype=float)
     quads = np.array([[0, 2, 3, 1], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]])
