@@ -71,14 +71,18 @@ void pair_behind_neighbours(const std::vector<OrderedSide>& cycle, std::vector<I
   }
 }
 
-// Per face: 1 if it separates no material from void (see pair_contenders).
-std::vector<char> sheets(const Soup& soup, UnionFind& regions) {
+// Per face: 1 if it separates no material from void (see pair_contenders). Consumes `regions`:
+// votes are summed per region, numbered densely, so they take memory per region, not per side.
+std::vector<char> sheets(const Soup& soup, UnionFind&& regions) {
   const std::size_t num_faces = soup.num_faces();
-  std::vector<double> vote(2 * num_faces, 0.0);
-  std::vector<float> weight(2 * num_faces, 0.0f);  // only scales the rounding tolerance
+  Index num_regions = 0;
+  const std::vector<Index> region =
+      std::move(regions).take_labels([&num_regions](Index) { return num_regions++; });
+  std::vector<double> vote(num_regions, 0.0);
+  std::vector<float> weight(num_regions, 0.0f);  // only scales the rounding tolerance
   for (Index f = 0; f < num_faces; ++f) {
     const double area = newell_normal(soup, f).norm();
-    const Index front = regions.find(2 * f), back = regions.find(2 * f + 1);
+    const Index front = region[2 * f], back = region[2 * f + 1];
     vote[front] -= area;
     vote[back] += area;
     weight[front] += static_cast<float>(area);
@@ -92,7 +96,7 @@ std::vector<char> sheets(const Soup& soup, UnionFind& regions) {
   };
   std::vector<char> sheet(num_faces, 0);
   for (Index f = 0; f < num_faces; ++f) {
-    const Index front = regions.find(2 * f), back = regions.find(2 * f + 1);
+    const Index front = region[2 * f], back = region[2 * f + 1];
     sheet[f] = front == back || (kind(front) != 0 && kind(front) == kind(back));
   }
   return sheet;
@@ -105,14 +109,16 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
   const CornerFaces& corner_face = grouped.corner_face;
   const EdgeBridges& bridges = grouped.bridges;
   std::vector<Index> mate(soup.num_corners(), kNoIndex);
-  std::vector<std::size_t> singular;
+  std::vector<Index> singular;
+  std::size_t singular_sides = 0;
   for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
     const Index first = bridges.begin[e];
     const Index k = bridges.num_contenders(e);
     if (k == 2) {
       pair(mate, bridges.contenders[first], bridges.contenders[first + 1]);
     } else if (k > 2) {
-      singular.push_back(e);
+      singular.push_back(static_cast<Index>(e));
+      singular_sides += k;
     }
   }
   if (singular.empty())
@@ -125,7 +131,7 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
     pair_opposite_in_order(soup, corner_face, sides, mate);
   };
   if (policy == PairingPolicy::combinatorial) {
-    for (std::size_t e : singular)
+    for (Index e : singular)
       combinatorial(e);
     return mate;
   }
@@ -134,11 +140,12 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
   // there; those without one (flat against the edge) are kept aside per edge.
   AngularSorter sorter;
   std::vector<OrderedSide> order_scratch, flat;
+  flat.reserve(singular_sides);  // the sides with a direction: seldom fewer
   std::vector<Index> undirected_scratch, undirected;
-  std::vector<std::size_t> order_begin(singular.size() + 1, 0);
-  std::vector<std::size_t> undirected_begin(singular.size() + 1, 0);
+  std::vector<Index> order_begin(singular.size() + 1, 0);
+  std::vector<Index> undirected_begin(singular.size() + 1, 0);
   for (std::size_t s = 0; s < singular.size(); ++s) {
-    const std::size_t e = singular[s];
+    const Index e = singular[s];
     sorter.sort(soup, grouped, e, bridges.contenders.data() + bridges.begin[e],
                 bridges.contenders.data() + bridges.begin[e + 1], order_scratch,
                 undirected_scratch);
@@ -152,8 +159,8 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
       sort_by_face_key(soup, corner_face, waiting);
       undirected.insert(undirected.end(), waiting.begin(), waiting.end());
     }
-    order_begin[s + 1] = flat.size();
-    undirected_begin[s + 1] = undirected.size();
+    order_begin[s + 1] = static_cast<Index>(flat.size());
+    undirected_begin[s + 1] = static_cast<Index>(undirected.size());
   }
   const auto order_of = [&](std::size_t s) {
     return ContenderRange{flat.data() + order_begin[s], flat.data() + order_begin[s + 1]};
@@ -188,7 +195,7 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
   // and the one in front of it void. A face whose two sides lie in one region, or in two regions
   // of the same kind (a membrane between two solids, a sheet in the open), separates nothing:
   // it is a sheet.
-  const std::vector<char> sheet = sheets(soup, regions);
+  const std::vector<char> sheet = sheets(soup, std::move(regions));
 
   std::vector<OrderedSide> cycle;
   for (std::size_t s = 0; s < singular.size(); ++s) {
