@@ -268,11 +268,29 @@ DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped) {
                         grouped.bridges.num_edges());
 }
 
-DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mate) {
-  const CornerFaces corner_face(working.soup());
+DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mate,
+                    GroupedSides* grouped_out) {
+  CornerFaces corner_face(working.soup());
   EdgeTally tally(working);
-  const std::size_t num_edges = for_each_vertex_pair(working.soup(), corner_face, tally);
-  return detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate);
+  if (grouped_out == nullptr) {
+    const std::size_t num_edges = for_each_vertex_pair(working.soup(), corner_face, tally);
+    return detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate);
+  }
+  EdgeBridges bridges;
+  bridges.begin.reserve(working.soup().num_corners() / 2 + 2);  // as group_sides()
+  const auto visit = [&](VertexPair pair, const Index* sides, Index k) {
+    tally(pair, sides, k);
+    bridges.begin.push_back(bridges.begin.back() + k);
+  };
+  const std::size_t num_edges =
+      for_each_vertex_pair(working.soup(), corner_face, visit, &bridges.contenders);
+  const bool keep = !tally.report.boundary_edges.empty() || !tally.report.singular_edges.empty();
+  if (!keep)
+    bridges = EdgeBridges();  // a closed 2-manifold candidate: repair may not need it
+  DefectReport report =
+      detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate);
+  *grouped_out = keep ? GroupedSides{std::move(corner_face), std::move(bridges)} : GroupedSides();
+  return report;
 }
 
 }  // namespace detail

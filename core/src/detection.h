@@ -19,7 +19,10 @@ DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped);
 //! Same, visiting the sides vertex pair by vertex pair without keeping a grouping (the least
 //! memory: what detect_defects() runs). With `manifold_mate`, it receives the pairing of the
 //! 2-sided edges (#C: the other side, or kNoIndex; pairs orientation could not make consistent
-//! are cut, as detection counts non-orientable components).
-DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mate = nullptr);
+//! are cut, as detection counts non-orientable components). With `grouped_out`, the grouping made
+//! on the way is kept there when the soup has a boundary or singular edge (then repair runs the
+//! pipeline, which reads it: no second grouping); otherwise `grouped_out` is left empty.
+DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mate = nullptr,
+                    GroupedSides* grouped_out = nullptr);
 
 }  // namespace meshbridge::detail

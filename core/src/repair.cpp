@@ -74,10 +74,16 @@ void tell(const RepairOptions& options, Stage stage, double fraction) {
     options.progress(stage, fraction);
 }
 
-// Everything repair() does, on a valid soup; `known_before` (when not null) is the detection of
-// `input`, already made (moved from).
-RepairResult repair_valid(const Soup& input, const RepairOptions& options,
-                          DefectReport* known_before) {
+// What repair(Soup&&) made of the input before deciding to run the pipeline, handed on so that
+// nothing is made twice.
+struct KnownInput {
+  const detail::WorkingSoup* simple = nullptr;  //!< the input made simple; null: make it
+  DefectReport* before = nullptr;               //!< its detection (moved from); null: detect
+  detail::GroupedSides grouped;                 //!< its grouping; no contenders: group again
+};
+
+// Everything repair() does, on a valid soup; `known` holds what was already made of `input`.
+RepairResult repair_valid(const Soup& input, const RepairOptions& options, KnownInput&& known) {
   tell(options, Stage::group, 0);
   RepairResult result;
   RepairReport& report = result.report;
@@ -86,8 +92,12 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options,
   // the input's own). Gap closing runs on the soup before everything else; when it changed
   // nothing the input and this grouping are used as they are (no copy), otherwise the rest runs
   // on the closed soup and origins are composed at the end.
-  const detail::WorkingSoup input_simple(input);
-  detail::GroupedSides grouped = detail::group_sides(input_simple.soup());
+  std::optional<detail::WorkingSoup> own_simple;
+  const detail::WorkingSoup& input_simple =
+      known.simple != nullptr ? *known.simple : own_simple.emplace(input);
+  detail::GroupedSides grouped = known.grouped.bridges.contenders.empty()
+                                     ? detail::group_sides(input_simple.soup())
+                                     : std::move(known.grouped);
   ClosedGaps gaps;
   bool gaps_closed = false;
   if (input_simple.is_identity()) {
@@ -101,7 +111,7 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options,
   const bool detecting = options.detect_before_after || filtering;
   if (detecting) {
     report.before =
-        known_before != nullptr ? std::move(*known_before) : detail::detect(input_simple, grouped);
+        known.before != nullptr ? std::move(*known.before) : detail::detect(input_simple, grouped);
   }
   // The simple polygons actually built; their grouping is reused below when nothing is removed.
   std::unique_ptr<detail::WorkingSoup> closed_simple;
@@ -217,21 +227,24 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options,
   return result;
 }
 
-// When repair() would return `soup` itself, its report (and `before` is left empty); otherwise
-// nothing, with `before` holding the detection of `soup` when repair() makes one. repair()
+// When repair() would return `soup` itself, its report (and `known` is left empty); otherwise
+// nothing, with `known` holding the detection of `soup` (`working` is its simple polygons) when
+// repair() makes one, and the grouping that detection kept. repair()
 // returns the soup unchanged exactly when it is a closed, consistently oriented 2-manifold (no
 // degenerate polygon, every edge with two opposite sides, no pinch vertex), every component of
 // which already faces the way orientation turns it, with nothing the options would remove or
 // fill: pairing takes the two sides of every edge, orientation and stitching change nothing,
 // every vertex has one fan, and gap closing finds no boundary to work on.
-std::optional<RepairReport> report_if_unchanged(const Soup& soup, const RepairOptions& options,
-                                                DefectReport& before) {
+std::optional<RepairReport> report_if_unchanged(const Soup& soup,
+                                                const detail::WorkingSoup& working,
+                                                const RepairOptions& options, DefectReport& before,
+                                                KnownInput& known) {
   const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
   if (!options.detect_before_after && !filtering)
     return std::nullopt;  // no detection asked for: the pipeline's own path
-  const detail::WorkingSoup working(soup);
   std::vector<Index> mate;
-  before = detail::detect(working, &mate);
+  before = detail::detect(working, &mate, &known.grouped);
+  known.before = &before;
   if (!working.is_identity() || !before.watertight || options.fill_holes.max_edges > 0 ||
       (options.remove_duplicate_faces && !before.duplicate_faces.empty()) ||
       (options.remove_isolated_vertices && !before.isolated_vertices.empty()))
@@ -264,17 +277,20 @@ std::optional<RepairReport> report_if_unchanged(const Soup& soup, const RepairOp
 
 RepairResult repair(const Soup& input, const RepairOptions& options) {
   validate_soup(input);
-  return repair_valid(input, options, nullptr);
+  return repair_valid(input, options, KnownInput());
 }
 
 RepairResult repair(Soup&& soup, const RepairOptions& options) {
   validate_soup(soup);
   DefectReport before;
-  std::optional<RepairReport> unchanged = report_if_unchanged(soup, options, before);
-  if (!unchanged) {
-    const bool detected = options.detect_before_after || options.remove_duplicate_faces ||
-                          options.remove_degenerate_faces;
-    return repair_valid(soup, options, detected ? &before : nullptr);
+  KnownInput known;
+  std::optional<RepairReport> unchanged;
+  {
+    const detail::WorkingSoup working(soup);
+    known.simple = &working;
+    unchanged = report_if_unchanged(soup, working, options, before, known);
+    if (!unchanged)
+      return repair_valid(soup, options, std::move(known));
   }
   for (Stage stage : {Stage::group, Stage::pair, Stage::detect}) {
     tell(options, stage, 0);

@@ -18,10 +18,12 @@ namespace meshbridge::detail {
 //! that polygon sides of `soup` run along, with its k sides (as corners, increasing): the edges
 //! and contenders of EdgeBridges in the same order (increasing (v0, v1)), one bucket of sides
 //! sharing their smaller vertex at a time. Returns the number of vertex pairs (edges).
-//! Memory: one Index per corner and one per vertex, freed on return. O(#C) (buckets of more
-//! than 32 sides are sorted). \pre `soup` passes validate_soup()
+//! Memory: one Index per corner and one per vertex, freed on return, except that with `sides_out`
+//! the sides, in visiting order (EdgeBridges::contenders), are moved there. O(#C) (buckets of
+//! more than 32 sides are sorted). \pre `soup` passes validate_soup()
 template <class Visit>
-std::size_t for_each_vertex_pair(const Soup& soup, const CornerFaces& corner_face, Visit&& visit) {
+std::size_t for_each_vertex_pair(const Soup& soup, const CornerFaces& corner_face, Visit&& visit,
+                                 std::vector<Index>* sides_out = nullptr) {
   const std::size_t num_corners = soup.num_corners();
   const std::size_t num_vertices = soup.num_vertices();
   const auto& cv = soup.corner_vertices;
@@ -79,6 +81,8 @@ std::size_t for_each_vertex_pair(const Soup& soup, const CornerFaces& corner_fac
       i = j;
     }
   }
+  if (sides_out != nullptr)
+    *sides_out = std::move(sorted);
   return num_edges;
 }
 
