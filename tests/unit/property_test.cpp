@@ -289,3 +289,28 @@ TEST(RepairProperties, consuming_repair_equals_repair_and_keeps_unchanged_soups_
   }
   EXPECT_GT(kept, 0u);
 }
+
+// repair(Soup&&) hands the grouping its detection made to the pipeline when the soup has a
+// boundary or singular edge; repair(const Soup&) groups afresh. Random soups (singular edges,
+// boundaries, degenerate polygons) and the canonical models with faces removed must give the
+// same mesh and report both ways.
+TEST(RepairProperties, consuming_repair_reuses_the_grouping_of_its_detection_faithfully) {
+  ReportJsonOptions everything;
+  everything.elements = true;
+  const auto expect_same = [&](const Soup& soup) {
+    const RepairResult copied = repair(soup);
+    const RepairResult moved = repair(Soup(soup));
+    ASSERT_EQ(mesh_digest(moved.mesh), mesh_digest(copied.mesh));
+    ASSERT_EQ(repair_report_json("in", "out", moved.report, nullptr, everything),
+              repair_report_json("in", "out", copied.report, nullptr, everything));
+  };
+  for (std::uint32_t seed = 1; seed <= kSoups; seed += 4) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_same(random_soup(seed));
+  }
+  for (const models::NamedModel& model : models::canonical_models()) {
+    SCOPED_TRACE(model.name);
+    for (std::uint32_t seed = 1; seed <= 5; ++seed)
+      expect_same(with_faces_removed(model.soup, seed));
+  }
+}
