@@ -47,6 +47,25 @@ struct RepairArguments {
   std::string fill_holes;      //!< MAX_EDGES of --fill-holes ("" or "0" = off)
 };
 
+// Formats that hold triangles only (STL, 3MF): how many triangles the writer made of the mesh's
+// polygons by fanning the larger ones, and how many it fanned.
+struct WrittenTriangles {
+  std::size_t triangles = 0;
+  std::size_t fanned = 0;
+};
+
+WrittenTriangles count_written_triangles(const std::string& out, const Soup& soup) {
+  WrittenTriangles written;
+  if (!holds_triangles_only(out))
+    return written;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const std::size_t n = soup.arity(f);
+    written.triangles += n - 2;
+    written.fanned += n > 3 ? 1 : 0;
+  }
+  return written;
+}
+
 int run_repair(RepairArguments& arguments) {
   const std::string& in = arguments.in;
   const std::string& out = arguments.out;
@@ -82,6 +101,7 @@ int run_repair(RepairArguments& arguments) {
   RepairResult result;
   std::ostringstream separate_summary;
   std::optional<DefectReport> reread;  // STL output as a reader gets it back
+  WrittenTriangles written;
   {
     ProgressDisplay progress(in, progress_wanted(arguments.progress), progress_wanted(false),
                              repair_plan());
@@ -101,9 +121,15 @@ int run_repair(RepairArguments& arguments) {
     apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
                    separate_summary);
     write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
-    std::error_code status_error;               // (a device or pipe cannot be read back)
-    if (is_stl_path(out) && std::filesystem::is_regular_file(out, status_error))
+    written = count_written_triangles(out, result.mesh.soup);
+    std::error_code status_error;  // (a device or pipe cannot be read back)
+    if (is_stl_path(out) && std::filesystem::is_regular_file(out, status_error)) {
+      // Only the picture reads the mesh again: without one it is freed before the file is read
+      // back, so the peak is not the mesh and the re-read soup together.
+      if (arguments.before_after.empty())
+        result.mesh = IndexedMesh();
       reread = detect_as_reread(out);
+    }
     if (!arguments.report.empty()) {
       ReportJsonOptions json;
       json.elements = arguments.elements;
@@ -133,18 +159,9 @@ int run_repair(RepairArguments& arguments) {
 
   std::ostream& summary = report_to_stdout ? std::cerr : std::cout;
   summary << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
-  if (holds_triangles_only(out)) {
-    // These formats hold triangles only: the writer fans every larger polygon.
-    std::size_t triangles = 0, fanned = 0;
-    for (std::size_t f = 0; f < result.mesh.soup.num_faces(); ++f) {
-      const std::size_t n = result.mesh.soup.arity(f);
-      triangles += n - 2;
-      fanned += n > 3 ? 1 : 0;
-    }
-    if (fanned != 0) {
-      summary << "written as " << triangles << " triangles: " << fanned
-              << " polygons fanned (the format holds triangles only)\n";
-    }
+  if (written.fanned != 0) {
+    summary << "written as " << written.triangles << " triangles: " << written.fanned
+            << " polygons fanned (the format holds triangles only)\n";
   }
   if (reread) {
     // STL keeps no shared vertices: say what a reader gets back from the written file.
