@@ -62,6 +62,7 @@ run() {
   local name="$1"
   shift
   local status=0
+  sync  # the previous run's written file is flushed outside this run's timing
   /usr/bin/time -o "$tmp/time" -f "%e %U %S %M" "$@" >/dev/null 2>"$tmp/err" || status=$?
   # Exit 1 of `meshbridge check` means "defects found", a successful run.
   if [ "$status" -le 1 ] && [ -s "$tmp/time" ]; then
@@ -75,6 +76,7 @@ run() {
 # The X server is started outside the timing: only meshlabserver is measured.
 run_meshlab() {
   local name="$1" in="$2" target="$3"
+  sync
   xvfb-run -a /usr/bin/time -o "$tmp/time" -f "%e %U %S %M" meshlabserver -i "$in" -o "$target" \
     >"$tmp/err" 2>&1 || { echo "$name failed" >>"$tmp/raw"; return; }
   read -r wall user sys rss < <(tail -n 1 "$tmp/time")
