@@ -276,17 +276,29 @@ DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mat
     const std::size_t num_edges = for_each_vertex_pair(working.soup(), corner_face, tally);
     return detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate);
   }
+  // Edge offsets are recorded from the first edge that is not 2-sided on (the ones before it
+  // start at 0, 2, 4, ...): a closed 2-manifold candidate never allocates them.
   EdgeBridges bridges;
-  bridges.begin.reserve(working.soup().num_corners() / 2 + 2);  // as group_sides()
+  std::size_t two_sided_prefix = 0;
+  bool keep = false;
   const auto visit = [&](VertexPair pair, const Index* sides, Index k) {
     tally(pair, sides, k);
+    if (!keep) {
+      if (k == 2) {
+        ++two_sided_prefix;
+        return;
+      }
+      keep = true;  // a boundary or singular edge: repair will run the pipeline
+      bridges.begin.reserve(working.soup().num_corners() / 2 + 2);  // as group_sides()
+      for (std::size_t e = 1; e <= two_sided_prefix; ++e)
+        bridges.begin.push_back(static_cast<Index>(2 * e));
+    }
     bridges.begin.push_back(bridges.begin.back() + k);
   };
   const std::size_t num_edges =
       for_each_vertex_pair(working.soup(), corner_face, visit, &bridges.contenders);
-  const bool keep = !tally.report.boundary_edges.empty() || !tally.report.singular_edges.empty();
   if (!keep)
-    bridges = EdgeBridges();  // a closed 2-manifold candidate: repair may not need it
+    bridges = EdgeBridges();
   DefectReport report =
       detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate);
   *grouped_out = keep ? GroupedSides{std::move(corner_face), std::move(bridges)} : GroupedSides();
