@@ -270,14 +270,15 @@ def test_results_outlive_their_inputs():
 def test_gil_is_released_during_repair():
     """With a huge switch interval, the GIL changes hands only when its holder lets it go, so
     the main thread runs while the worker thread is inside repair exactly when repair releases
-    it. (Up to 3 tries, in case the machine is too loaded to wake the main thread in time.)"""
-    vertices, faces = mesh_models.checkerboard(24)
+    it. (Up to 5 tries of a repair of about 0.2 s, in case the machine is too loaded to wake the
+    main thread in time: other tests run beside this one.)"""
+    vertices, faces = mesh_models.checkerboard(32)
     soup = meshbridge.Soup(vertices, faces)
     old = sys.getswitchinterval()
     seen = []
     try:
         sys.setswitchinterval(1000.0)
-        for _ in range(3):
+        for _ in range(5):
             state = {"done": False}
             started = threading.Event()
 
