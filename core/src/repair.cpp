@@ -342,10 +342,11 @@ std::string to_text(const RepairReport& r) {
   }
   out << "components: " << r.components_before << " -> " << r.components_after
       << "; boundary edges: " << r.boundary_edges_before << " -> " << r.boundary_edges_after
-      << "; non-orientable components: " << r.nonorientable_components << "\n";
+      << "; non-orientable components met by orientation: " << r.nonorientable_components << "\n";
   out << "after: singular edges " << r.after.singular_edges.size() << ", singular vertices "
-      << r.after.num_singular_vertices() << ", watertight " << (r.after.watertight ? "yes" : "no")
-      << "\n";
+      << r.after.num_singular_vertices() << ", non-orientable components "
+      << r.after.num_nonorientable_components << ", watertight "
+      << (r.after.watertight ? "yes" : "no") << "\n";
   return out.str();
 }
 

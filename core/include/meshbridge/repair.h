@@ -77,6 +77,8 @@ struct RepairReport {
   std::size_t components_after = 0;
   std::size_t boundary_edges_before = 0;
   std::size_t boundary_edges_after = 0;
+  //! Components that orientation found non-orientable (after pairing, before any cut): with
+  //! `cut_nonorientable` they were oriented by cutting, otherwise left as they were.
   std::size_t nonorientable_components = 0;
   CloseGapsReport gaps;   //!< what gap closing did before pairing
   FillHolesReport holes;  //!< what hole filling did after pairing (all 0 when off)
