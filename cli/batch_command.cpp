@@ -197,9 +197,9 @@ void print_table_row(const Entry& e) {
     const TableRow& r = e.row;
     std::cout << r.faces_in << " | " << r.singular_edges << " | " << r.singular_vertices << " | "
               << r.faces_out << " | " << r.components_after << " | "
-              << (r.watertight_after ? "yes" : "no") << " |\n";
-  } else {
-    std::cout << e.reason << " | | | | | |\n";
+              << (r.watertight_after ? "yes" : "no") << " | |\n";
+  } else {  // failed or skipped: no counts, the reason in the last column
+    std::cout << "| | | | | | " << e.reason << " |\n";
   }
 }
 
@@ -271,8 +271,8 @@ int run_batch(const BatchArguments& arguments) {
                          terminal);
   if (!arguments.json) {
     std::cout << "| file | status | faces | singular edges | singular vertices | faces out | "
-                 "components after | watertight after |\n"
-                 "|---|---|---:|---:|---:|---:|---:|---|\n";
+                 "components after | watertight after | note |\n"
+                 "|---|---|---:|---:|---:|---:|---:|---|---|\n";
   }
   std::vector<char> done(entries.size(), 0);
   for (std::size_t i = 0; i < entries.size(); ++i)

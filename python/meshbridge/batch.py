@@ -68,8 +68,8 @@ class BatchSummary:
         """``meshbridge batch``'s stdout without --json: a Markdown table and the summary line."""
         rows = [
             "| file | status | faces | singular edges | singular vertices | faces out | "
-            "components after | watertight after |",
-            "|---|---|---:|---:|---:|---:|---:|---|",
+            "components after | watertight after | note |",
+            "|---|---|---:|---:|---:|---:|---:|---|---|",
         ]
         for line in self.sorted_records():
             r = json.loads(line)
@@ -80,10 +80,10 @@ class BatchSummary:
                     f"| {r['file']} | {r['status']} | {r['faces_in']} | "
                     f"{r['before']['singular_edges']} | {r['before']['singular_vertices']} | "
                     f"{r['faces_out']} | {after['components']} | "
-                    f"{'yes' if after['watertight'] else 'no'} |"
+                    f"{'yes' if after['watertight'] else 'no'} | |"
                 )
-            else:
-                rows.append(f"| {r['file']} | {r['status']} | {r.get('reason', '')} | | | | | |")
+            else:  # failed or skipped: no counts, the reason in the last column
+                rows.append(f"| {r['file']} | {r['status']} | | | | | | | {r.get('reason', '')} |")
         return "\n".join(rows) + "\n" + self.summary_line() + "\n"
 
     def summary_line(self) -> str:

@@ -376,6 +376,11 @@ batch_safety)
   expect_exit 0 "$mb" batch "$work/in" "$work/res" --json --resume
   [ "$(json_line_field "$work/out" 0 status)" = clean ] || fail "resume skipped a changed input"
   [ "$(json_line_field "$work/out" 1 status)" = skipped ] || fail "resume redid sub/prisms24.obj"
+  # In the table a skipped or failed file has no counts: its reason is the last column (note).
+  expect_exit 0 "$mb" batch "$work/in" "$work/res" --resume
+  grep -q '^| file | status | .* | watertight after | note |$' "$work/out" || fail "table header: $(cat "$work/out")"
+  grep -qE '^\| sub/prisms24\.obj \| skipped \| \| \| \| \| \| \| .*newer than the input \|$' "$work/out" ||
+    fail "skipped row, reason in the note column: $(cat "$work/out")"
   # --in-place into INDIR itself replaces the originals.
   cp -r "$work/in" "$work/inplace"
   expect_exit 0 "$mb" batch "$work/inplace" "$work/inplace" --in-place --json
