@@ -215,8 +215,9 @@ void add_repair_command(CLI::App& app, int& exit_code) {
   command->add_flag("--no-stitch", arguments->no_stitch,
                     "do not glue cut sides back together where that stays manifold");
   command->add_flag("--cut-nonorientable", options.cut_nonorientable,
-                    "also orient non-orientable components (Moebius strips) by cutting the fewest "
-                    "edges");
+                    "also orient non-orientable components (Moebius strips): faces take the "
+                    "orientation of a breadth-first spanning tree, and the edges that disagree "
+                    "with it are cut (not necessarily the fewest)");
   command->add_flag("--remove-duplicates", options.remove_duplicate_faces,
                     "drop faces whose vertex set an earlier face has");
   command->add_flag("--remove-degenerate", options.remove_degenerate_faces,

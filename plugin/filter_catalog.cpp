@@ -153,9 +153,10 @@ std::vector<ParameterSpec> make_repair_parameters() {
               "manifold, so repair opens no hole that was not there."),
       boolean(parameter::cut_nonorientable, defaults.core.cut_nonorientable,
               "Orient non-orientable components too",
-              "Also orient components that cannot be oriented (Moebius strips), cutting the "
-              "fewest conflicting edges a spanning tree finds. Off: such components keep their "
-              "faces' directions and each of their inconsistent edges is cut."),
+              "Also orient components that cannot be oriented (Moebius strips): their faces "
+              "follow a breadth-first spanning tree and the edges that disagree with it are cut "
+              "(not necessarily the fewest). Off: such components keep their faces' directions "
+              "and each of their inconsistent edges is cut."),
       boolean(parameter::remove_duplicate_faces, defaults.core.remove_duplicate_faces,
               "Remove duplicate faces",
               "Delete faces whose vertex set an earlier face has (counted in the log). Off: "

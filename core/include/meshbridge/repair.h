@@ -22,9 +22,10 @@ struct RepairOptions {
   CloseGapsOptions close_gaps;
   PairingPolicy pairing = PairingPolicy::geometric;  //!< how contenders of a singular edge pair up
   bool orient = true;  //!< orient orientable components consistently, closed ones outward
-  //! Also orient non-orientable components, cutting the fewest conflicting edges a spanning
-  //! tree finds. Off: such components keep their faces' directions and every inconsistent
-  //! edge of theirs is cut.
+  //! Also orient non-orientable components: their faces take the orientation of a breadth-first
+  //! spanning tree over the pairs, and every pair that disagrees with it is cut (a valid cut,
+  //! not necessarily the fewest edges). Off: such components keep their faces' directions and
+  //! every inconsistent edge of theirs is cut.
   bool cut_nonorientable = false;
   bool stitch = true;  //!< glue boundary sides on one vertex pair back when that stays manifold
   bool remove_duplicate_faces = false;    //!< drop polygons whose vertex set an earlier one has
