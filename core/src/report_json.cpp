@@ -26,7 +26,8 @@ Json read_json(const ReadInfo& info) {
               {"faces_set_aside", info.faces_set_aside},
               {"dangling_edges", info.dangling_edges},
               {"lone_points", info.lone_points},
-              {"strip_joins", info.strip_joins}};
+              {"strip_joins", info.strip_joins},
+              {"unknown_records", info.unknown_records}};
 }
 
 //! The counts of a detection report, then its element lists on request.

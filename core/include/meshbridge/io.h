@@ -47,13 +47,18 @@ struct ReadInfo {
   //! triangles (a b c c d ...); they are the encoding, not faces: not in the soup, not in
   //! `declared_faces`, and not a change (changed_anything() ignores them).
   std::size_t strip_joins = 0;
+  //! OBJ lines whose keyword is no OBJ record (e.g. "F 1 2 3", "vx 1 2"), skipped: counted so
+  //! that a misspelt face is not lost without a word (the CLI warns). Records of the OBJ format
+  //! MeshBridge has no use for (vt, vn, s, mtllib, curves...) are not counted.
+  std::size_t unknown_records = 0;
   //! Declared faces OpenMesh's reader never passed on (only while a format still goes through
   //! OpenMesh; MeshBridge's own readers keep every record and leave this 0).
   std::size_t faces_dropped_by_reader = 0;
 
   //! True if some record was not kept as one simple polygon.
   bool changed_anything() const {
-    return faces_split + faces_set_aside + dangling_edges + lone_points + faces_dropped_by_reader >
+    return faces_split + faces_set_aside + dangling_edges + lone_points + faces_dropped_by_reader +
+               unknown_records >
            0;
   }
 };

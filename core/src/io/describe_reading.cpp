@@ -40,6 +40,8 @@ std::string describe_reading(const ReadInfo& info) {
       text += counted(info.lone_points, "lone point");
     text += " (not part of the surface, not written back)";
   }
+  if (info.unknown_records > 0)
+    text += "; " + counted(info.unknown_records, "line") + " with an unknown keyword skipped";
   return text;
 }
 

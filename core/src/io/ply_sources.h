@@ -150,6 +150,11 @@ class AsciiSource {
     }
     return true;
   }
+  //! True if only blanks and line ends are left.
+  bool only_space_left() {
+    skip_space();
+    return p_ == end_;
+  }
   //! Every ascii value takes at least two bytes but the last ("0 ").
   bool can_hold(PlyScalar, std::uint64_t count) const { return count <= remaining() / 2 + 1; }
 

@@ -49,6 +49,10 @@ class ObjReader {
         released_ = in_.position();
       }
       const std::string_view keyword = in_.word();
+      if (!keyword.empty() && keyword.front() == '#') {
+        in_.skip_physical_line();  // a comment ending in '\' does not continue
+        continue;
+      }
       if (keyword == "v")
         vertex();
       else if (keyword == "vt" || keyword == "vn")
@@ -59,9 +63,13 @@ class ObjReader {
         line_record();
       else if (keyword == "p")
         point_record();
-      else if (attributes_ != nullptr && (keyword == "o" || keyword == "g" || keyword == "usemtl"))
-        group(keyword);
-      in_.next_line();  // anything else (comments, mtllib, s, curves): skipped
+      else if (keyword == "o" || keyword == "g" || keyword == "usemtl") {
+        if (attributes_ != nullptr)
+          group(keyword);
+      } else if (!keyword.empty() && !is_skipped_record(keyword)) {
+        ++info_.unknown_records;
+      }
+      in_.next_line();  // anything else (mtllib, s, curves...): skipped
     }
     info_.declared_vertices = soup_.num_vertices();
     if (attributes_ != nullptr && !attributes_->vertex_colors.empty())
@@ -98,6 +106,17 @@ class ObjReader {
     } else if (attributes_ != nullptr && !attributes_->vertex_colors.empty()) {
       attributes_->vertex_colors.push_back(Rgba{255, 255, 255, 255});
     }
+  }
+
+  // The records of the OBJ format (Wavefront's specification, appendix B1) that carry nothing
+  // MeshBridge keeps: skipped without a count.
+  static bool is_skipped_record(std::string_view keyword) {
+    static constexpr std::string_view kRecords[] = {
+        "vp",       "s",        "mg",         "mtllib",    "usemap", "maplib", "lod",    "bevel",
+        "c_interp", "d_interp", "shadow_obj", "trace_obj", "ctech",  "stech",  "cstype", "deg",
+        "bmat",     "step",     "curv",       "curv2",     "surf",   "parm",   "trim",   "hole",
+        "scrv",     "sp",       "end",        "con",       "call",   "csh"};
+    return std::find(std::begin(kRecords), std::end(kRecords), keyword) != std::end(kRecords);
   }
 
   static std::uint8_t to_byte(double unit) {
@@ -347,6 +366,7 @@ bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attr
   info.faces_without_corners += part.info.faces_without_corners;
   info.dangling_edges += part.info.dangling_edges;
   info.lone_points += part.info.lone_points;
+  info.unknown_records += part.info.unknown_records;
   part = ObjPart();  // its memory goes back before the next part is appended
   return true;
 }

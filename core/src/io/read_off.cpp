@@ -237,6 +237,12 @@ class OffReader {
       }
       in_.next_line();
     }
+    // A face count lower than the faces given would drop the rest without a word.
+    in_.skip_space_and_comments();
+    if (!in_.at_end()) {
+      fail("OFF declares " + std::to_string(nf) + " faces, but more follows them" + at_line() +
+           ": '" + clip(in_.word()) + "' (a false face count, or text after the mesh)");
+    }
     if (want_colors && !attributes_->face_colors.empty())
       attributes_->face_colors.resize(soup_.num_faces(), Rgba{255, 255, 255, 255});
   }

@@ -120,6 +120,15 @@ class PlyReader {
     if (header_.format == Format::ascii) {
       AsciiSource source(body, file_.end());
       read_elements(source);
+      // A count lower than the values given would drop the rest without a word.
+      if (!source.only_space_left()) {
+        throw ReadError(where() + "ascii PLY: values follow the last declared element (" +
+                        (header_.elements.empty()
+                             ? std::string("none")
+                             : header_.elements.back().name + " " +
+                                   std::to_string(header_.elements.back().count)) +
+                        "): a false element count, or text after the mesh");
+      }
     } else {
       BinarySource source(body, file_.end(), header_.format == Format::binary_big_endian);
       read_elements(source);

@@ -75,50 +75,74 @@ void read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup, Re
   weld_triangle_corners(3 * std::size_t(triangles), keys, soup, reading_threads());
 }
 
+// ASCII STL, read as the grammar it is: `solid NAME`, then facets (`facet normal x y z`,
+// `outer loop`, three `vertex x y z`, `endloop`, `endfacet`), then `endsolid NAME`; several
+// solids may follow each other. Keywords in any case; `outerloop` is taken for `outer loop`, and
+// `endloop`/`endfacet`/`endsolid` may be missing. Anything else is an error naming its line, so
+// that no facet is dropped or cut to a triangle without a word.
 void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
   TextScanner in(file.data(), file.end());
   std::vector<float> corners;
   std::size_t triangles = 0;
-  const auto skip_space = [&] {
-    while (!in.at_end()) {
-      if (!in.at_line_end())
-        return;
+  const auto next_word = [&] {
+    while (!in.at_end() && in.at_line_end())
       in.next_line();
-    }
+    return in.word();
   };
-  while (true) {
-    skip_space();
-    if (in.at_end())
-      break;
-    const std::string_view word = in.word();
+  const auto fail = [&](std::size_t line, const std::string& what) {
+    throw ReadError(file.path() + ": ASCII STL line " + std::to_string(line) + ": " + what);
+  };
+  const auto quoted = [](std::string_view word) {
+    return word.empty() ? std::string("the end of the file")
+                        : "'" + std::string(word.substr(0, 40)) + "'";
+  };
+  std::string_view word = next_word();
+  while (!word.empty()) {
     if (equals_ignoring_case(word, "solid") || equals_ignoring_case(word, "endsolid")) {
       in.next_line();  // the solid's name may be any words, "outer" included
+      word = next_word();
       continue;
     }
-    if (!equals_ignoring_case(word, "outer"))
-      continue;  // facet normal x y z, loop, endloop, endfacet: nothing to keep
-    for (int c = 0; c < 3; ++c) {
-      skip_space();
-      if (c == 0 &&
-          equals_ignoring_case(
-              std::string_view(in.position(), std::min<std::size_t>(4, file.end() - in.position())),
-              "loop")) {
+    if (!equals_ignoring_case(word, "facet"))
+      fail(in.line(), quoted(word) + " where a facet, 'solid' or 'endsolid' was expected");
+    const std::size_t facet_line = in.line();
+    word = next_word();
+    if (equals_ignoring_case(word, "normal")) {  // recomputed from the corners: not kept
+      for (int i = 0; i < 3 && !in.at_line_end(); ++i)
         in.word();
-        skip_space();
-      }
+      word = next_word();
+    }
+    if (equals_ignoring_case(word, "outer")) {
+      word = next_word();
+      if (!equals_ignoring_case(word, "loop"))
+        fail(in.line(), quoted(word) + " after 'outer' (expected 'outer loop')");
+    } else if (!equals_ignoring_case(word, "outerloop")) {
+      fail(in.line(),
+           quoted(word) + " in facet " + std::to_string(triangles) + " (expected 'outer loop')");
+    }
+    int n = 0;
+    for (word = next_word(); equals_ignoring_case(word, "vertex"); word = next_word(), ++n) {
       const std::size_t line = in.line();
       double x = 0, y = 0, z = 0;
-      const bool ok = equals_ignoring_case(in.word(), "vertex") && in.number(x) && in.number(y) &&
-                      in.number(z) && std::isfinite(float(x)) && std::isfinite(float(y)) &&
-                      std::isfinite(float(z));
+      const bool ok = in.number(x) && in.number(y) && in.number(z) && std::isfinite(float(x)) &&
+                      std::isfinite(float(y)) && std::isfinite(float(z));
       if (!ok) {
-        throw ReadError(file.path() + ": ASCII STL triangle " + std::to_string(triangles) +
-                        ", corner " + std::to_string(c) + " (line " + std::to_string(line) +
-                        ") is not 'vertex x y z' with three finite numbers (32-bit floats)");
+        fail(line, "facet " + std::to_string(triangles) + ", corner " + std::to_string(n) +
+                       " is not 'vertex x y z' with three finite numbers (32-bit floats)");
       }
-      // STL coordinates are 32-bit floats (binary STL stores nothing else): ascii ones too.
-      corners.insert(corners.end(), {float(x), float(y), float(z)});
+      if (n < 3)  // STL coordinates are 32-bit floats (binary STL stores nothing else)
+        corners.insert(corners.end(), {float(x), float(y), float(z)});
     }
+    if (n < 3 && word.empty())
+      fail(in.line(), "the file ends inside facet " + std::to_string(triangles) + " (truncated)");
+    if (n != 3) {
+      fail(facet_line, "facet " + std::to_string(triangles) + " has " + std::to_string(n) +
+                           " vertices; an STL facet is a triangle (3)");
+    }
+    if (equals_ignoring_case(word, "endloop"))
+      word = next_word();
+    if (equals_ignoring_case(word, "endfacet"))
+      word = next_word();
     ++triangles;
   }
   info.declared_faces = triangles;

@@ -18,7 +18,8 @@ class TextScanner {
  public:
   TextScanner(const char* first, const char* last, bool backslash_continues = false,
               bool hash_ends_line = false)
-      : p_(first),
+      : first_(first),
+        p_(first),
         end_(last),
         continuations_(backslash_continues),
         hash_comments_(hash_ends_line) {}
@@ -49,19 +50,35 @@ class TextScanner {
     skip_blanks();
     return p_ == end_ || *p_ == '\n' || (hash_comments_ && *p_ == '#');
   }
-  //! Moves past the next '\n' (or to the end of the file); continued lines are one line.
+  //! Moves past the next '\n' (or to the end of the file); continued lines are one line. With
+  //! `hash_ends_line`, a comment ends at its line's end even when it ends in a backslash (a
+  //! Windows path, say): a comment never continues onto the next record.
   void next_line() {
+    bool in_comment = false;
     while (p_ != end_) {
       const char c = *p_++;
       if (c == '\n') {
         ++line_;
         return;
       }
-      if (c == '\\' && continuations_ && continues_line(p_)) {
+      // '#' at the start of a word begins a comment ("g part#2" is a name).
+      in_comment = in_comment || (c == '#' && hash_comments_ &&
+                                  (p_ - 1 == first_ || is_blank_or_newline(p_[-2])));
+      if (c == '\\' && continuations_ && !in_comment && continues_line(p_)) {
         while (*p_ != '\n')
           ++p_;
         ++p_;
         ++line_;
+      }
+    }
+  }
+  //! Moves past the next '\n' (or to the end of the file), continuation or not: the rest of a
+  //! comment line.
+  void skip_physical_line() {
+    while (p_ != end_) {
+      if (*p_++ == '\n') {
+        ++line_;
+        return;
       }
     }
   }
@@ -126,6 +143,7 @@ class TextScanner {
     return continuations_ && *at == '\\' && continues_line(at + 1);
   }
 
+  const char* first_;
   const char* p_;
   const char* end_;
   bool continuations_;

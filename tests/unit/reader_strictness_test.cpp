@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What a first-time user's messy files showed the readers losing without a word: an OBJ comment
+// ending in a backslash (a Windows path) that swallowed the next record, misspelt OBJ keywords,
+// OFF and ASCII PLY files whose counts are lower than what they hold, and ASCII STL facets with
+// four corners or a misspelt keyword. Each is now kept, counted or a clear error.
+
+#include "meshbridge/errors.h"
+#include "meshbridge/io.h"
+
+#include "scratch_folder.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace meshbridge {
+namespace {
+
+class ReaderStrictness : public test_support::ScratchFolderTest {
+ protected:
+  ReaderStrictness() : ScratchFolderTest("strict") {}
+  //! The ReadError message reading `bytes` as `name` gives, or "read without error".
+  std::string error_of(const std::string& name, const std::string& bytes) const {
+    try {
+      read_soup(write(name, bytes));
+    } catch (const ReadError& e) {
+      return e.what();
+    }
+    return "read without error";
+  }
+};
+
+const char* kTetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+const char* kOffTetrahedron = "4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+
+TEST_F(ReaderStrictness, obj_comment_ending_in_a_backslash_does_not_swallow_the_next_record) {
+  const std::string faces = "f 1 3 2\nf 1 2 4\n";
+  for (const std::string& comment :
+       {std::string("# texture dir D:\\tex\\\n"), std::string("#D:\\tex\\\r\n"),
+        std::string("f 2 3 4 # \\\n")}) {
+    SCOPED_TRACE(comment);
+    std::string text = std::string(kTetrahedron) + faces + comment + "f 1 4 3\n";
+    if (comment[0] == '#')
+      text += "f 2 3 4\n";
+    ReadInfo info;
+    const Soup soup = read_soup(write("comment.obj", text), &info);
+    EXPECT_EQ(soup.num_faces(), 4u);
+    EXPECT_EQ(info.declared_faces, 4u);
+  }
+  // A comment before the first vertex, ending in a backslash: the vertex is kept.
+  const Soup first = read_soup(
+      write("first.obj", "# from C:\\models\\\n" + std::string(kTetrahedron) + "f 1 2 3\n"));
+  EXPECT_EQ(first.num_vertices(), 4u);
+  // '#' inside a word is no comment: the group line continues onto the next one (which would
+  // otherwise be a line with the unknown keyword "rest").
+  ReadInfo info;
+  MeshAttributes attributes;
+  read_soup(write("group.obj", std::string(kTetrahedron) + "g part#2 \\\n rest\nf 1 2 3\n"), &info,
+            &attributes);
+  ASSERT_EQ(attributes.face_groups.size(), 1u);
+  EXPECT_NE(attributes.face_groups[0].name.find("rest"), std::string::npos);
+  EXPECT_EQ(info.unknown_records, 0u);
+}
+
+TEST_F(ReaderStrictness, obj_lines_with_unknown_keywords_are_counted) {
+  ReadInfo info;
+  const Soup soup = read_soup(
+      write("unknown.obj", std::string(kTetrahedron) + "vt 0 0\nvn 0 0 1\ns off\nmtllib a.mtl\n"
+                                                       "cstype bezier\nf 1 2 3\nfo 1 3 4\n"
+                                                       "F 1 2 4\nvx 1 2 3\n"),
+      &info);
+  EXPECT_EQ(soup.num_faces(), 2u);  // "fo" is the old face keyword
+  EXPECT_EQ(info.unknown_records, 2u);
+  EXPECT_TRUE(info.changed_anything());
+  EXPECT_NE(describe_reading(info).find("2 lines with an unknown keyword skipped"),
+            std::string::npos);
+}
+
+TEST_F(ReaderStrictness, off_and_ascii_ply_holding_more_faces_than_declared_are_errors) {
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+  // Four faces given, three declared.
+  EXPECT_NE(error_of("lie.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces)
+                .find("OFF declares 3 faces, but more follows them (line 10): '3'"),
+            std::string::npos);
+  // Comments and blank lines after the last face are fine.
+  EXPECT_EQ(
+      read_soup(write("tail.off", "OFF\n" + std::string(kOffTetrahedron) + faces + "\n# end\n\n"))
+          .num_faces(),
+      4u);
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 3\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  EXPECT_NE(error_of("fewer.ply", header + faces)
+                .find("ascii PLY: values follow the last declared element (face 3)"),
+            std::string::npos);
+  EXPECT_EQ(read_soup(write("exact.ply", header + "3 0 2 1\n3 0 1 3\n3 1 2 3\n\n")).num_faces(),
+            3u);
+}
+
+TEST_F(ReaderStrictness, ascii_stl_is_read_as_its_grammar) {
+  const auto facet = [](const std::string& loop, const std::string& corners) {
+    return "facet normal 0 0 1\n " + loop + "\n" + corners + " endloop\nendfacet\n";
+  };
+  const std::string triangle = "vertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n";
+  // "outerloop", a missing endsolid and two solids all read.
+  ReadInfo info;
+  EXPECT_EQ(
+      read_soup(write("variants.stl", "solid a\n" + facet("outerloop", triangle) +
+                                          "endsolid a\nsolid b\n" + facet("outer loop", triangle)),
+                &info)
+          .num_faces(),
+      2u);
+  EXPECT_EQ(info.declared_faces, 2u);
+  // A facet with four corners is not cut to a triangle.
+  EXPECT_NE(error_of("quad.stl", "solid q\n" + facet("outer loop", triangle + "vertex 0 1 0\n"))
+                .find("ASCII STL line 2: facet 0 has 4 vertices; an STL facet is a triangle (3)"),
+            std::string::npos);
+  // A misspelt keyword is named, not skipped with its facet.
+  EXPECT_NE(error_of("typo.stl", "solid t\n" + facet("outer lop", triangle))
+                .find("line 3: 'lop' after 'outer' (expected 'outer loop')"),
+            std::string::npos);
+  EXPECT_NE(error_of("junk.stl", "solid t\n" + facet("outer loop", triangle) + "endsolid t\nxyz\n")
+                .find("line 10: 'xyz' where a facet, 'solid' or 'endsolid' was expected"),
+            std::string::npos);
+  EXPECT_NE(error_of("cut.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n")
+                .find("the file ends inside facet 0 (truncated)"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace meshbridge
