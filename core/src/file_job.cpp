@@ -138,20 +138,31 @@ BatchPlan plan_batch(const std::string& in_dir, const std::string& out_dir,
   std::sort(plan.unreadable.begin(), plan.unreadable.end(),
             [](const auto& a, const auto& b) { return a.name < b.name; });
 
-  std::set<std::string> taken;
+  // Every output as its input alone names it: a renamed output must not take one of these.
+  const auto in_format = [&format](const std::string& name) {
+    fs::path relative = name;
+    if (!format.empty())
+      relative.replace_extension("." + format);
+    return relative;
+  };
+  std::set<std::string> natural, taken;
+  for (const auto& named_file : named)
+    natural.insert(in_format(named_file.first).generic_string());
   for (const auto& [name, file] : named) {
     FileJob job;
     job.input = file.string();
     job.name = name;
-    fs::path relative = name;
-    if (!format.empty()) {
-      // a.obj and a.off both going to a.ply: the later one becomes a-off.ply.
-      const std::string original = relative.extension().string();
-      relative.replace_extension("." + format);
-      if (taken.count(relative.generic_string()) > 0) {
-        relative.replace_filename(relative.stem().string() + "-" + original.substr(1) + "." +
-                                  format);
-      }
+    fs::path relative = in_format(name);
+    if (taken.count(relative.generic_string()) > 0) {
+      // a.obj and a.off both going to a.ply: the later one becomes a-off.ply, or a-off-2.ply
+      // (-3, ...) when a-off.ply is another file's output.
+      const std::string base =
+          relative.stem().string() + "-" + fs::path(name).extension().string().substr(1);
+      relative.replace_filename(base + "." + format);
+      for (int n = 2; taken.count(relative.generic_string()) > 0 ||
+                      natural.count(relative.generic_string()) > 0;
+           ++n)
+        relative.replace_filename(base + "-" + std::to_string(n) + "." + format);
     }
     taken.insert(relative.generic_string());
     job.output_name = relative.generic_string();

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace meshbridge {
 namespace {
@@ -53,6 +54,23 @@ TEST_F(FileJobTest, plan_renames_outputs_that_would_meet_in_one_format) {
   ASSERT_EQ(plan.jobs.size(), 3u);
   EXPECT_EQ(plan.jobs[1].output_name, "twocubes.ply");
   EXPECT_EQ(plan.jobs[2].output_name, "twocubes-off.ply");
+}
+
+// The renamed output must not be another file's own: a-off.off keeps a-off.ply, so a.off (which
+// meets a.obj in a.ply) becomes a-off-2.ply; every output is distinct.
+TEST_F(FileJobTest, renamed_outputs_never_take_another_files_output) {
+  fs::copy_file(kModels / "twocubes.off", in_ / "twocubes-off.off");
+  fs::copy_file(kModels / "twocubes.off", in_ / "twocubes-off-2.off");
+  FileJobOptions options;
+  options.format = "ply";
+  const BatchPlan plan = plan_batch(in_.string(), (root_ / "out").string(), options);
+  std::vector<std::string> outputs;
+  for (const FileJob& job : plan.jobs)
+    outputs.push_back(job.name + " -> " + job.output_name);
+  EXPECT_EQ(outputs, (std::vector<std::string>{
+                         "sub/ico.obj -> sub/ico.ply", "twocubes-off-2.off -> twocubes-off-2.ply",
+                         "twocubes-off.off -> twocubes-off.ply", "twocubes.obj -> twocubes.ply",
+                         "twocubes.off -> twocubes-off-3.ply"}));
 }
 
 TEST_F(FileJobTest, plan_refuses_outdir_equal_to_or_inside_indir) {

@@ -61,13 +61,13 @@ struct BatchPlan {
 //! Lists every mesh file (is_supported_mesh_file) below `in_dir`, recursively, and maps each to
 //! its output below `out_dir` at the same relative path; with `options.format` the extension is
 //! replaced, and when two inputs would meet in one output (a.obj and a.off to a.ply) the later
-//! one in name order becomes a-off.ply. An unreadable folder or file is noted in `unreadable`
-//! and skipped, never fatal. Folder symlinks are not followed.
-//! `out_dir` equal to `in_dir` or inside it is refused unless `in_place`: then, when equal, each
-//! output replaces its input (unless the format changes), and when inside, the walk leaves
-//! `out_dir` out so earlier results are not taken as inputs.
-//! \throw std::invalid_argument naming the path: `in_dir` missing or not a folder, `out_dir`
-//! equal to or inside `in_dir` without `in_place`, a bad `options.format`
+//! one in name order becomes a-off.ply (a-off-2.ply, ... when that is another file's output). An
+//! unreadable folder or file is noted in `unreadable` and skipped, never fatal. Folder symlinks are
+//! not followed. `out_dir` equal to `in_dir` or inside it is refused unless `in_place`: then, when
+//! equal, each output replaces its input (unless the format changes), and when inside, the walk
+//! leaves `out_dir` out so earlier results are not taken as inputs. \throw std::invalid_argument
+//! naming the path: `in_dir` missing or not a folder, `out_dir` equal to or inside `in_dir` without
+//! `in_place`, a bad `options.format`
 BatchPlan plan_batch(const std::string& in_dir, const std::string& out_dir,
                      const FileJobOptions& options, bool in_place = false);
 
