@@ -110,6 +110,12 @@ void check_writable_file(const std::string& path) {
     throw WriteError(path + ": cannot write: '" + folder + "' is not a folder");
   if (stat_path(path, info, error) && S_ISDIR(info.st_mode))
     throw WriteError(path + ": cannot write: it is a folder");
+  // The file is replaced by renaming a new one over it, which the folder's permission allows
+  // even when the file's own does not: refuse a file this user may not write, as a shell
+  // redirection would.
+  if (stat_path(replaced_file(path), info, error) &&
+      ::access(replaced_file(path).c_str(), W_OK) != 0)
+    throw WriteError(path + ": cannot write (" + std::strerror(errno) + "): the file is read-only");
   // Creating a file is the test: access() lets root pass where creating still fails (/proc).
   std::string probe = folder + "/.meshbridge-probe-XXXXXX";
   const int fd = ::mkstemp(probe.data());

@@ -626,6 +626,12 @@ messages)
     chmod 644 "$work/public.obj"
     expect_exit 2 "${as_user[@]}" "$mb" repair "$work/public.obj" "$work/locked/a.obj"
     expect_in "$work/err" "$work/locked/a.obj: cannot write into the folder '$work/locked' (Permission denied)"
+    # A read-only file in a writable folder is not replaced (renaming over it would be allowed).
+    mkdir "$work/open" && chmod 777 "$work/open"
+    echo "keep me" >"$work/open/readonly.obj" && chmod 444 "$work/open/readonly.obj"
+    expect_exit 2 "${as_user[@]}" "$mb" repair "$work/public.obj" "$work/open/readonly.obj"
+    expect_in "$work/err" "$work/open/readonly.obj: cannot write (Permission denied): the file is read-only"
+    [ "$(cat "$work/open/readonly.obj")" = "keep me" ] || fail "a read-only output was replaced"
     expect_exit 2 "${as_user[@]}" "$mb" check "$work/secret/a.obj"
     expect_in "$work/err" "$work/secret/a.obj: cannot read (Permission denied)"
   else
