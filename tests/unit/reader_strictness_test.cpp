@@ -128,5 +128,17 @@ TEST_F(ReaderStrictness, ascii_stl_is_read_as_its_grammar) {
             std::string::npos);
 }
 
+TEST_F(ReaderStrictness, binary_stl_with_a_solid_header_and_a_wrong_size_is_named_binary) {
+  std::string bytes(84 + 50, '\0');
+  bytes.replace(0, 10, "solid part");
+  bytes[80] = 1;  // one triangle
+  for (const std::string& file : {bytes.substr(0, 120), bytes + "xy"}) {
+    EXPECT_NE(error_of("solid_binary.stl", file)
+                  .find("binary data after a header that begins with 'solid', but not a whole "
+                        "binary STL: a binary STL whose header counts 1 triangles has 134 bytes"),
+              std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace meshbridge

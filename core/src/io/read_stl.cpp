@@ -166,8 +166,15 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   }
   TextScanner probe(file.data(), file.end());
   probe.skip_space_and_comments();
-  if (!equals_ignoring_case(probe.word(), "solid")) {
-    throw ReadError(file.path() + ": neither ASCII STL (no 'solid') nor binary STL: a binary STL " +
+  // Binary data has NUL bytes (in its triangle count or coordinates) where ASCII STL has none: a
+  // binary STL whose header begins with "solid" but whose size is wrong is named as binary.
+  const bool has_nul = std::memchr(file.data(), '\0', std::min<std::size_t>(size, 4096)) != nullptr;
+  const bool solid = equals_ignoring_case(probe.word(), "solid");
+  if (has_nul || !solid) {
+    throw ReadError(file.path() +
+                    (solid ? ": binary data after a header that begins with 'solid', but not a "
+                             "whole binary STL: a binary STL "
+                           : ": neither ASCII STL (no 'solid') nor binary STL: a binary STL ") +
                     (size >= 84
                          ? "whose header counts " + std::to_string(triangles) + " triangles has " +
                                std::to_string(84 + 50 * std::uint64_t(triangles)) + " bytes"
