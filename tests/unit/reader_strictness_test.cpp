@@ -11,7 +11,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstring>
 #include <string>
+#include <vector>
 
 namespace meshbridge {
 namespace {
@@ -138,6 +141,51 @@ TEST_F(ReaderStrictness, binary_stl_with_a_solid_header_and_a_wrong_size_is_name
                         "binary STL: a binary STL whose header counts 1 triangles has 134 bytes"),
               std::string::npos);
   }
+}
+
+// A binary OFF tetrahedron: 32-bit words in the given byte order, each face followed by a colour
+// count of 0 (Geomview's specification) or by nothing (OpenMesh's layout).
+std::string binary_off(bool big_endian, bool color_counts) {
+  std::string bytes = "OFF BINARY\n";
+  const auto put = [&](std::uint32_t w) {
+    for (int i = 0; i < 4; ++i)
+      bytes += static_cast<char>(big_endian ? w >> (24 - 8 * i) : w >> (8 * i));
+  };
+  const auto put_float = [&](float x) {
+    std::uint32_t w = 0;
+    std::memcpy(&w, &x, 4);
+    put(w);
+  };
+  for (std::uint32_t n : {4u, 4u, 0u})
+    put(n);
+  for (float x : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f})
+    put_float(x);
+  for (const auto& face : {std::vector<std::uint32_t>{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}) {
+    put(3);
+    for (std::uint32_t v : face)
+      put(v);
+    if (color_counts)
+      put(0);
+  }
+  return bytes;
+}
+
+TEST_F(ReaderStrictness, binary_off_in_openmesh_and_geomview_layouts) {
+  for (const bool big_endian : {false, true}) {
+    for (const bool color_counts : {false, true}) {
+      SCOPED_TRACE(std::string(big_endian ? "big" : "little") + " endian, " +
+                   (color_counts ? "with" : "without") + " colour counts");
+      ReadInfo info;
+      const Soup soup = read_soup(write("b.off", binary_off(big_endian, color_counts)), &info);
+      ASSERT_EQ(soup.num_faces(), 4u);
+      EXPECT_EQ(info.faces_kept, 4u);
+      EXPECT_EQ(soup.positions[3], Point(0, 0, 1));
+      EXPECT_EQ(soup.polygon(3)[2], 2u);
+    }
+  }
+  EXPECT_NE(error_of("tail.off", binary_off(false, false) + "junk")
+                .find("binary OFF: 4 bytes follow its last face"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -275,22 +275,79 @@ class OffReader {
 
   // --- binary (little-endian, as OpenMesh reads and writes it) --------------------------------
 
+  // Binary OFF comes in two layouts: OpenMesh's (little-endian, as x86 writes it, and nothing
+  // after a face's indices) and Geomview's specification (big-endian 32-bit words, each face
+  // followed by a colour count and that many floats). The layout that accounts for every byte of
+  // the file is read; when none does, OpenMesh's is read and names what is wrong.
+  struct BinaryLayout {
+    bool big_endian = false;
+    bool color_counts = false;
+  };
+  static std::uint32_t load(const char* p, bool big_endian) {
+    std::uint32_t w = 0;
+    std::memcpy(&w, p, 4);
+    return big_endian ? __builtin_bswap32(w) : w;
+  }
+  static std::uint64_t vertex_floats(const OffHeader& h) {
+    return 3 + (h.normals ? 3 : 0) + (h.colors ? 3 : 0) + (h.texcoords ? 2 : 0);
+  }
+  // True if the body from `p` is exactly the counts, vertices and faces of `layout`.
+  bool fits(const OffHeader& h, const char* p, BinaryLayout layout) const {
+    const char* end = file_.end();
+    if (end - p < 12)
+      return false;
+    const std::uint64_t nv = load(p, layout.big_endian), nf = load(p + 4, layout.big_endian);
+    p += 12;
+    if (nv * vertex_floats(h) * 4 > std::uint64_t(end - p))
+      return false;
+    p += nv * vertex_floats(h) * 4;
+    for (std::uint64_t f = 0; f < nf; ++f) {
+      if (end - p < 4)
+        return false;
+      const std::uint64_t n = load(p, layout.big_endian);
+      if (n == 0 || (n + 1) * 4 > std::uint64_t(end - p))
+        return false;
+      p += (n + 1) * 4;
+      if (layout.color_counts) {
+        if (end - p < 4)
+          return false;
+        const std::uint64_t colors = load(p, layout.big_endian);
+        if (colors > 4 || (colors + 1) * 4 > std::uint64_t(end - p))
+          return false;
+        p += (colors + 1) * 4;
+      }
+    }
+    return p == end;
+  }
+
   void read_binary(const OffHeader& h) {
     const char* p = in_.position();
+    BinaryLayout layout;  // OpenMesh's, unless only another one fits the file
+    for (const BinaryLayout candidate : {BinaryLayout{false, false}, BinaryLayout{true, true},
+                                         BinaryLayout{false, true}, BinaryLayout{true, false}}) {
+      if (fits(h, p, candidate)) {
+        layout = candidate;
+        break;
+      }
+    }
     const char* end = file_.end();
     const auto left = [&] { return static_cast<std::uint64_t>(end - p); };
     const auto word = [&] {
-      std::uint32_t w = 0;
-      std::memcpy(&w, p, 4);
+      const std::uint32_t w = load(p, layout.big_endian);
       p += 4;
       return w;
+    };
+    const auto real = [&] {
+      const std::uint32_t w = word();
+      float x = 0;
+      std::memcpy(&x, &w, 4);
+      return x;
     };
     if (left() < 12)
       fail("binary OFF ends before its vertex, face and edge counts");
     const std::uint32_t nv = word(), nf = word();
     word();
-    const std::uint64_t floats =
-        3 + (h.normals ? 3 : 0) + (h.colors ? 3 : 0) + (h.texcoords ? 2 : 0);
+    const std::uint64_t floats = vertex_floats(h);
     if (std::uint64_t(nv) * floats * 4 > left()) {
       fail("binary OFF declares " + std::to_string(nv) + " vertices (" +
            std::to_string(std::uint64_t(nv) * floats * 4) + " bytes) but only " +
@@ -306,8 +363,8 @@ class OffReader {
     const bool colors = attributes_ != nullptr && h.colors;
     for (std::uint32_t v = 0; v < nv; ++v) {
       float values[11];
-      std::memcpy(values, p, floats * 4);
-      p += floats * 4;
+      for (std::uint64_t i = 0; i < floats; ++i)
+        values[i] = real();
       soup_.positions.push_back(Point(values[0], values[1], values[2]));
       if (colors) {
         const float* c = values + 3 + (h.normals ? 3 : 0);
@@ -335,6 +392,12 @@ class OffReader {
         corners.push_back(static_cast<Index>(index));
       }
       add_face(corners);
+      if (layout.color_counts)  // checked by fits(): a count of at most 4, then the floats
+        p += 4 * (std::uint64_t(word()));
+    }
+    if (p != end) {
+      fail("binary OFF: " + std::to_string(left()) +
+           " bytes follow its last face (neither OpenMesh's layout nor Geomview's fits the file)");
     }
   }
 
