@@ -188,5 +188,53 @@ TEST_F(ReaderStrictness, binary_off_in_openmesh_and_geomview_layouts) {
             std::string::npos);
 }
 
+TEST_F(ReaderStrictness, a_utf8_byte_order_mark_is_skipped_in_text_formats) {
+  const std::string bom = "\xEF\xBB\xBF";
+  EXPECT_EQ(read_soup(write("bom.off", bom + "OFF\n" + kOffTetrahedron +
+                                           "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"))
+                .num_faces(),
+            4u);
+  EXPECT_EQ(read_soup(write("bom.obj", bom + kTetrahedron + "f 1 2 3\n")).num_faces(), 1u);
+  EXPECT_EQ(
+      read_soup(write("bom.stl", bom + "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                                       "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"))
+          .num_faces(),
+      1u);
+}
+
+// OFF colours written as integers are 0..255, as floats 0..1. "1 1 1" is either: in a file that
+// writes other colours as floats it is white, in one that writes only integers it stays 1/255.
+// Whether a colour is integer is decided by its own values, not by the normal before it.
+TEST_F(ReaderStrictness, off_colour_scale_is_decided_per_file) {
+  const auto colors = [&](const std::string& name, const std::string& text) {
+    MeshAttributes attributes;
+    read_soup(write(name, text), nullptr, &attributes);
+    return attributes.vertex_colors;
+  };
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+  const auto mixed = colors("mixed.off",
+                            "COFF\n4 4 0\n0 0 0 1.0 0 0\n1 0 0 1 1 1\n0 1 0 0 1 0\n"
+                            "0 0 1 0.5 0.5 0.5\n" +
+                                faces);
+  ASSERT_EQ(mixed.size(), 4u);
+  EXPECT_EQ(mixed[0], (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(mixed[1], (Rgba{255, 255, 255, 255}));
+  EXPECT_EQ(mixed[2], (Rgba{0, 255, 0, 255}));
+  EXPECT_EQ(mixed[3], (Rgba{128, 128, 128, 255}));
+  const auto integers = colors("integers.off",
+                               "COFF\n4 4 0\n0 0 0 255 0 0\n1 0 0 1 1 1\n0 1 0 0 255 0\n"
+                               "0 0 1 9 9 9\n" +
+                                   faces);
+  EXPECT_EQ(integers[0], (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(integers[1], (Rgba{1, 1, 1, 255}));
+  const auto normals = colors("normals.off",
+                              "CNOFF\n4 4 0\n0 0 0 0.6 0 0.8 255 0 0\n"
+                              "1 0 0 0.6 0 0.8 0 255 0\n0 1 0 0 0 1 0 0 255\n"
+                              "0 0 1 0 0 1 9 9 9\n" +
+                                  faces);
+  EXPECT_EQ(normals[0], (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(normals[3], (Rgba{9, 9, 9, 255}));
+}
+
 }  // namespace
 }  // namespace meshbridge

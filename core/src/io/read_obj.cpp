@@ -378,7 +378,7 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
                    MeshAttributes* attributes) {
   std::vector<ObjPart> parts(n);
   for (unsigned k = 0; k < n; ++k) {
-    parts[k].first = k == 0 ? file.data() : parts[k - 1].last;
+    parts[k].first = k == 0 ? after_byte_order_mark(file.data(), file.end()) : parts[k - 1].last;
     parts[k].last = k + 1 == n ? file.end()
                                : line_start_after(file.data() + part_begin(file.size(), n, k + 1),
                                                   file.data(), file.end());
@@ -434,7 +434,9 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   }
   const RecordCounts counts = estimate_records(file.data(), file.end());
   reserve_huge(soup, counts.vertices, counts.faces, counts.corners);
-  ObjReader(file, file.data(), file.end(), soup, info, attributes).read();
+  ObjReader(file, after_byte_order_mark(file.data(), file.end()), file.end(), soup, info,
+            attributes)
+      .read();
 }
 
 }  // namespace meshbridge::detail

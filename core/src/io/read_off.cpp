@@ -56,7 +56,7 @@ class OffReader {
         soup_(soup),
         info_(info),
         attributes_(attributes),
-        in_(file.data(), file.end(), false, true) {}
+        in_(after_byte_order_mark(file.data(), file.end()), file.end(), false, true) {}
 
   void read() {
     const OffHeader header = read_header();
@@ -167,6 +167,7 @@ class OffReader {
     if (want_colors && h.colors)
       attributes_->vertex_colors.reserve(static_cast<std::size_t>(nv));
     std::vector<double> rest;
+    std::vector<char> integral;
     for (std::int64_t v = 0; v < nv; ++v) {
       release_behind();
       double xyz[3];
@@ -181,14 +182,17 @@ class OffReader {
       }
       soup_.positions.push_back(Point(xyz[0], xyz[1], xyz[2]));
       if (want_colors && h.colors) {
-        bool integers = true;
-        numbers_to_line_end(rest, integers);
+        numbers_to_line_end(rest, integral);
         // Rest of the line: [nx ny nz] colour [s t].
         const std::size_t skip_front = h.normals ? 3 : 0, skip_back = h.texcoords ? 2 : 0;
         Rgba color{255, 255, 255, 255};
         if (rest.size() >= skip_front + skip_back) {
-          std::vector<double> values(rest.begin() + skip_front, rest.end() - skip_back);
-          to_color(values, integers, color);
+          const std::size_t last = rest.size() - skip_back;
+          const std::vector<double> values(rest.begin() + skip_front, rest.begin() + last);
+          const bool integers = std::all_of(integral.begin() + skip_front, integral.begin() + last,
+                                            [](char i) { return i; });
+          if (to_color(values, integers, color))
+            note_color(values, integers, ColorOf::vertex, static_cast<Index>(v));
         }
         attributes_->vertex_colors.push_back(color);
       }
@@ -226,13 +230,15 @@ class OffReader {
       }
       add_face(corners);
       if (want_colors && !corners.empty()) {
-        bool integers = true;
-        numbers_to_line_end(rest, integers);
+        numbers_to_line_end(rest, integral);
+        const bool integers =
+            std::all_of(integral.begin(), integral.end(), [](char i) { return i; });
         Rgba color{255, 255, 255, 255};
         if (to_color(rest, integers, color)) {
           auto& colors = attributes_->face_colors;
           colors.resize(soup_.num_faces() - 1, Rgba{255, 255, 255, 255});
           colors.push_back(color);
+          note_color(rest, integers, ColorOf::face, static_cast<Index>(soup_.num_faces() - 1));
         }
       }
       in_.next_line();
@@ -245,22 +251,40 @@ class OffReader {
     }
     if (want_colors && !attributes_->face_colors.empty())
       attributes_->face_colors.resize(soup_.num_faces(), Rgba{255, 255, 255, 255});
+    if (want_colors && unit_colors_seen_) {
+      // Colours written as integers are 0..255, as floats 0..1; "1 1 1" could be either. In a
+      // file that writes some colour as floats, it is read the same way (white, not near black).
+      for (const auto& [of, i] : ambiguous_colors_) {
+        Rgba& c = of == ColorOf::face ? attributes_->face_colors[i] : attributes_->vertex_colors[i];
+        for (std::uint8_t* channel : {&c.r, &c.g, &c.b, &c.a})
+          *channel = *channel <= 1 ? static_cast<std::uint8_t>(*channel * 255) : *channel;
+      }
+    }
   }
 
-  // The numbers left on the current line (stops at the first word that is none).
-  void numbers_to_line_end(std::vector<double>& values, bool& all_integers) {
+  // The numbers left on the current line (stops at the first word that is none), and for each
+  // whether it is written as an integer.
+  void numbers_to_line_end(std::vector<double>& values, std::vector<char>& integral) {
     values.clear();
-    all_integers = true;
+    integral.clear();
     while (!in_.at_line_end()) {
       const char* start = in_.position();
       double x = 0;
       if (!in_.number(x))
         break;
       const std::string_view text(start, static_cast<std::size_t>(in_.position() - start));
-      if (text.find_first_of(".eEnN") != std::string_view::npos)
-        all_integers = false;
+      integral.push_back(text.find_first_of(".eEnN") == std::string_view::npos);
       values.push_back(x);
     }
+  }
+
+  enum class ColorOf { vertex, face };
+  // Remembers what the file's colours tell about their scale (see the end of read_ascii).
+  void note_color(const std::vector<double>& values, bool integers, ColorOf of, Index i) {
+    if (!integers)
+      unit_colors_seen_ = true;
+    else if (std::all_of(values.begin(), values.end(), [](double x) { return x <= 1; }))
+      ambiguous_colors_.emplace_back(of, i);
   }
 
   void add_face(std::vector<Index>& corners) {
@@ -407,6 +431,8 @@ class OffReader {
   MeshAttributes* attributes_;
   TextScanner in_;
   const char* released_ = file_.data();
+  bool unit_colors_seen_ = false;  //!< some colour was written as floats (0..1)
+  std::vector<std::pair<ColorOf, Index>> ambiguous_colors_;  //!< integer colours all <= 1
 };
 
 }  // namespace

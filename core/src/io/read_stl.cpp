@@ -81,7 +81,7 @@ void read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup, Re
 // `endloop`/`endfacet`/`endsolid` may be missing. Anything else is an error naming its line, so
 // that no facet is dropped or cut to a triangle without a word.
 void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
-  TextScanner in(file.data(), file.end());
+  TextScanner in(after_byte_order_mark(file.data(), file.end()), file.end());
   std::vector<float> corners;
   std::size_t triangles = 0;
   const auto next_word = [&] {
@@ -164,7 +164,7 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
     read_binary(file, triangles, soup, info);
     return;
   }
-  TextScanner probe(file.data(), file.end());
+  TextScanner probe(after_byte_order_mark(file.data(), file.end()), file.end());
   probe.skip_space_and_comments();
   // Binary data has NUL bytes (in its triangle count or coordinates) where ASCII STL has none: a
   // binary STL whose header begins with "solid" but whose size is wrong is named as binary.

@@ -10,6 +10,16 @@
 
 namespace meshbridge::detail {
 
+//! Where the text of [first, last) starts: after a UTF-8 byte order mark, if the file has one
+//! (some Windows editors and exporters write it before "OFF" or the first OBJ record).
+inline const char* after_byte_order_mark(const char* first, const char* last) {
+  return last - first >= 3 && static_cast<unsigned char>(first[0]) == 0xEF &&
+                 static_cast<unsigned char>(first[1]) == 0xBB &&
+                 static_cast<unsigned char>(first[2]) == 0xBF
+             ? first + 3
+             : first;
+}
+
 //! Walks [first, last) for the text readers (OBJ, OFF, ASCII PLY and STL).
 //! Blanks are ' ', '\t', '\r', '\v', '\f' and, when enabled, an OBJ line continuation (a
 //! backslash right before the line end). A '\n' is never a blank: readers see line ends.
