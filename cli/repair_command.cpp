@@ -102,6 +102,7 @@ int run_repair(RepairArguments& arguments) {
   std::ostringstream separate_summary;
   std::optional<DefectReport> reread;  // STL output as a reader gets it back
   WrittenTriangles written;
+  std::vector<std::string> left_out;  // what the output format could not hold
   {
     ProgressDisplay progress(in, progress_wanted(arguments.progress), progress_wanted(false),
                              repair_plan());
@@ -122,6 +123,7 @@ int run_repair(RepairArguments& arguments) {
                    separate_summary);
     write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
     written = count_written_triangles(out, result.mesh.soup);
+    left_out = describe_unwritten(out, attributes);
     std::error_code status_error;  // (a device or pipe cannot be read back)
     if (is_stl_path(out) && std::filesystem::is_regular_file(out, status_error)) {
       // Only the picture reads the mesh again: without one it is freed before the file is read
@@ -133,9 +135,13 @@ int run_repair(RepairArguments& arguments) {
     if (!arguments.report.empty()) {
       ReportJsonOptions json;
       json.elements = arguments.elements;
-      const std::string text =
-          repair_report_json(in, out, result.report, &info, json, reread ? &*reread : nullptr) +
-          "\n";
+      WrittenOutput output;
+      output.triangles = written.triangles;
+      output.polygons_fanned = written.fanned;
+      output.left_out = left_out;
+      const std::string text = repair_report_json(in, out, result.report, &info, json,
+                                                  reread ? &*reread : nullptr, &output) +
+                               "\n";
       if (report_to_stdout)
         std::cout << text << std::flush;
       else
@@ -156,6 +162,8 @@ int run_repair(RepairArguments& arguments) {
     }
   }
   warn_about_reader(in, info);
+  for (const std::string& what : left_out)
+    std::cerr << "meshbridge: warning: " << out << ": " << what << "\n";
 
   std::ostream& summary = report_to_stdout ? std::cerr : std::cout;
   summary << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();

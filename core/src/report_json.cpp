@@ -27,7 +27,8 @@ Json read_json(const ReadInfo& info) {
               {"dangling_edges", info.dangling_edges},
               {"lone_points", info.lone_points},
               {"strip_joins", info.strip_joins},
-              {"unknown_records", info.unknown_records}};
+              {"unknown_records", info.unknown_records},
+              {"color_map_indices", info.color_map_indices}};
 }
 
 //! The counts of a detection report, then its element lists on request.
@@ -154,13 +155,19 @@ std::string check_report_json(const std::string& file, const DefectReport& repor
 
 std::string repair_report_json(const std::string& file, const std::string& output,
                                const RepairReport& report, const ReadInfo* read,
-                               const ReportJsonOptions& options, const DefectReport* reread) {
+                               const ReportJsonOptions& options, const DefectReport* reread,
+                               const WrittenOutput* written) {
   Json out = header("repair", file);
   if (!output.empty())
     out["output"] = output;
   if (read)
     out["read"] = read_json(*read);
   add_repair(out, report, options.elements, reread);
+  if (written) {
+    out["written"] = Json{{"triangles", written->triangles},
+                          {"polygons_fanned", written->polygons_fanned},
+                          {"left_out", written->left_out}};
+  }
   return dump(out, options.indent);
 }
 

@@ -169,14 +169,31 @@ repair_formats)
   source "$(dirname "${BASH_SOURCE[0]}")/../meshlab/crack_models.sh"
   write_t_junction_box "$work/box.off"
   for ext in stl 3mf; do
-    expect_exit 0 "$mb" repair "$work/box.off" "$work/box.$ext"
+    expect_exit 0 "$mb" repair "$work/box.off" "$work/box.$ext" --report "$work/box.json"
     expect_in "$work/out" "faces: 7 in, 7 out"
     expect_in "$work/out" "written as 16 triangles: 7 polygons fanned (the format holds triangles only)"
+    [ "$(json_field "$work/box.json" written.triangles)" = 16 ] || fail "$ext: written.triangles"
+    [ "$(json_field "$work/box.json" written.polygons_fanned)" = 7 ] || fail "$ext: written.polygons_fanned"
     expect_exit 0 "$mb" check "$work/box.$ext" --json
     [ "$(json_field "$work/out" faces)" = 16 ] || fail "$ext: check reads 16 triangles"
   done
-  expect_exit 0 "$mb" repair "$work/box.off" "$work/box.ply"
+  expect_exit 0 "$mb" repair "$work/box.off" "$work/box.ply" --report "$work/box.json"
   grep -q "written as" "$work/out" && fail "PLY keeps polygons: no 'written as' line"
+  [ "$(json_field "$work/box.json" written.polygons_fanned)" = 0 ] || fail "PLY: written.polygons_fanned"
+  # What the output format cannot hold is named on stderr and in the report, never dropped
+  # without a word; OBJ to OBJ keeps mtllib, groups and the vertices' own colours.
+  printf 'mtllib m.mtl\nv 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvn 0 0 1\nvn 1 0 0\nusemtl red\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$work/tex.obj"
+  expect_exit 0 "$mb" repair "$work/tex.obj" "$work/tex.stl" --report "$work/tex.json"
+  expect_in "$work/err" "tex.stl: 1 texture coordinate (vt) and 2 normals (vn) not written: MeshBridge writes neither"
+  expect_in "$work/err" "tex.stl: vertex colours not written: STL holds none"
+  expect_in "$work/err" "tex.stl: OBJ groups and materials not written (1 o/g/usemtl line, 1 mtllib line): STL holds none"
+  [ "$(json_field "$work/tex.json" written.left_out.2)" = "OBJ groups and materials not written (1 o/g/usemtl line, 1 mtllib line): STL holds none" ] ||
+    fail "written.left_out.2: $(cat "$work/tex.json")"
+  expect_exit 0 "$mb" repair "$work/tex.obj" "$work/tex_out.obj"
+  [ "$(grep -c "not written" "$work/err")" = 1 ] || fail "OBJ keeps all but vt/vn: $(cat "$work/err")"
+  [ "$(grep -c '^v .* .* .* 1 0 0$' "$work/tex_out.obj") $(grep -c '^v [^ ]* [^ ]* [^ ]*$' "$work/tex_out.obj")" = "1 3" ] ||
+    fail "vertex colours where the input had them: $(cat "$work/tex_out.obj")"
+  expect_in "$work/tex_out.obj" "mtllib m.mtl"
   for ext in obj off ply; do
     expect_exit 0 "$mb" repair "$models/prisms24.obj" "$work/p.$ext"
     expect_exit 0 "$mb" check "$work/p.$ext" --json
@@ -726,12 +743,17 @@ fill_holes)
   [ "$(json_field "$work/b.json" holes.max_edges)" = 4 ] || fail "--fill-holes=4"
   expect_exit 2 "$mb" repair --fill-holes "$models/cube_with_hole.obj" "$work/b.obj" --report "$work/b.json"
   expect_in "$work/err" "put it after IN and OUT, or write --fill-holes=N"
-  # Face colours: the input's stay with their faces, the new triangle takes the default colour.
+  # Face colours: the input's stay with their faces, the new triangle has none (OFF lets a face
+  # go without; PLY, a colour on every face or none, gives it the default).
   printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 200 0 0 255\n3 0 1 3 0 200 0 255\n3 0 3 2 0 0 200 255\n' >"$work/tet.off"
   expect_exit 0 "$mb" repair "$work/tet.off" "$work/tet_out.off" --fill-holes
   expect_in "$work/out" "1 filled with 1 new triangle,"
-  [ "$(sed -n 7,10p "$work/tet_out.off" | awk '{print $5, $6, $7, $8}' | tr '\n' ' ')" = \
-    "200 0 0 255 0 200 0 255 0 0 200 255 0 0 0 255 " ] || fail "face colours: $(cat "$work/tet_out.off")"
+  [ "$(sed -n 7,10p "$work/tet_out.off" | awk '{print NF ":" $5, $6, $7, $8}' | tr '\n' ' ')" = \
+    "8:200 0 0 255 8:0 200 0 255 8:0 0 200 255 4:    " ] || fail "face colours: $(cat "$work/tet_out.off")"
+  expect_exit 0 "$mb" repair "$work/tet.off" "$work/tet_out.ply" --fill-holes
+  # Binary faces: uchar count, 3 ints, then red green blue alpha: the last 4 faces' 17 bytes.
+  [ "$(tail -c 68 "$work/tet_out.ply" | od -An -v -tu1 -w17 | awk '{print $14, $15, $16, $17}' | tr '\n' ' ')" = \
+    "200 0 0 255 0 200 0 255 0 0 200 255 0 0 0 255 " ] || fail "PLY face colours: $(od -c "$work/tet_out.ply")"
   # batch: the filled file counts as repaired and is closed; a closed one stays clean.
   mkdir -p "$work/in"
   cp "$models/cube_with_hole.obj" "$models/icosphere.obj" "$work/in/"

@@ -78,12 +78,19 @@ Reading read_with(unsigned threads, const std::string& path) {
       x.faces_kept != y.faces_kept || x.faces_split != y.faces_split ||
       x.faces_set_aside != y.faces_set_aside ||
       x.faces_without_corners != y.faces_without_corners || x.dangling_edges != y.dangling_edges ||
-      x.lone_points != y.lone_points)
+      x.lone_points != y.lone_points || x.unknown_records != y.unknown_records ||
+      x.color_map_indices != y.color_map_indices)
     return ::testing::AssertionFailure() << "counts differ";
-  if (!(a.attributes.vertex_colors == b.attributes.vertex_colors) ||
-      !(a.attributes.face_colors == b.attributes.face_colors) ||
-      a.attributes.double_precision != b.attributes.double_precision)
+  const MeshAttributes &s = a.attributes, &t = b.attributes;
+  if (!(s.vertex_colors == t.vertex_colors) || !(s.face_colors == t.face_colors) ||
+      s.vertex_color_missing != t.vertex_color_missing ||
+      s.face_color_missing != t.face_color_missing ||
+      s.vertex_color_channels != t.vertex_color_channels ||
+      s.face_color_channels != t.face_color_channels || s.double_precision != t.double_precision)
     return ::testing::AssertionFailure() << "colours differ";
+  if (s.material_libraries != t.material_libraries ||
+      s.texture_coordinates != t.texture_coordinates || s.normals != t.normals)
+    return ::testing::AssertionFailure() << "mtllib, vt or vn counts differ";
   if (a.attributes.face_groups.size() != b.attributes.face_groups.size())
     return ::testing::AssertionFailure() << "groups differ";
   for (std::size_t g = 0; g < a.attributes.face_groups.size(); ++g) {
@@ -230,12 +237,14 @@ void write_busy_obj(const std::string& file, const Soup& soup) {
         const Point& p = soup.positions[written];
         out << "v " << p[0] << ' ' << p[1] << ' ' << p[2];
         if (written > soup.num_vertices() / 2 && written % 100 < 5)
-          out << " 0.25 0.5 1";
+          out << " 0.25 0.5 1" << (written % 100 == 3 ? " 0.5" : "");
         out << (written % 31 == 0 ? "\r\n" : "\n");
       }
     }
-    if (f % 5000 == 0)
+    if (f % 5000 == 0) {
       out << (f % 10000 == 0 ? "g part" : "usemtl m") << f << "\n# a comment \\\ns 1\n";
+      out << "mtllib lib" << f << ".mtl\nvt 0.5 0.5\nvn 0 0 1\nvn 1 0 0\n";
+    }
     if (f % 4001 == 0)
       out << "l 1 2 -1\np -2\n";
     out << "f";
@@ -261,6 +270,20 @@ TEST_F(ParallelReading, obj_with_relative_indices_groups_and_colours_reads_the_s
   EXPECT_EQ(one.soup.num_faces(), board.num_faces());
   EXPECT_GT(one.info.dangling_edges, 0u);
   EXPECT_EQ(one.attributes.vertex_colors.size(), one.soup.num_vertices());
+  ASSERT_EQ(one.attributes.vertex_color_missing.size(), one.soup.num_vertices());
+  std::size_t coloured = 0;
+  for (std::size_t v = 0; v < one.soup.num_vertices(); ++v) {
+    const bool has = v > one.soup.num_vertices() / 2 && v % 100 < 5;
+    coloured += has;
+    EXPECT_EQ(one.attributes.vertex_color_missing[v], !has) << v;
+  }
+  EXPECT_GT(coloured, 0u);
+  EXPECT_EQ(one.attributes.vertex_color_channels, kRgbaChannels);  // some 'v' has r g b a
+  const std::size_t group_lines = (board.num_faces() + 4999) / 5000;
+  EXPECT_EQ(one.attributes.material_libraries.size(), group_lines);
+  EXPECT_EQ(one.attributes.material_libraries.front(), "mtllib lib0.mtl");
+  EXPECT_EQ(one.attributes.texture_coordinates, group_lines);
+  EXPECT_EQ(one.attributes.normals, 2 * group_lines);
   EXPECT_FALSE(one.attributes.face_groups.empty());
   expect_same_for_every_thread_count(file);
 }

@@ -51,6 +51,9 @@ struct ReadInfo {
   //! that a misspelt face is not lost without a word (the CLI warns). Records of the OBJ format
   //! MeshBridge has no use for (vt, vn, s, mtllib, curves...) are not counted.
   std::size_t unknown_records = 0;
+  //! OFF colours given as a single colour-map index (Geomview's colour map is a file of its own,
+  //! not read): not kept, counted so that they are not lost without a word.
+  std::size_t color_map_indices = 0;
   //! Declared faces OpenMesh's reader never passed on (only while a format still goes through
   //! OpenMesh; MeshBridge's own readers keep every record and leave this 0).
   std::size_t faces_dropped_by_reader = 0;
@@ -58,7 +61,7 @@ struct ReadInfo {
   //! True if some record was not kept as one simple polygon.
   bool changed_anything() const {
     return faces_split + faces_set_aside + dangling_edges + lone_points + faces_dropped_by_reader +
-               unknown_records >
+               unknown_records + color_map_indices >
            0;
   }
 };
@@ -83,12 +86,44 @@ struct FaceGroup {
   Index first_face = 0;
 };
 
+//! Colour channels, as bits of MeshAttributes::vertex_color_channels / face_color_channels.
+enum ColorChannel : std::uint8_t {
+  kRedChannel = 1,
+  kGreenChannel = 2,
+  kBlueChannel = 4,
+  kAlphaChannel = 8,
+  kRgbChannels = 7,
+  kRgbaChannels = 15
+};
+
 //! What a file carries besides positions and polygons, where MeshBridge keeps it.
 struct MeshAttributes {
-  std::vector<Rgba> vertex_colors;     //!< empty, or one per soup vertex
-  std::vector<Rgba> face_colors;       //!< empty, or one per soup face
+  std::vector<Rgba> vertex_colors;  //!< empty, or one per soup vertex
+  std::vector<Rgba> face_colors;    //!< empty, or one per soup face
+  //! Elements the file gave no colour although others have one (an OBJ `v` line without one, an
+  //! OFF face without one, a PLY strip triangle): one flag per element, or empty when every
+  //! element has its colour. Such an element holds white in the colour vector; the OBJ and OFF
+  //! writers leave its colour out, PLY (a colour on every element or none) writes the white.
+  std::vector<bool> vertex_color_missing, face_color_missing;
+  //! The channels the file gave (ColorChannel bits; rgb for OBJ and OFF, plus alpha if some
+  //! colour had one; a PLY file's own properties). The PLY writer writes exactly these; OBJ and
+  //! OFF always write red, green and blue (a channel the file lacked is 0) and alpha if given.
+  std::uint8_t vertex_color_channels = kRgbaChannels, face_color_channels = kRgbaChannels;
   std::vector<FaceGroup> face_groups;  //!< OBJ groups in file order (empty elsewhere)
-  bool double_precision = false;       //!< positions were stored as 64-bit floats (PLY double)
+  //! OBJ `mtllib` lines as written (never opened); the OBJ writer writes them back, so that the
+  //! `usemtl` groups still name materials of a library.
+  std::vector<std::string> material_libraries;
+  //! OBJ `vt` and `vn` records: read and their indices checked, but not kept (no writer writes
+  //! texture coordinates or normals). See describe_unwritten().
+  std::size_t texture_coordinates = 0, normals = 0;
+  bool double_precision = false;  //!< positions were stored as 64-bit floats (PLY double)
+
+  //! True if element `i` has a colour of its own (a colour vector that is non-empty and no
+  //! missing flag). `i` may be kNoIndex (an element repair added: no colour).
+  static bool has_color(const std::vector<Rgba>& colors, const std::vector<bool>& missing,
+                        Index i) {
+    return i < colors.size() && (missing.empty() || !missing[i]);
+  }
 };
 
 //! Reads the raw soup of a mesh file: every vertex and polygon as the file has them (repeated
@@ -106,14 +141,25 @@ Soup read_soup(const std::string& path, ReadInfo* info = nullptr,
 //! The attributes of a repaired mesh: per-vertex colours through `mesh.vertex_origin`, per-face
 //! colours through `mesh.face_origin` (the copies of a split vertex and the pieces of a split
 //! face carry their original's colour), OBJ groups moved to the first output face of each (a
-//! group left with no face gives way to the next one that starts there), `double_precision`
+//! group left with no face gives way to the next one that starts there); the missing-colour flags
+//! mapped the same way; channels, `material_libraries`, the vt/vn counts and `double_precision`
 //! kept. An origin outside the input (kNoIndex: a face added by hole filling) gets the default
-//! colour. The result belongs to `mesh` itself, element by element: it is for callers that keep
-//! attributes per output element. write_mesh() takes the input's attributes and maps them itself;
-//! handing it these instead would map them twice.
-//! \pre `mesh.face_origin` is non-decreasing (repair keeps the face order; added faces, marked
-//! kNoIndex, come last)
+//! colour and is flagged as having none. The result belongs to `mesh` itself, element by element:
+//! it is for callers that keep attributes per output element. write_mesh() takes the input's
+//! attributes and maps them itself; handing it these instead would map them twice. \pre
+//! `mesh.face_origin` is non-decreasing (repair keeps the face order; added faces, marked kNoIndex,
+//! come last)
 MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& mesh);
+
+//! What write_mesh() leaves out when it writes a mesh read with `attributes` to `path` (format
+//! by extension): one phrase per kind, e.g. "24 texture coordinates (vt) and 8 normals (vn) not
+//! written: MeshBridge writes neither", "face colours not written: STL holds none", "3 vertices
+//! without a colour written white: PLY gives every vertex a colour or none", "OBJ groups and
+//! materials not written (2 o/g/usemtl lines, 1 mtllib line): PLY holds none", "positions
+//! rounded from 64-bit to 32-bit floats: STL holds no more". Empty when the output holds all
+//! MeshBridge read. For a warning before or after writing (the CLI's `repair` prints each).
+std::vector<std::string> describe_unwritten(const std::string& path,
+                                            const MeshAttributes& attributes);
 
 //! True if write_mesh and write_file_atomically write `path` in place rather than through a
 //! temporary file renamed over it: a path under /dev/ (/dev/stdout, /dev/null) or an existing

@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace meshbridge {
 
@@ -42,16 +43,28 @@ std::string check_report_json(const std::string& file, const DefectReport& repor
                               const ReadInfo* read = nullptr,
                               const ReportJsonOptions& options = {});
 
+//! What writing the output made of the repaired mesh (the CLI's `repair`).
+struct WrittenOutput {
+  //! Triangles written, for formats that hold triangles only (STL, 3MF); 0 for the others.
+  std::size_t triangles = 0;
+  //! Polygons of more than 3 corners fanned into triangles there (0 for the other formats).
+  std::size_t polygons_fanned = 0;
+  //! What the format left out of what was read, one phrase each (describe_unwritten()).
+  std::vector<std::string> left_out;
+};
+
 //! `{"schema_version":1,"kind":"repair","file":...,"output":...,"read":{...},<repair counts>,
 //! "gaps":{<gap closing counts>},"before":{<check counts>},"after":{<check counts>}
-//! [,"reread":{<check counts>}]}`; with `options.elements` the `before`, `after` (and `reread`)
-//! objects carry their `elements`. `output` is left out when empty, `read` when null. `reread`
-//! (the written file as a reader gets it back: STL welds split vertex copies by position) is
-//! written exactly when `reread` is not null.
+//! [,"reread":{<check counts>}][,"written":{"triangles":N,"polygons_fanned":N,"left_out":[...]}]}`;
+//! with `options.elements` the `before`, `after` (and `reread`) objects carry their `elements`.
+//! `output` is left out when empty, `read` when null. `reread` (the written file as a reader
+//! gets it back: STL welds split vertex copies by position) is written exactly when `reread` is
+//! not null, `written` exactly when `written` is not null.
 std::string repair_report_json(const std::string& file, const std::string& output,
                                const RepairReport& report, const ReadInfo* read = nullptr,
                                const ReportJsonOptions& options = {},
-                               const DefectReport* reread = nullptr);
+                               const DefectReport* reread = nullptr,
+                               const WrittenOutput* written = nullptr);
 
 //! What one way of building an OpenMesh mesh from a soup kept (for `compare`).
 struct BuildFigures {

@@ -42,6 +42,12 @@ std::string describe_reading(const ReadInfo& info) {
   }
   if (info.unknown_records > 0)
     text += "; " + counted(info.unknown_records, "line") + " with an unknown keyword skipped";
+  if (info.color_map_indices > 0) {
+    text += "; " + std::to_string(info.color_map_indices) +
+            (info.color_map_indices == 1 ? " colour given as a colour-map index"
+                                         : " colours given as colour-map indices") +
+            " not kept (Geomview's colour map is not read)";
+  }
   return text;
 }
 

@@ -42,6 +42,11 @@
 
 namespace meshbridge::detail {
 
+//! The file formats, by extension.
+enum class Format { unknown, obj, off, ply, stl, threemf };
+//! The format of `path` by its extension (any case; unknown without one).
+Format format_of(const std::string& path);
+
 void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 void read_off(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 void read_ply(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
@@ -73,6 +78,42 @@ void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
 //! does, adding the counts to `info` (faces_without_corners are added to faces_set_aside too).
 //! Called by the dispatcher after every reader. \throw InvalidSoupError as validate_soup()
 void account_faces(const Soup& soup, ReadInfo& info);
+
+//! White, the colour of an element the file gave none (MeshAttributes::*_color_missing).
+inline constexpr Rgba kNoColor{255, 255, 255, 255};
+
+//! Gives elements [colors.size(), n) no colour of their own: white, flagged in `missing` (which
+//! is extended with "given" flags for the elements before).
+inline void pad_missing_colors(std::vector<Rgba>& colors, std::vector<bool>& missing,
+                               std::size_t n) {
+  if (colors.size() >= n)
+    return;
+  missing.resize(colors.size(), false);
+  missing.resize(n, true);
+  colors.resize(n, kNoColor);
+}
+
+//! Appends the colour of the next element: `given` or none (see pad_missing_colors). Nothing is
+//! stored while no element has a colour.
+inline void push_color(std::vector<Rgba>& colors, std::vector<bool>& missing, std::size_t element,
+                       const Rgba* given) {
+  if (given == nullptr) {
+    if (!colors.empty())
+      pad_missing_colors(colors, missing, element + 1);
+    return;
+  }
+  pad_missing_colors(colors, missing, element);
+  if (!missing.empty())
+    missing.push_back(false);
+  colors.push_back(*given);
+}
+
+//! True if input element `origin` has a colour of its own in `colours` (see
+//! MeshAttributes::has_color); false for kNoIndex (an element repair added).
+inline bool has_colour(const std::vector<Rgba>& colours, const std::vector<bool>& missing,
+                       Index origin) {
+  return MeshAttributes::has_color(colours, missing, origin);
+}
 
 //! The vertex of the input soup behind output vertex `v` (identity when the map is empty).
 inline Index input_vertex(const IndexedMesh& mesh, std::size_t v) {

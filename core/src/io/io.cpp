@@ -15,9 +15,7 @@
 
 namespace meshbridge {
 
-namespace {
-
-enum class Format { unknown, obj, off, ply, stl, threemf };
+namespace detail {
 
 Format format_of(const std::string& path) {
   const auto dot = path.find_last_of('.');
@@ -39,6 +37,13 @@ Format format_of(const std::string& path) {
     return Format::threemf;
   return Format::unknown;
 }
+
+}  // namespace detail
+
+namespace {
+
+using detail::Format;
+using detail::format_of;
 
 // Attributes belong to the input soup: every origin the mesh refers to must have its colour.
 void check_attributes(const std::string& path, const IndexedMesh& mesh,
@@ -62,6 +67,15 @@ void check_attributes(const std::string& path, const IndexedMesh& mesh,
   };
   check(attributes->vertex_colors.size(), mesh.soup.num_vertices(), mesh.vertex_origin, "vertex");
   check(attributes->face_colors.size(), mesh.soup.num_faces(), mesh.face_origin, "face");
+  const auto check_flags = [&](std::size_t flags, std::size_t colours, const char* what) {
+    if (flags != 0 && flags != colours) {
+      throw WriteError(path + ": the attributes hold " + std::to_string(flags) + " " + what +
+                       " missing-colour flag(s) for " + std::to_string(colours) +
+                       " colour(s) (expected none or one per colour)");
+    }
+  };
+  check_flags(attributes->vertex_color_missing.size(), attributes->vertex_colors.size(), "vertex");
+  check_flags(attributes->face_color_missing.size(), attributes->face_colors.size(), "face");
 }
 
 }  // namespace

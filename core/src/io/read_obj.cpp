@@ -55,8 +55,10 @@ class ObjReader {
       }
       if (keyword == "v")
         vertex();
-      else if (keyword == "vt" || keyword == "vn")
-        ++texcoords_or_normals_;
+      else if (keyword == "vt")
+        ++texture_coordinates_;
+      else if (keyword == "vn")
+        ++normals_;
       else if (keyword == "f" || keyword == "fo")
         face();
       else if (keyword == "l")
@@ -65,15 +67,25 @@ class ObjReader {
         point_record();
       else if (keyword == "o" || keyword == "g" || keyword == "usemtl") {
         if (attributes_ != nullptr)
-          group(keyword);
+          attributes_->face_groups.push_back(
+              FaceGroup{rest_of_line(keyword), static_cast<Index>(soup_.num_faces())});
+      } else if (keyword == "mtllib") {
+        if (attributes_ != nullptr)
+          attributes_->material_libraries.push_back(rest_of_line(keyword));
       } else if (!keyword.empty() && !is_skipped_record(keyword)) {
         ++info_.unknown_records;
       }
       in_.next_line();  // anything else (mtllib, s, curves...): skipped
     }
     info_.declared_vertices = soup_.num_vertices();
-    if (attributes_ != nullptr && !attributes_->vertex_colors.empty())
-      attributes_->vertex_colors.resize(soup_.num_vertices(), Rgba{255, 255, 255, 255});
+    if (attributes_ != nullptr) {
+      attributes_->vertex_color_channels = alpha_given_ ? kRgbaChannels : kRgbChannels;
+      attributes_->texture_coordinates = texture_coordinates_;
+      attributes_->normals = normals_;
+      if (!attributes_->vertex_colors.empty())
+        pad_missing_colors(attributes_->vertex_colors, attributes_->vertex_color_missing,
+                           soup_.num_vertices());
+    }
   }
 
  private:
@@ -97,14 +109,13 @@ class ObjReader {
            " coordinate(s), expected 3");
     }
     soup_.positions.push_back(Point(values[0], values[1], values[2]));
-    if (attributes_ != nullptr && n >= 6) {
-      // x y z r g b [a]: colours as floats in [0, 1].
-      auto& colors = attributes_->vertex_colors;
-      colors.resize(soup_.num_vertices() - 1, Rgba{255, 255, 255, 255});
-      colors.push_back(Rgba{to_byte(values[3]), to_byte(values[4]), to_byte(values[5]),
-                            n == 7 ? to_byte(values[6]) : std::uint8_t(255)});
-    } else if (attributes_ != nullptr && !attributes_->vertex_colors.empty()) {
-      attributes_->vertex_colors.push_back(Rgba{255, 255, 255, 255});
+    if (attributes_ != nullptr) {
+      // x y z r g b [a]: colours as floats in [0, 1]; a vertex without one has none.
+      const Rgba color{to_byte(values[3]), to_byte(values[4]), to_byte(values[5]),
+                       n == 7 ? to_byte(values[6]) : std::uint8_t(255)};
+      push_color(attributes_->vertex_colors, attributes_->vertex_color_missing,
+                 soup_.num_vertices() - 1, n >= 6 ? &color : nullptr);
+      alpha_given_ = alpha_given_ || n == 7;
     }
   }
 
@@ -220,18 +231,19 @@ class ObjReader {
     info_.lone_points += corners_.size();
   }
 
-  void group(std::string_view keyword) {
+  // "keyword rest of the line" as written (an o/g/usemtl group name, an mtllib file list).
+  std::string rest_of_line(std::string_view keyword) {
     in_.skip_blanks();
     const char* start = in_.position();
     in_.word();
     while (!in_.at_line_end())
       in_.word();
-    std::string name(keyword);
-    name += ' ';
-    name.append(start, static_cast<std::size_t>(in_.position() - start));
-    while (!name.empty() && TextScanner::is_blank_or_newline(name.back()))
-      name.pop_back();
-    attributes_->face_groups.push_back(FaceGroup{name, static_cast<Index>(soup_.num_faces())});
+    std::string line(keyword);
+    line += ' ';
+    line.append(start, static_cast<std::size_t>(in_.position() - start));
+    while (!line.empty() && TextScanner::is_blank_or_newline(line.back()))
+      line.pop_back();
+    return line;
   }
 
   const MappedFile& file_;
@@ -241,7 +253,8 @@ class ObjReader {
   RelativeCorners* relative_;
   TextScanner in_;
   std::vector<Index> corners_;
-  std::size_t texcoords_or_normals_ = 0;
+  std::size_t texture_coordinates_ = 0, normals_ = 0;
+  bool alpha_given_ = false;                                // some 'v' line has r g b a
   static constexpr std::ptrdiff_t kReleaseEvery = 8 << 20;  // bytes of the map kept behind
   const char* released_;
 };
@@ -342,14 +355,30 @@ bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attr
   for (const auto& [corner, offset] : part.relative.corners)
     part.soup.corner_vertices[corner] = static_cast<Index>(vertices_before + offset);
   if (attributes != nullptr) {
-    const Rgba white{255, 255, 255, 255};
     auto& colors = attributes->vertex_colors;
-    if (!colors.empty() || !part.attributes.vertex_colors.empty()) {
-      colors.resize(soup.num_vertices(), white);
-      colors.insert(colors.end(), part.attributes.vertex_colors.begin(),
-                    part.attributes.vertex_colors.end());
-      colors.resize(soup.num_vertices() + part.soup.num_vertices(), white);
+    auto& missing = attributes->vertex_color_missing;
+    const auto& part_colors = part.attributes.vertex_colors;
+    const auto& part_missing = part.attributes.vertex_color_missing;
+    const std::size_t vertices_after = soup.num_vertices() + part.soup.num_vertices();
+    if (!colors.empty() || !part_colors.empty()) {
+      pad_missing_colors(colors, missing, soup.num_vertices());
+      if (!part_colors.empty()) {  // the part's colours cover all of its vertices
+        if (!missing.empty() || !part_missing.empty()) {
+          missing.resize(colors.size(), false);
+          if (part_missing.empty())
+            missing.resize(vertices_after, false);
+          else
+            missing.insert(missing.end(), part_missing.begin(), part_missing.end());
+        }
+        colors.insert(colors.end(), part_colors.begin(), part_colors.end());
+      }
+      pad_missing_colors(colors, missing, vertices_after);
     }
+    attributes->vertex_color_channels |= part.attributes.vertex_color_channels;
+    attributes->texture_coordinates += part.attributes.texture_coordinates;
+    attributes->normals += part.attributes.normals;
+    for (std::string& library : part.attributes.material_libraries)
+      attributes->material_libraries.push_back(std::move(library));
     for (FaceGroup& group : part.attributes.face_groups) {
       group.first_face += face_base;
       attributes->face_groups.push_back(std::move(group));
@@ -424,19 +453,23 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   // Parts of less than 1 MiB cost more to start and append than they save.
   const unsigned n = static_cast<unsigned>(
       std::clamp<std::size_t>(file.size() / (std::size_t(1) << 20), 1, reading_threads()));
+  bool read = false;
   if (n > 1) {
-    if (read_in_parts(file, n, soup, info, attributes))
-      return;
-    soup = Soup();
-    info = ReadInfo();
-    if (attributes != nullptr)
-      *attributes = MeshAttributes();
+    read = read_in_parts(file, n, soup, info, attributes);
+    if (!read) {
+      soup = Soup();
+      info = ReadInfo();
+      if (attributes != nullptr)
+        *attributes = MeshAttributes();
+    }
   }
-  const RecordCounts counts = estimate_records(file.data(), file.end());
-  reserve_huge(soup, counts.vertices, counts.faces, counts.corners);
-  ObjReader(file, after_byte_order_mark(file.data(), file.end()), file.end(), soup, info,
-            attributes)
-      .read();
+  if (!read) {
+    const RecordCounts counts = estimate_records(file.data(), file.end());
+    reserve_huge(soup, counts.vertices, counts.faces, counts.corners);
+    ObjReader(file, after_byte_order_mark(file.data(), file.end()), file.end(), soup, info,
+              attributes)
+        .read();
+  }
 }
 
 }  // namespace meshbridge::detail

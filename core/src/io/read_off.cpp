@@ -38,7 +38,8 @@ std::uint8_t color_byte(double value, bool unit_range) {
 }
 
 // A colour from the numbers left on a vertex or face line: 3 or 4 values, integers 0..255 or
-// floats 0..1 (a single value is a colour-map index, which MeshBridge does not keep).
+// floats 0..1 (a single value is a colour-map index, which MeshBridge counts but does not keep:
+// Geomview's colour map is a file of its own).
 bool to_color(const std::vector<double>& values, bool all_integers, Rgba& color) {
   if (values.size() != 3 && values.size() != 4)
     return false;
@@ -181,20 +182,28 @@ class OffReader {
         }
       }
       soup_.positions.push_back(Point(xyz[0], xyz[1], xyz[2]));
-      if (want_colors && h.colors) {
+      if (h.colors && (want_colors || !in_.at_line_end())) {  // (colour-map indices are counted)
         numbers_to_line_end(rest, integral);
         // Rest of the line: [nx ny nz] colour [s t].
         const std::size_t skip_front = h.normals ? 3 : 0, skip_back = h.texcoords ? 2 : 0;
-        Rgba color{255, 255, 255, 255};
+        Rgba color;
+        bool given = false;
         if (rest.size() >= skip_front + skip_back) {
           const std::size_t last = rest.size() - skip_back;
           const std::vector<double> values(rest.begin() + skip_front, rest.begin() + last);
           const bool integers = std::all_of(integral.begin() + skip_front, integral.begin() + last,
                                             [](char i) { return i; });
-          if (to_color(values, integers, color))
+          given = to_color(values, integers, color);
+          vertex_alpha_given_ = vertex_alpha_given_ || (given && values.size() == 4);
+          if (given && want_colors)
             note_color(values, integers, ColorOf::vertex, static_cast<Index>(v));
+          else if (values.size() == 1)
+            ++info_.color_map_indices;
         }
-        attributes_->vertex_colors.push_back(color);
+        if (want_colors) {
+          push_color(attributes_->vertex_colors, attributes_->vertex_color_missing,
+                     static_cast<std::size_t>(v), given ? &color : nullptr);
+        }
       }
       in_.next_line();
     }
@@ -229,17 +238,21 @@ class OffReader {
         corners.push_back(static_cast<Index>(index));
       }
       add_face(corners);
-      if (want_colors && !corners.empty()) {
+      if (!corners.empty() && (want_colors || !in_.at_line_end())) {
         numbers_to_line_end(rest, integral);
         const bool integers =
             std::all_of(integral.begin(), integral.end(), [](char i) { return i; });
-        Rgba color{255, 255, 255, 255};
-        if (to_color(rest, integers, color)) {
-          auto& colors = attributes_->face_colors;
-          colors.resize(soup_.num_faces() - 1, Rgba{255, 255, 255, 255});
-          colors.push_back(color);
-          note_color(rest, integers, ColorOf::face, static_cast<Index>(soup_.num_faces() - 1));
+        Rgba color;
+        const bool given = to_color(rest, integers, color);
+        face_alpha_given_ = face_alpha_given_ || (given && rest.size() == 4);
+        if (want_colors) {
+          push_color(attributes_->face_colors, attributes_->face_color_missing,
+                     soup_.num_faces() - 1, given ? &color : nullptr);
         }
+        if (given && want_colors)
+          note_color(rest, integers, ColorOf::face, static_cast<Index>(soup_.num_faces() - 1));
+        else if (rest.size() == 1)
+          ++info_.color_map_indices;
       }
       in_.next_line();
     }
@@ -249,8 +262,13 @@ class OffReader {
       fail("OFF declares " + std::to_string(nf) + " faces, but more follows them" + at_line() +
            ": '" + clip(in_.word()) + "' (a false face count, or text after the mesh)");
     }
+    if (want_colors) {
+      attributes_->vertex_color_channels = vertex_alpha_given_ ? kRgbaChannels : kRgbChannels;
+      attributes_->face_color_channels = face_alpha_given_ ? kRgbaChannels : kRgbChannels;
+    }
     if (want_colors && !attributes_->face_colors.empty())
-      attributes_->face_colors.resize(soup_.num_faces(), Rgba{255, 255, 255, 255});
+      pad_missing_colors(attributes_->face_colors, attributes_->face_color_missing,
+                         soup_.num_faces());
     if (want_colors && unit_colors_seen_) {
       // Colours written as integers are 0..255, as floats 0..1; "1 1 1" could be either. In a
       // file that writes some colour as floats, it is read the same way (white, not near black).
@@ -385,6 +403,8 @@ class OffReader {
     info_.declared_faces = nf;
     reserve_huge(soup_, nv, nf, 3 * std::size_t(nf));
     const bool colors = attributes_ != nullptr && h.colors;
+    if (colors)
+      attributes_->vertex_color_channels = kRgbChannels;  // 3 floats
     for (std::uint32_t v = 0; v < nv; ++v) {
       float values[11];
       for (std::uint64_t i = 0; i < floats; ++i)
@@ -432,7 +452,8 @@ class OffReader {
   TextScanner in_;
   const char* released_ = file_.data();
   bool unit_colors_seen_ = false;  //!< some colour was written as floats (0..1)
-  std::vector<std::pair<ColorOf, Index>> ambiguous_colors_;  //!< integer colours all <= 1
+  bool vertex_alpha_given_ = false, face_alpha_given_ = false;  //!< some colour had 4 values
+  std::vector<std::pair<ColorOf, Index>> ambiguous_colors_;     //!< integer colours all <= 1
 };
 
 }  // namespace

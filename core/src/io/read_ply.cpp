@@ -133,8 +133,9 @@ class PlyReader {
       BinarySource source(body, file_.end(), header_.format == Format::binary_big_endian);
       read_elements(source);
     }
-    if (attributes_ != nullptr && !attributes_->face_colors.empty())
-      attributes_->face_colors.resize(soup_.num_faces());  // strip triangles get no colour
+    if (attributes_ != nullptr && !attributes_->face_colors.empty())  // strip triangles: none
+      pad_missing_colors(attributes_->face_colors, attributes_->face_color_missing,
+                         soup_.num_faces());
   }
 
  private:
@@ -224,13 +225,20 @@ class PlyReader {
   }
 
   bool wants_colors(const std::vector<Role>& roles) const {
-    if (attributes_ == nullptr)
-      return false;
+    return attributes_ != nullptr && channels_of(roles) != 0;
+  }
+
+  //! The colour channels among an element's properties (ColorChannel bits).
+  static std::uint8_t channels_of(const std::vector<Role>& roles) {
+    std::uint8_t channels = 0;
     for (Role r : roles) {
-      if (is_color(r))
-        return true;
+      channels |= r == Role::red     ? kRedChannel
+                  : r == Role::green ? kGreenChannel
+                  : r == Role::blue  ? kBlueChannel
+                  : r == Role::alpha ? kAlphaChannel
+                                     : 0;
     }
-    return false;
+    return channels;
   }
 
   template <class Source>
@@ -251,8 +259,10 @@ class PlyReader {
     soup_.positions.resize(n);
     info_.declared_vertices = n;
     const bool colors = wants_colors(roles);
-    if (colors)
+    if (colors) {
       attributes_->vertex_colors.resize(n);
+      attributes_->vertex_color_channels = channels_of(roles);
+    }
     for (std::size_t k = 0; k < roles.size(); ++k) {
       if (roles[k] == Role::x || roles[k] == Role::y || roles[k] == Role::z) {
         if (e.properties[k].type == PlyScalar::f64 && attributes_ != nullptr)
@@ -325,8 +335,10 @@ class PlyReader {
       info_.declared_faces += static_cast<std::size_t>(e.count);
       reserve_huge(soup_.face_begin, soup_.face_begin.size() + e.count);
       reserve_huge(soup_.corner_vertices, soup_.corner_vertices.size() + 3 * e.count);
-      if (colors)
+      if (colors) {
         attributes_->face_colors.reserve(e.count);
+        attributes_->face_color_channels = channels_of(roles);
+      }
     }
     if constexpr (std::is_same_v<Source, BinarySource>) {
       if (faces && !colors && read_faces_fast(e, roles, source))
@@ -354,8 +366,10 @@ class PlyReader {
         }
       }
       if (faces) {
-        if (add_face(i) && colors)
-          attributes_->face_colors.push_back(color);
+        if (add_face(i) && colors) {
+          push_color(attributes_->face_colors, attributes_->face_color_missing,
+                     soup_.num_faces() - 1, &color);
+        }
       } else if (strips) {
         add_strip(i);
       } else if (edges) {

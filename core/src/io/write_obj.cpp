@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// OBJ writer: "v x y z [r g b]" (shortest exact decimals), "f a b c ..." (1-based), and the
-// input's o/g/usemtl groups before the first face of each.
+// OBJ writer: the input's mtllib lines, "v x y z [r g b [a]]" (shortest exact decimals; a colour
+// only where the input vertex had one), "f a b c ..." (1-based), and the input's o/g/usemtl
+// groups before the first face of each.
 
 #include "io/formats.h"
 #include "io/text_output.h"
@@ -14,13 +15,21 @@ void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
   const Soup& soup = mesh.soup;
   TextOutput text(out);
   text.text("# written by MeshBridge\n");
+  if (attributes != nullptr) {
+    for (const std::string& library : attributes->material_libraries)
+      text.text(library).ch('\n');
+  }
   const bool colors = attributes != nullptr && !attributes->vertex_colors.empty();
+  const bool alpha = colors && (attributes->vertex_color_channels & kAlphaChannel) != 0;
   for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
     const Point& p = soup.positions[v];
     text.text("v ").number(p[0]).ch(' ').number(p[1]).ch(' ').number(p[2]);
-    if (colors) {
-      const Rgba c = colour_of(attributes->vertex_colors, input_vertex(mesh, v));
+    const Index origin = colors ? input_vertex(mesh, v) : kNoIndex;
+    if (colors && has_colour(attributes->vertex_colors, attributes->vertex_color_missing, origin)) {
+      const Rgba c = attributes->vertex_colors[origin];
       text.ch(' ').number(c.r / 255.0).ch(' ').number(c.g / 255.0).ch(' ').number(c.b / 255.0);
+      if (alpha)
+        text.ch(' ').number(c.a / 255.0);
     }
     text.ch('\n');
   }

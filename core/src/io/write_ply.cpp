@@ -62,6 +62,39 @@ class BinaryOutput {
   std::size_t used_ = 0;
 };
 
+//! The channels to write: those the input had, or all four if it named none.
+std::uint8_t nonzero_channels(std::uint8_t channels) {
+  return (channels & kRgbaChannels) != 0 ? channels & kRgbaChannels : kRgbaChannels;
+}
+
+//! "property uchar red" ... for each channel of `channels`, in PLY's usual order.
+std::string channel_properties(std::uint8_t channels) {
+  std::string header;
+  for (const auto& [bit, name] :
+       {std::pair{kRedChannel, "red"}, std::pair{kGreenChannel, "green"},
+        std::pair{kBlueChannel, "blue"}, std::pair{kAlphaChannel, "alpha"}}) {
+    if ((channels & bit) != 0)
+      header += std::string("property uchar ") + name + "\n";
+  }
+  return header;
+}
+
+void put_channels(BinaryOutput& bytes, const Rgba& c, std::uint8_t channels) {
+  const std::uint8_t values[4] = {c.r, c.g, c.b, c.a};
+  for (int i = 0; i < 4; ++i) {
+    if ((channels & (1 << i)) != 0)
+      bytes.put<std::uint8_t>(values[i]);
+  }
+}
+
+void put_channels(TextOutput& text, const Rgba& c, std::uint8_t channels) {
+  const std::uint8_t values[4] = {c.r, c.g, c.b, c.a};
+  for (int i = 0; i < 4; ++i) {
+    if ((channels & (1 << i)) != 0)
+      text.ch(' ').number(unsigned(values[i]));
+  }
+}
+
 }  // namespace
 
 void write_ply(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
@@ -75,6 +108,10 @@ void write_ply(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
                        !positions_are_floats(soup);
   const bool vertex_colors = attributes != nullptr && !attributes->vertex_colors.empty();
   const bool face_colors = attributes != nullptr && !attributes->face_colors.empty();
+  const std::uint8_t vertex_channels =
+      vertex_colors ? nonzero_channels(attributes->vertex_color_channels) : 0;
+  const std::uint8_t face_channels =
+      face_colors ? nonzero_channels(attributes->face_color_channels) : 0;
   std::size_t max_arity = 0;
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
     max_arity = std::max(max_arity, soup.arity(f));
@@ -89,14 +126,12 @@ void write_ply(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
   for (const char* axis : {"x", "y", "z"})
     header += std::string("property ") + (doubles ? "double " : "float ") + axis + "\n";
   if (vertex_colors)
-    header +=
-        "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n";
+    header += channel_properties(vertex_channels);
   header += "element face " + std::to_string(soup.num_faces()) + "\n";
   header += short_count ? "property list uchar int vertex_indices\n"
                         : "property list int int vertex_indices\n";
   if (face_colors)
-    header +=
-        "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n";
+    header += channel_properties(face_channels);
   header += "end_header\n";
   out.write(header);
 
@@ -118,9 +153,7 @@ void write_ply(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
           bytes.put<float>(static_cast<float>(p[i]));
       }
       if (vertex_colors) {
-        const Rgba c = vertex_color(v);
-        for (std::uint8_t channel : {c.r, c.g, c.b, c.a})
-          bytes.put<std::uint8_t>(channel);
+        put_channels(bytes, vertex_color(v), vertex_channels);
       }
     }
     for (std::size_t f = 0; f < soup.num_faces(); ++f) {
@@ -132,9 +165,7 @@ void write_ply(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
       for (Index v : polygon)
         bytes.put<std::int32_t>(static_cast<std::int32_t>(v));
       if (face_colors) {
-        const Rgba c = face_color(f);
-        for (std::uint8_t channel : {c.r, c.g, c.b, c.a})
-          bytes.put<std::uint8_t>(channel);
+        put_channels(bytes, face_color(f), face_channels);
       }
     }
     bytes.flush();
@@ -155,9 +186,7 @@ void write_ply(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
       }
     }
     if (vertex_colors) {
-      const Rgba c = vertex_color(v);
-      for (std::uint8_t channel : {c.r, c.g, c.b, c.a})
-        text.ch(' ').number(unsigned(channel));
+      put_channels(text, vertex_color(v), vertex_channels);
     }
     text.ch('\n');
   }
@@ -167,9 +196,7 @@ void write_ply(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
     for (Index v : polygon)
       text.ch(' ').number(unsigned(v));
     if (face_colors) {
-      const Rgba c = face_color(f);
-      for (std::uint8_t channel : {c.r, c.g, c.b, c.a})
-        text.ch(' ').number(unsigned(channel));
+      put_channels(text, face_color(f), face_channels);
     }
     text.ch('\n');
   }

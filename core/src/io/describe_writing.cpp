@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What a write leaves out of what the reader kept: the output format's limits, named so that no
+// attribute is lost without a word.
+
+#include "io/formats.h"
+#include "meshbridge/counted.h"
+#include "meshbridge/io.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace meshbridge {
+
+namespace {
+
+const char* name_of(detail::Format format) {
+  switch (format) {
+    case detail::Format::obj:
+      return "OBJ";
+    case detail::Format::off:
+      return "OFF";
+    case detail::Format::ply:
+      return "PLY";
+    case detail::Format::stl:
+      return "STL";
+    case detail::Format::threemf:
+      return "3MF";
+    case detail::Format::unknown:
+      break;
+  }
+  return "this format";
+}
+
+std::size_t missing_count(const std::vector<bool>& missing) {
+  return static_cast<std::size_t>(std::count(missing.begin(), missing.end(), true));
+}
+
+}  // namespace
+
+std::vector<std::string> describe_unwritten(const std::string& path,
+                                            const MeshAttributes& attributes) {
+  using detail::Format;
+  const Format format = detail::format_of(path);
+  const std::string name = name_of(format);
+  std::vector<std::string> lost;
+  if (attributes.texture_coordinates + attributes.normals > 0) {
+    std::string what;
+    if (attributes.texture_coordinates > 0)
+      what = counted(attributes.texture_coordinates, "texture coordinate") + " (vt)";
+    if (attributes.texture_coordinates > 0 && attributes.normals > 0)
+      what += " and ";
+    if (attributes.normals > 0)
+      what += counted(attributes.normals, "normal") + " (vn)";
+    lost.push_back(what + " not written: MeshBridge writes neither");
+  }
+  const bool vertex_colors = !attributes.vertex_colors.empty();
+  const bool face_colors = !attributes.face_colors.empty();
+  if (vertex_colors && (format == Format::stl || format == Format::threemf))
+    lost.push_back("vertex colours not written: " + name + " holds none");
+  if (face_colors && (format == Format::obj || format == Format::stl || format == Format::threemf))
+    lost.push_back("face colours not written: " + name + " holds none");
+  // A colour on every element or none: the elements the file left without one get white.
+  const std::size_t vertices_without = missing_count(attributes.vertex_color_missing);
+  if (vertex_colors && vertices_without > 0 && (format == Format::ply || format == Format::off)) {
+    lost.push_back(counted(vertices_without, "vertex") + " without a colour written white: " +
+                   name + " gives every vertex a colour or none");
+  }
+  const std::size_t faces_without = missing_count(attributes.face_color_missing);
+  if (face_colors && faces_without > 0 && format == Format::ply) {
+    lost.push_back(counted(faces_without, "face") +
+                   " without a colour written white: PLY gives every face a colour or none");
+  }
+  if (format != Format::obj &&
+      (!attributes.face_groups.empty() || !attributes.material_libraries.empty())) {
+    lost.push_back("OBJ groups and materials not written (" +
+                   counted(attributes.face_groups.size(), "o/g/usemtl line") + ", " +
+                   counted(attributes.material_libraries.size(), "mtllib line") + "): " + name +
+                   " holds none");
+  }
+  if (attributes.double_precision && (format == Format::stl || format == Format::threemf))
+    lost.push_back("positions rounded from 64-bit to 32-bit floats: " + name + " holds no more");
+  return lost;
+}
+
+}  // namespace meshbridge

@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Colours and OBJ side records as the file has them, no more and no less: an element without a
+// colour stays without one where the format allows it (OBJ vertices, OFF faces), a PLY file's
+// own channels are written back (no invented green or alpha), an OFF colour-map index is
+// counted, `mtllib` lines are written back, and what an output format cannot hold is named by
+// describe_unwritten().
+
+#include "meshbridge/errors.h"
+#include "meshbridge/io.h"
+
+#include "scratch_folder.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace meshbridge {
+namespace {
+
+class ColourFidelity : public test_support::ScratchFolderTest {
+ protected:
+  ColourFidelity() : ScratchFolderTest("colour") {}
+
+  struct Reading {
+    Soup soup;
+    ReadInfo info;
+    MeshAttributes attributes;
+  };
+  Reading read(const std::string& file) const {
+    Reading r;
+    r.soup = read_soup(file, &r.info, &r.attributes);
+    return r;
+  }
+  //! Writes the soup of `r` unchanged (no repair) to `name` with its attributes; its path.
+  std::string write_back(const Reading& r, const std::string& name) const {
+    IndexedMesh mesh;
+    mesh.soup = r.soup;
+    write_mesh(path(name), mesh, &r.attributes);
+    return path(name);
+  }
+  static std::vector<std::string> lines_of(const std::string& file) {
+    std::ifstream in(file);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+      lines.push_back(line);
+    return lines;
+  }
+};
+
+const char* kTetrahedronFaces = "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+
+TEST_F(ColourFidelity, obj_vertices_without_a_colour_stay_without_one) {
+  const Reading r = read(write("partial.obj",
+                               "mtllib a.mtl b.mtl\nv 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0.2 1 0.6\n"
+                               "v 0 0 1\nvt 0 0\nvt 1 0\nvn 0 0 1\nusemtl red\n" +
+                                   std::string(kTetrahedronFaces)));
+  const auto& a = r.attributes;
+  ASSERT_EQ(a.vertex_colors.size(), 4u);
+  EXPECT_EQ(a.vertex_color_missing, (std::vector<bool>{false, true, false, true}));
+  EXPECT_EQ(a.vertex_colors[0], (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(a.vertex_colors[2], (Rgba{0, 51, 255, 153}));
+  EXPECT_EQ(a.vertex_color_channels, kRgbaChannels);  // a 'v' line with r g b a
+  EXPECT_EQ(a.material_libraries, (std::vector<std::string>{"mtllib a.mtl b.mtl"}));
+  EXPECT_EQ(a.texture_coordinates, 2u);
+  EXPECT_EQ(a.normals, 1u);
+
+  const std::string out = write_back(r, "partial_out.obj");
+  const std::vector<std::string> lines = lines_of(out);
+  ASSERT_EQ(lines.size(), 1u + 1 + 4 + 1 + 4);  // comment, mtllib, v x 4, usemtl, f x 4
+  EXPECT_EQ(lines[1], "mtllib a.mtl b.mtl");
+  EXPECT_EQ(lines[2], "v 0 0 0 1 0 0 1");
+  EXPECT_EQ(lines[3], "v 1 0 0");  // no colour invented
+  EXPECT_EQ(lines[5], "v 0 0 1");
+  EXPECT_EQ(lines[6], "usemtl red");
+  const Reading back = read(out);
+  EXPECT_EQ(back.attributes.vertex_colors, a.vertex_colors);
+  EXPECT_EQ(back.attributes.vertex_color_missing, a.vertex_color_missing);
+  EXPECT_EQ(back.attributes.material_libraries, a.material_libraries);
+
+  // Without alpha anywhere, none is written; a file with colours on every vertex has no flags.
+  const Reading opaque =
+      read(write("opaque.obj", "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nv 0 0 1 1 1 1\n" +
+                                   std::string(kTetrahedronFaces)));
+  EXPECT_TRUE(opaque.attributes.vertex_color_missing.empty());
+  EXPECT_EQ(opaque.attributes.vertex_color_channels, kRgbChannels);
+  EXPECT_EQ(lines_of(write_back(opaque, "opaque_out.obj"))[1], "v 0 0 0 1 0 0");
+}
+
+TEST_F(ColourFidelity, off_faces_without_a_colour_stay_without_one_and_keep_their_channels) {
+  const char* text =
+      "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+      "3 0 2 1 200 0 0\n3 0 1 3\n3 0 3 2 0.5 0.5 0.5\n3 1 2 3\n";
+  const Reading r = read(write("faces.off", text));
+  const auto& a = r.attributes;
+  ASSERT_EQ(a.face_colors.size(), 4u);
+  EXPECT_EQ(a.face_color_missing, (std::vector<bool>{false, true, false, true}));
+  EXPECT_EQ(a.face_color_channels, kRgbChannels);
+  const std::vector<std::string> lines = lines_of(write_back(r, "faces_out.off"));
+  ASSERT_EQ(lines.size(), 10u);
+  EXPECT_EQ(lines[6], "3 0 2 1 200 0 0");  // three values in, three out (no alpha added)
+  EXPECT_EQ(lines[7], "3 0 1 3");          // no colour in, none out (was written white)
+  EXPECT_EQ(lines[8], "3 0 3 2 128 128 128");
+  EXPECT_EQ(lines[9], "3 1 2 3");
+  // Alpha where the file gave it.
+  const Reading alpha =
+      read(write("alpha.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 10 20 30 40\n"));
+  EXPECT_EQ(alpha.attributes.face_color_channels, kRgbaChannels);
+  EXPECT_EQ(lines_of(write_back(alpha, "alpha_out.off"))[5], "3 0 1 2 10 20 30 40");
+}
+
+TEST_F(ColourFidelity, off_colour_map_indices_are_counted_with_or_without_attributes) {
+  const std::string file =
+      write("colormap.off",
+            "COFF\n4 4 0\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 7\n0 0 1 0 0 255\n"
+            "3 0 2 1 200 0 0\n3 0 1 3 4\n3 0 3 2\n3 1 2 3 9\n");
+  const Reading r = read(file);
+  EXPECT_EQ(r.info.color_map_indices, 3u);
+  EXPECT_TRUE(r.info.changed_anything());
+  EXPECT_NE(describe_reading(r.info).find("3 colours given as colour-map indices not kept"),
+            std::string::npos)
+      << describe_reading(r.info);
+  EXPECT_EQ(r.attributes.vertex_color_missing, (std::vector<bool>{false, false, true, false}));
+  EXPECT_EQ(r.attributes.face_color_missing, (std::vector<bool>{false, true, true, true}));
+  ReadInfo bare;  // `check` reads without attributes: the same count
+  read_soup(file, &bare);
+  EXPECT_EQ(bare.color_map_indices, 3u);
+  // COFF gives every vertex a colour: the one without gets white, and that is named.
+  EXPECT_EQ(describe_unwritten(path("x.off"), r.attributes),
+            (std::vector<std::string>{"1 vertex without a colour written white: OFF gives every "
+                                      "vertex a colour or none"}));
+}
+
+TEST_F(ColourFidelity, ply_channels_are_written_back_as_the_file_had_them) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty uchar red\nelement face 1\n"
+      "property list uchar int vertex_indices\nproperty uchar red\nproperty uchar green\n"
+      "property uchar blue\nproperty uchar alpha\nend_header\n";
+  const Reading r =
+      read(write("red.ply", header + "0 0 0 10\n1 0 0 20\n0 1 0 30\n3 0 1 2 1 2 3 4\n"));
+  EXPECT_EQ(r.attributes.vertex_color_channels, kRedChannel);
+  EXPECT_EQ(r.attributes.face_color_channels, kRgbaChannels);
+  const std::string out = write_back(r, "red_out.ply");
+  std::ifstream in(out, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  const std::string written = bytes.str();
+  const std::string vertex_part =
+      written.substr(written.find("element vertex"),
+                     written.find("element face") - written.find("element vertex"));
+  EXPECT_NE(vertex_part.find("property uchar red\n"), std::string::npos) << vertex_part;
+  EXPECT_EQ(vertex_part.find("green"), std::string::npos) << vertex_part;  // none invented
+  EXPECT_EQ(vertex_part.find("alpha"), std::string::npos) << vertex_part;
+  const Reading back = read(out);
+  EXPECT_EQ(back.attributes.vertex_color_channels, kRedChannel);
+  EXPECT_EQ(back.attributes.vertex_colors, r.attributes.vertex_colors);
+  EXPECT_EQ(back.attributes.face_colors, r.attributes.face_colors);
+}
+
+TEST_F(ColourFidelity, ply_strip_triangles_have_no_colour_and_off_writes_none_for_them) {
+  const Reading r = read(
+      write("strips.ply",
+            "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+            "property uchar red\nproperty uchar green\nproperty uchar blue\nelement tristrips 1\n"
+            "property list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+            "3 0 2 1 10 20 30\n4 0 1 3 2\n"));
+  ASSERT_EQ(r.soup.num_faces(), 3u);
+  EXPECT_EQ(r.attributes.face_color_missing, (std::vector<bool>{false, true, true}));
+  const std::vector<std::string> lines = lines_of(write_back(r, "strips_out.off"));
+  ASSERT_EQ(lines.size(), 9u);
+  EXPECT_EQ(lines[6], "3 0 2 1 10 20 30");
+  EXPECT_EQ(lines[7].size(), 7u) << lines[7];  // "3 a b c", no colour
+  EXPECT_EQ(describe_unwritten(path("x.ply"), r.attributes),
+            (std::vector<std::string>{"2 faces without a colour written white: PLY gives every "
+                                      "face a colour or none"}));
+}
+
+TEST_F(ColourFidelity, describe_unwritten_names_what_each_format_cannot_hold) {
+  MeshAttributes a;
+  EXPECT_TRUE(describe_unwritten("x.stl", a).empty());
+  a.vertex_colors = {Rgba{}};
+  a.face_colors = {Rgba{}};
+  a.face_groups = {{"g part", 0}};
+  a.texture_coordinates = 3;
+  a.normals = 1;
+  a.double_precision = true;
+  EXPECT_EQ(describe_unwritten("x.obj", a),
+            (std::vector<std::string>{
+                "3 texture coordinates (vt) and 1 normal (vn) not written: MeshBridge writes "
+                "neither",
+                "face colours not written: OBJ holds none"}));
+  EXPECT_EQ(describe_unwritten("x.ply", a).size(), 2u);  // vt/vn, groups
+  EXPECT_EQ(
+      describe_unwritten("x.stl", a),
+      (std::vector<std::string>{
+          "3 texture coordinates (vt) and 1 normal (vn) not written: MeshBridge writes "
+          "neither",
+          "vertex colours not written: STL holds none", "face colours not written: STL holds none",
+          "OBJ groups and materials not written (1 o/g/usemtl line, 0 mtllib lines): STL "
+          "holds none",
+          "positions rounded from 64-bit to 32-bit floats: STL holds no more"}));
+}
+
+TEST_F(ColourFidelity, write_mesh_refuses_missing_flags_of_another_size) {
+  IndexedMesh mesh;
+  mesh.soup = read_soup(write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  MeshAttributes a;
+  a.vertex_colors.assign(3, Rgba{});
+  a.vertex_color_missing = {true};
+  EXPECT_THROW(write_mesh(path("t.ply"), mesh, &a), WriteError);
+}
+
+}  // namespace
+}  // namespace meshbridge
