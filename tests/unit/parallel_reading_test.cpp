@@ -214,10 +214,10 @@ TEST_F(ParallelReading, binary_ply_faces_that_are_not_all_alike_read_the_same_in
   write_plain_ply(beyond_file, beyond);
   EXPECT_EQ(read_with(1, quad_file).soup.arity(40000), 4u);
   // The negative index comes first in the file and is named as written.
-  EXPECT_NE(read_with(1, bad_file).error.find("face 20000 refers to vertex index -5"),
+  EXPECT_NE(read_with(1, bad_file).error.find("face 20001 refers to vertex index -5"),
             std::string::npos)
       << read_with(1, bad_file).error;
-  EXPECT_NE(read_with(1, beyond_file).error.find("face 40000, corner 2"), std::string::npos)
+  EXPECT_NE(read_with(1, beyond_file).error.find("face 40001, corner 3"), std::string::npos)
       << read_with(1, beyond_file).error;
   expect_same_for_every_thread_count(quad_file);
   expect_same_for_every_thread_count(bad_file);

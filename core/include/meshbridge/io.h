@@ -133,8 +133,9 @@ struct MeshAttributes {
 //! \param info if given, filled with the counts above
 //! \param attributes if given, filled with colours and groups where the file has them
 //! \throw ReadError (missing, unreadable, empty, unknown extension, malformed: the message names
-//!        the line or record and what was expected; counts that lie; no polygons)
-//! \throw InvalidSoupError (index out of range, non-finite coordinate)
+//!        the line or record and what was expected; counts that lie; a vertex index out of
+//!        range; no polygons)
+//! \throw InvalidSoupError (a non-finite coordinate)
 Soup read_soup(const std::string& path, ReadInfo* info = nullptr,
                MeshAttributes* attributes = nullptr);
 

@@ -48,6 +48,17 @@ enum class Format { unknown, obj, off, ply, stl, threemf };
 Format format_of(const std::string& path);
 
 void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
+//! A face corner of an OBJ soup whose vertex is past the file's last vertex (found after the
+//! read: an OBJ face may name a vertex written after it).
+struct ObjIndexOutOfRange {
+  std::size_t face = 0;      //!< soup face (0-based)
+  std::size_t corner = 0;    //!< corner of that face (0-based)
+  std::size_t vertices = 0;  //!< vertices in the file
+};
+//! Reads `file` again up to that face and throws the ReadError naming its line ("line 6: face
+//! corner 3 refers to vertex 9, but the file has 3 vertices").
+[[noreturn]] void throw_obj_index_out_of_range(const MappedFile& file,
+                                               const ObjIndexOutOfRange& where);
 void read_off(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 void read_ply(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);

@@ -7,6 +7,7 @@
 #include "io/atomic_write.h"
 #include "io/formats.h"
 #include "io/mapped_file.h"
+#include "meshbridge/counted.h"
 #include "meshbridge/errors.h"
 
 #include <algorithm>
@@ -78,6 +79,25 @@ void check_attributes(const std::string& path, const IndexedMesh& mesh,
   check_flags(attributes->face_color_missing.size(), attributes->face_colors.size(), "face");
 }
 
+// A face corner past the file's last vertex is a malformed file: throws the ReadError that names
+// the first one (OBJ: by its line, read again; the reader could not tell, as an OBJ face may name
+// a vertex written after it). Returns if there is none.
+void name_index_out_of_range(const detail::MappedFile& file, Format format, const Soup& soup) {
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const PolygonView polygon = soup.polygon(f);
+    for (std::size_t c = 0; c < polygon.size(); ++c) {
+      if (polygon[c] < soup.num_vertices())
+        continue;
+      if (format == Format::obj)
+        detail::throw_obj_index_out_of_range(file, {f, c, soup.num_vertices()});
+      throw ReadError(file.path() + ": face " + std::to_string(f + 1) + ", corner " +
+                      std::to_string(c + 1) + " refers to vertex index " +
+                      std::to_string(polygon[c]) + ", but the file has " +
+                      counted(soup.num_vertices(), "vertex") + " (counting from 0)");
+    }
+  }
+}
+
 }  // namespace
 
 bool is_supported_mesh_file(const std::string& path) {
@@ -129,6 +149,7 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
   try {
     detail::account_faces(soup, counts);  // validates the soup on the way
   } catch (const InvalidSoupError& error) {
+    name_index_out_of_range(file, format, soup);
     throw InvalidSoupError(path + ": " + error.what());
   }
   if (info != nullptr)

@@ -7,6 +7,7 @@
 #include "io/huge_pages.h"
 #include "io/parallel_parts.h"
 #include "io/text_scanner.h"
+#include "meshbridge/counted.h"
 #include "meshbridge/errors.h"
 
 #include <algorithm>
@@ -41,6 +42,13 @@ class ObjReader {
         relative_(relative),
         in_(first, last, true, true),
         released_(first) {}
+
+  //! Reads until soup face `where.face` and throws the ReadError naming its line.
+  [[noreturn]] void locate(const ObjIndexOutOfRange& where) {
+    locate_ = &where;
+    read();
+    throw ReadError(file_.path() + ": face " + std::to_string(where.face) + " not found again");
+  }
 
   void read() {
     while (!in_.at_end()) {
@@ -213,6 +221,12 @@ class ObjReader {
       ++info_.faces_without_corners;
       return;
     }
+    if (locate_ != nullptr && soup_.num_faces() == locate_->face) {
+      const Index v = corners_[locate_->corner];
+      fail("face corner " + std::to_string(locate_->corner + 1) + " refers to vertex " +
+           std::to_string(std::uint64_t(v) + 1) + ", but the file has " +
+           counted(locate_->vertices, "vertex"));
+    }
     while (corners_.size() < 3)
       corners_.push_back(corners_.back());
     soup_.add_polygon(corners_);
@@ -254,6 +268,7 @@ class ObjReader {
   TextScanner in_;
   std::vector<Index> corners_;
   std::size_t texture_coordinates_ = 0, normals_ = 0;
+  const ObjIndexOutOfRange* locate_ = nullptr;              // see locate()
   bool alpha_given_ = false;                                // some 'v' line has r g b a
   static constexpr std::ptrdiff_t kReleaseEvery = 8 << 20;  // bytes of the map kept behind
   const char* released_;
@@ -448,6 +463,13 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
 }
 
 }  // namespace
+
+void throw_obj_index_out_of_range(const MappedFile& file, const ObjIndexOutOfRange& where) {
+  Soup soup;
+  ReadInfo info;
+  ObjReader(file, after_byte_order_mark(file.data(), file.end()), file.end(), soup, info, nullptr)
+      .locate(where);
+}
 
 void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
   // Parts of less than 1 MiB cost more to start and append than they save.

@@ -5,6 +5,7 @@
 #include "io/formats.h"
 #include "io/huge_pages.h"
 #include "io/text_scanner.h"
+#include "meshbridge/counted.h"
 #include "meshbridge/errors.h"
 
 #include <algorithm>
@@ -175,7 +176,7 @@ class OffReader {
       for (double& x : xyz) {
         in_.skip_space_and_comments();
         if (!in_.number(x)) {
-          fail("OFF vertex " + std::to_string(v) + " of " + std::to_string(nv) +
+          fail("OFF vertex " + std::to_string(v + 1) + " of " + std::to_string(nv) +
                ": expected 3 numbers" + at_line() +
                (in_.at_end() ? ", the file ends (a truncated file or a false count)"
                              : ", found '" + clip(in_.word()) + "'"));
@@ -213,27 +214,28 @@ class OffReader {
       in_.skip_space_and_comments();
       std::int64_t n = 0;
       if (in_.at_end() || !in_.integer(n)) {
-        fail("OFF face " + std::to_string(f) + " of " + std::to_string(nf) + " is missing" +
+        fail("OFF face " + std::to_string(f + 1) + " of " + std::to_string(nf) + " is missing" +
              at_line() + ": the file ends or has no corner count there");
       }
       if (n < 0)
-        fail("OFF face " + std::to_string(f) + " has a negative corner count " + std::to_string(n) +
-             at_line());
+        fail("OFF face " + std::to_string(f + 1) + " has a negative corner count " +
+             std::to_string(n) + at_line());
       const std::size_t left = static_cast<std::size_t>(file_.end() - in_.position());
       if (std::uint64_t(n) > left / 2 + 1) {
-        fail("OFF face " + std::to_string(f) + " claims " + std::to_string(n) +
+        fail("OFF face " + std::to_string(f + 1) + " claims " + std::to_string(n) +
              " corners, more than the rest of the file holds" + at_line());
       }
       corners.clear();
       for (std::int64_t c = 0; c < n; ++c) {
         std::int64_t index = 0;
         if (in_.at_line_end() || !in_.integer(index)) {
-          fail("OFF face " + std::to_string(f) + ": corner " + std::to_string(c) + " of " +
+          fail("OFF face " + std::to_string(f + 1) + ": corner " + std::to_string(c + 1) + " of " +
                std::to_string(n) + " is missing or not a vertex index" + at_line());
         }
-        if (index < 0 || index > std::int64_t(kNoIndex) - 1) {
-          fail("OFF face " + std::to_string(f) + " refers to vertex index " +
-               std::to_string(index) + at_line());
+        if (index < 0 || index >= nv) {
+          fail("OFF face " + std::to_string(f + 1) + " refers to vertex index " +
+               std::to_string(index) + at_line() + ", but the file has " +
+               counted(static_cast<std::size_t>(nv), "vertex") + " (OFF counts from 0)");
         }
         corners.push_back(static_cast<Index>(index));
       }
@@ -423,15 +425,16 @@ class OffReader {
       }
       const std::uint32_t n = word();
       if (std::uint64_t(n) * 4 > left()) {
-        fail("binary OFF face " + std::to_string(f) + " claims " + std::to_string(n) +
+        fail("binary OFF face " + std::to_string(f + 1) + " claims " + std::to_string(n) +
              " corners, more than the rest of the file holds");
       }
       corners.clear();
       for (std::uint32_t c = 0; c < n; ++c) {
         const std::int32_t index = static_cast<std::int32_t>(word());
-        if (index < 0) {
-          fail("binary OFF face " + std::to_string(f) + " refers to vertex index " +
-               std::to_string(index));
+        if (index < 0 || std::uint32_t(index) >= nv) {
+          fail("binary OFF face " + std::to_string(f + 1) + " refers to vertex index " +
+               std::to_string(index) + ", but the file has " + counted(nv, "vertex") +
+               " (OFF counts from 0)");
         }
         corners.push_back(static_cast<Index>(index));
       }

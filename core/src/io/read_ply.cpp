@@ -141,7 +141,7 @@ class PlyReader {
  private:
   std::string where() const { return file_.path() + ": "; }
   std::string item(const PlyElement& e, std::uint64_t i) const {
-    return "PLY " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count);
+    return "PLY " + e.name + " " + std::to_string(i + 1) + " of " + std::to_string(e.count);
   }
   ReadError unreadable(const PlyElement& e, std::uint64_t i, const PlyProperty& p) const {
     return ReadError(where() + item(e, i) + ": property '" + p.name +
@@ -437,7 +437,7 @@ class PlyReader {
 
   Index vertex_index(const char* what, std::uint64_t i, std::int64_t c) const {
     if (c < 0 || c >= std::int64_t(kNoIndex)) {
-      throw ReadError(where() + what + " " + std::to_string(i) + " refers to vertex index " +
+      throw ReadError(where() + what + " " + std::to_string(i + 1) + " refers to vertex index " +
                       std::to_string(c));
     }
     return static_cast<Index>(c);
