@@ -123,6 +123,23 @@ TEST_F(FileJobTest, run_reports_repaired_clean_and_failed) {
   EXPECT_EQ(json::parse(failed.record)["reason"], failed.reason);
 }
 
+TEST_F(FileJobTest, clean_means_the_mesh_is_written_as_read) {
+  // A tetrahedron with a vertex no face uses: not a defect, so clean as it is; removing the
+  // vertex changes the mesh, so the file is "repaired", not "clean".
+  std::ofstream(in_ / "lone.obj")
+      << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 5 5 5\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  const FileJob job{(in_ / "lone.obj").string(), (root_ / "out" / "lone.obj").string(), "lone.obj",
+                    "lone.obj"};
+  EXPECT_EQ(run_file_job(job).status, FileStatus::clean);
+  EXPECT_EQ(read_soup(job.output).num_vertices(), 5u);
+  FileJobOptions removing;
+  removing.repair.remove_isolated_vertices = true;
+  const FileJobResult removed = run_file_job(job, removing);
+  EXPECT_EQ(removed.status, FileStatus::repaired);
+  EXPECT_EQ(removed.report.isolated_vertices_removed, 1u);
+  EXPECT_EQ(read_soup(job.output).num_vertices(), 4u);
+}
+
 TEST_F(FileJobTest, resume_skips_outputs_newer_than_their_input) {
   FileJobOptions options;
   options.resume = true;

@@ -17,7 +17,9 @@ namespace meshbridge {
 
 //! What became of one file.
 enum class FileStatus {
-  clean,     //!< read, had no defect, written unchanged
+  //! read, had no defect; the mesh written as read (no vertex welded or removed, no face
+  //! flipped, added or removed), in the output's format
+  clean,
   repaired,  //!< read, had defects, repaired and written
   failed,    //!< could not be read, repaired or written (see FileJobResult::reason)
   skipped    //!< not attempted: output up to date (--resume) or input unreadable
