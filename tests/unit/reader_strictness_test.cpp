@@ -236,5 +236,30 @@ TEST_F(ReaderStrictness, off_colour_scale_is_decided_per_file) {
   EXPECT_EQ(normals[3], (Rgba{9, 9, 9, 255}));
 }
 
+TEST_F(ReaderStrictness, off_without_its_keyword_is_plain_off_and_one_line_is_named) {
+  // Geomview: the keyword is "recommended but optional, as many existing files lack it".
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  for (const std::string& start :
+       {std::string(""), std::string("# a comment\n\n"), std::string("  \r\n")}) {
+    SCOPED_TRACE(start);
+    ReadInfo info;
+    const Soup soup = read_soup(write("bare.off", start + kOffTetrahedron + faces), &info);
+    EXPECT_EQ(soup.num_vertices(), 4u);
+    EXPECT_EQ(soup.num_faces(), 4u);
+    EXPECT_EQ(info.faces_kept, 4u);
+  }
+  // A comment after the counts is fine; more numbers there are the file written on one line.
+  EXPECT_EQ(error_of("counted.off", "OFF\n4 4 0 # V F E\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces),
+            "read without error");
+  EXPECT_NE(error_of("one_line.off",
+                     "OFF 4 4 0 0 0 0 1 0 0 0 1 0 0 0 1 3 0 2 1 3 0 1 3 3 0 3 2 "
+                     "3 1 2 3\n")
+                .find("one_line.off: more follows the counts (line 1): '0' (OFF gives the "
+                      "counts, each vertex and each face a line of its own"),
+            std::string::npos);
+  EXPECT_NE(error_of("junk.off", "hello 4 4 0\n").find("not an OFF file: it starts with 'hello'"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace meshbridge

@@ -9,6 +9,7 @@
 #include "meshbridge/errors.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -83,8 +84,19 @@ class OffReader {
 
   OffHeader read_header() {
     in_.skip_space_and_comments();
-    const std::string_view word = in_.word();
     OffHeader h;
+    // The keyword is "recommended but optional, as many existing files lack this keyword"
+    // (Geomview's OFF manual): a file that starts with its counts is plain OFF.
+    const char* first = in_.position();
+    const char* last = first;
+    while (last != file_.end() && !TextScanner::is_blank_or_newline(*last) && *last != '#')
+      ++last;
+    const char* digits = first != last && (*first == '-' || *first == '+') ? first + 1 : first;
+    if (digits != last && std::all_of(digits, last, [](char c) {
+          return std::isdigit(static_cast<unsigned char>(c)) != 0;
+        }))
+      return h;  // "4OFF" is a keyword, "4" a count
+    const std::string_view word = in_.word();
     std::size_t i = 0;
     if (word.substr(0, 2) == "ST")
       h.texcoords = true, i = 2;
@@ -159,6 +171,11 @@ class OffReader {
       fail("the OFF header declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
            " faces, more than a file of " + std::to_string(size) +
            " bytes can hold (a false count)");
+    }
+    if (!in_.at_line_end()) {
+      fail("more follows the counts" + at_line() + ": '" + clip(in_.word()) +
+           "' (OFF gives the counts, each vertex and each face a line of its own; a file "
+           "written on one line cannot be read)");
     }
     in_.next_line();
     info_.declared_vertices = static_cast<std::size_t>(nv);
