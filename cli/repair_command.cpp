@@ -40,6 +40,7 @@ struct RepairArguments {
   bool no_orient = false, no_stitch = false;
   bool elements = false;
   bool progress = false;
+  bool in_place = false;  //!< OUT may be IN itself
   std::string before_after;
   RepairOptions options;
   std::string separate = "0";  //!< "auto" or a distance >= 0 (0 = off)
@@ -83,6 +84,12 @@ int run_repair(RepairArguments& arguments) {
     throw UsageError(out + ": unknown output format (expected .obj, .off, .ply, .stl or .3mf)");
   }
   check_readable_file(in);
+  std::error_code same_error;  // (an OUT that does not exist yet is not IN)
+  if (!arguments.in_place && std::filesystem::equivalent(in, out, same_error)) {
+    throw UsageError(out +
+                     ": is the input file itself; repair would replace it (pass --in-place "
+                     "to allow that, or name another output)");
+  }
   check_writable_file(out);
   // A report on standard output ('-', /dev/stdout or the file stdout goes to) is printed there,
   // and the summary moves to standard error, so that stdout holds the JSON alone.
@@ -217,6 +224,8 @@ void add_repair_command(CLI::App& app, int& exit_code) {
                    "how the sides (contenders) at a singular edge pair up: geometric = by angle "
                    "around the edge, combinatorial = by face order")
       ->transform(CLI::IsMember({"geometric", "combinatorial"}, CLI::ignore_case));
+  command->add_flag("--in-place", arguments->in_place,
+                    "allow OUT to be IN itself (the input is replaced, atomically)");
   command->add_flag("--no-orient", arguments->no_orient,
                     "keep every face's corner order (default: orient each component "
                     "consistently, closed ones outward)");

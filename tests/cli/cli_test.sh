@@ -281,6 +281,18 @@ atomic_output)
   ls -a "$work" | grep -q tmp && fail "temporary file left behind"
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/keep.obj"
   expect_in "$work/keep.obj" "v "
+  # OUT that is IN itself (by name, through a link or another spelling) is refused, the input
+  # untouched, unless --in-place.
+  cp "$models/twocubes.obj" "$work/self.obj"
+  ln -s self.obj "$work/self_link.obj"
+  for same in "$work/self.obj" "$work/./self.obj" "$work/self_link.obj"; do
+    expect_exit 2 "$mb" repair "$work/self.obj" "$same"
+    expect_in "$work/err" "is the input file itself; repair would replace it (pass --in-place"
+  done
+  cmp -s "$models/twocubes.obj" "$work/self.obj" || fail "the input changed"
+  expect_exit 0 "$mb" repair "$work/self.obj" "$work/self.obj" --in-place
+  expect_in "$work/out" "vertices: 14 in, 16 out"
+  expect_exit 0 "$mb" check "$work/self.obj"
   # A pipe or a device is written in place, never replaced by a file (as root, renaming over
   # /dev/stdout or a device node would replace it); a symbolic link stays one.
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/plain.ply"
