@@ -38,6 +38,9 @@ bash scripts/meshlab_private_root.sh run "$meshlab_root" -i "$model" \
   -o "$out/$name.repaired.ply" -m vc fc fq -s resources/scripts/repair.mlx \
   >"$out/$name.repair.log" 2>&1
 grep -v "^LOG:" "$out/$name.repair.log" | grep -E "MeshBridge|faces|vertices|sides|components|after|Layer now" | awk '!seen[$0]++' | unescape_html || true
+echo "(MeshLab holds triangles only: it loads a polygon of n corners as n - 2 triangles, so its"
+echo " face counts and the file it wrote count triangles, where meshbridge counts the polygons"
+echo " of $model)"
 echo
 echo "== meshbridge check $out/$name.repaired.ply"
 "$tool" check "$out/$name.repaired.ply" || [ $? -eq 1 ]
