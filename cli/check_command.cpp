@@ -33,6 +33,7 @@ int run_check(const CheckArguments& arguments) {
   ReadInfo info;
   DefectReport report;
   CloseGapsReport gaps;
+  std::string weld_hint;  // what a wider weld would close, when boundary edges are left
   {
     ProgressDisplay progress(path, progress_wanted(arguments.progress), progress_wanted(false),
                              check_plan());
@@ -40,8 +41,11 @@ int run_check(const CheckArguments& arguments) {
     const Soup soup = read_soup(path, &info);
     progress.stage(Stage::detect, 0);
     report = detect_defects(soup);
-    if (!arguments.json)  // what repair's gap closing would do (the report is of the file as read)
+    if (!arguments
+             .json) {  // what repair's gap closing would do (the report is of the file as read)
       gaps = preview_close_gaps(soup, weld, &report);
+      weld_hint = wider_weld_hint(soup, weld, gaps, report);
+    }
   }
   warn_about_reader(path, info);
   if (arguments.json) {
@@ -51,7 +55,7 @@ int run_check(const CheckArguments& arguments) {
   } else {
     std::cout << path << "\n"
               << "  read: " << describe_reading(info) << "\n"
-              << to_text(report) << gaps_line(gaps, true);
+              << to_text(report) << gaps_line(gaps, true) << weld_hint;
     if (report.has_defects())
       std::cout << "(`meshbridge explain` tells what these terms mean)\n";
   }

@@ -84,6 +84,28 @@ std::string gaps_line(const CloseGapsReport& g, bool would) {
   return out.str();
 }
 
+std::string wider_weld_hint(const Soup& soup, const CloseGapsOptions& weld,
+                            const CloseGapsReport& gaps, const DefectReport& detected) {
+  if (weld.tolerance >= 0 || !(gaps.tolerance > 0) || detected.boundary_edges.empty())
+    return "";
+  // 100x, rounded up to one significant digit (4.8e-7 -> 5e-5): still far below printable
+  // detail, but it spans the cracks CAD exports leave at a coarser rounding.
+  const double wide = gaps.tolerance * 100;
+  const double unit = std::pow(10.0, std::floor(std::log10(wide)));
+  CloseGapsOptions wider = weld;
+  wider.tolerance = std::ceil(wide / unit) * unit;
+  const CloseGapsReport w = preview_close_gaps(soup, wider, &detected);
+  if (w.vertices_welded + w.t_junctions_closed <= gaps.vertices_welded + gaps.t_junctions_closed)
+    return "";
+  std::ostringstream out;
+  out << "hint: " << detected.boundary_edges.size()
+      << " boundary edges; cracks wider than the automatic tolerance stay open: --weld "
+      << wider.tolerance << " would weld " << w.vertices_welded << " vertices (largest move "
+      << w.largest_weld_distance << ") and close " << w.t_junctions_closed
+      << " T-junction cracks\n";
+  return out.str();
+}
+
 namespace {
 
 bool has_extension(const std::string& path, const char* extension) {

@@ -29,6 +29,13 @@ std::size_t parse_fill_holes(const std::string& text);
 //! One line describing what gap closing did (or would do, for check).
 std::string gaps_line(const CloseGapsReport& report, bool would);
 
+//! For check with the automatic tolerance: cracks wider than it stay open, so when `detected`
+//! has boundary edges, what 100 times that tolerance (rounded up to one digit) would weld and
+//! close, as a line "hint: --weld 5e-05 would weld 12 vertices ... (N now)", or "" when it would
+//! close nothing more than `gaps` (the preview at the automatic tolerance).
+std::string wider_weld_hint(const Soup& soup, const CloseGapsOptions& weld,
+                            const CloseGapsReport& gaps, const DefectReport& detected);
+
 //! True if `path` ends with ".stl" (any case).
 bool is_stl_path(const std::string& path);
 //! True if `path` names a format that holds triangles only (.stl, .3mf, any case): the writer

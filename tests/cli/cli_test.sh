@@ -628,6 +628,15 @@ progress)
   unset MESHBRIDGE_PROGRESS_DELAY
   ;;
 messages)
+  # A crack of 2e-6 in a unit tetrahedron (each face written with its own corners) is wider than
+  # the automatic weld tolerance: check says what a wider one would weld, and it does.
+  printf 'v 0 0 0\nv 0 1 0\nv 1 0 0\nv 0.000002 0 0\nv 1.000002 0 0\nv 0 0 1\nv 0 0.000002 0\nv 0 0 1.000002\nv 0 1.000002 0\nv 1 0.000002 0\nv 0 1 0.000002\nv 0 0.000002 1\nf 1 2 3\nf 4 5 6\nf 7 8 9\nf 10 11 12\n' >"$work/crack.obj"
+  expect_exit 1 "$mb" check "$work/crack.obj"
+  expect_in "$work/out" "hint: 12 boundary edges; cracks wider than the automatic tolerance stay open: --weld 5e-05 would weld 8 vertices (largest move 2e-06)"
+  expect_exit 0 "$mb" repair "$work/crack.obj" "$work/crack_out.obj" --weld 5e-05
+  expect_in "$work/out" "after: singular edges 0, singular vertices 0, non-orientable components 0, watertight yes"
+  expect_exit 0 "$mb" check "$work/crack_out.obj"
+  grep -q "hint:" "$work/out" && fail "a hint on a closed mesh"
   # Each names the path and the cause, before any work is done.
   expect_exit 2 "$mb" check "$work/no/such/folder/a.obj"
   expect_in "$work/err" "$work/no/such/folder/a.obj: cannot read: the folder '$work/no' does not exist"
