@@ -139,8 +139,13 @@ def read(path: Union[str, "os.PathLike[str]"]) -> Soup:
     of lists), ``corner_vertices``/``face_begin`` (the polygons as flat arrays), ``path`` and
     ``read_info`` (what the file declared). Its arrays are read-only views.
 
-    Raises :class:`ReadError` (missing, unreadable, empty, malformed file) or
-    :class:`InvalidMeshError` (an index out of range, a non-finite coordinate), naming the file.
+    A Soup holds positions and polygons only: colours, OBJ groups, materials and texture
+    coordinates stay in the file (:func:`meshbridge.batch.run_batch` and the CLI carry them to
+    the output).
+
+    Raises :class:`ReadError` (missing, unreadable, empty or malformed file, a vertex index out
+    of range, named by line where the format has lines) or :class:`InvalidMeshError` (a
+    non-finite coordinate), naming the file.
     """
     return _core.read(_path(path))
 
@@ -148,8 +153,10 @@ def read(path: Union[str, "os.PathLike[str]"]) -> Soup:
 def write(path: Union[str, "os.PathLike[str]"], mesh: Any, faces: Optional[Faces] = None) -> None:
     """Writes a manifold mesh to OBJ, OFF, PLY, STL or 3MF (chosen by the extension).
 
-    ``mesh`` is a :class:`Soup`, a :class:`RepairResult`, or vertices with ``faces``. The file is
-    written under a temporary name and renamed, so on error the previous file is untouched.
+    ``mesh`` is a :class:`Soup`, a :class:`RepairResult`, or vertices with ``faces``: positions
+    and polygons only (no colours or groups; :func:`meshbridge.batch.run_batch` carries a file's
+    own). The file is written under a temporary name and renamed, so on error the previous file
+    is untouched.
     STL and 3MF get triangles. STL cannot keep split vertices (every reader welds them again):
     when reading the written STL back re-creates singular edges or vertices, a
     :class:`UserWarning` says how many (as ``meshbridge repair`` warns); write 3MF, PLY, OBJ or

@@ -263,8 +263,10 @@ PYBIND11_MODULE(_core, m) {
         return reread;
       },
       py::arg("path"), py::arg("soup"),
-      "Writes `soup`; returns (singular edges, singular vertices) of the file as an STL reader "
-      "gets it back ((0, 0) for other formats).");
+      "Writes `soup` (positions and polygons only: a Soup holds no colours, groups or texture "
+      "coordinates, so a file read and written back this way loses them; meshbridge.batch and the "
+      "CLI carry them); returns (singular edges, singular vertices) of the file as an STL "
+      "reader gets it back ((0, 0) for other formats).");
 
   m.def(
       "check",
