@@ -58,15 +58,19 @@ struct Entry {
   const FileJob* job = nullptr;  //!< null: unreadable, the status, reason and record are final
   FileStatus status = FileStatus::failed;
   std::string reason;
-  std::string reading;  //!< FileJobResult::reading: a warning for stderr, or empty
+  //! Warnings for stderr, one per line: FileJobResult::reading, then what the output format
+  //! left out (FileJobResult::written.left_out), or empty.
+  std::string warnings;
   std::string record;
   TableRow row;
 };
 
-void take_result(Entry& entry, const FileJobResult& result) {
+void take_result(Entry& entry, const FileJobResult& result, const FileJob& job) {
   entry.status = result.status;
   entry.reason = result.reason;
-  entry.reading = result.reading;
+  entry.warnings = result.reading.empty() ? "" : result.reading + "\n";
+  for (const std::string& what : result.written.left_out)
+    entry.warnings += "output " + job.output_name + ": " + what + "\n";
   entry.record = result.record;
   const RepairReport& p = result.report;
   // An STL output counts as it will be re-read (split vertex copies weld again).
@@ -79,8 +83,8 @@ void take_result(Entry& entry, const FileJobResult& result) {
 // writers keep per-call state in process-wide objects, so threads would have to take turns for
 // reading and writing, and a file that crashes its child fails alone instead of ending the run.
 // The child sends its result over a pipe: "status faces_in singular_edges singular_vertices
-// faces_out components_after watertight reason_length reading_length\n", the reason, the
-// reading note, then the record.
+// faces_out components_after watertight reason_length warnings_length\n", the reason, the
+// warnings, then the record.
 
 void write_all(int fd, const std::string& data) {
   for (std::size_t done = 0; done < data.size();) {
@@ -96,7 +100,7 @@ void write_all(int fd, const std::string& data) {
 [[noreturn]] void run_child(const FileJob& job, const FileJobOptions& options, int fd) {
   Entry entry;
   try {
-    take_result(entry, run_file_job(job, options));
+    take_result(entry, run_file_job(job, options), job);
   } catch (...) {  // run_file_job catches everything it can name; out of memory while copying
     ::_exit(3);
   }
@@ -104,9 +108,9 @@ void write_all(int fd, const std::string& data) {
   std::ostringstream head;
   head << static_cast<int>(entry.status) << ' ' << r.faces_in << ' ' << r.singular_edges << ' '
        << r.singular_vertices << ' ' << r.faces_out << ' ' << r.components_after << ' '
-       << (r.watertight_after ? 1 : 0) << ' ' << entry.reason.size() << ' ' << entry.reading.size()
+       << (r.watertight_after ? 1 : 0) << ' ' << entry.reason.size() << ' ' << entry.warnings.size()
        << '\n';
-  write_all(fd, head.str() + entry.reason + entry.reading + entry.record);
+  write_all(fd, head.str() + entry.reason + entry.warnings + entry.record);
   ::close(fd);
   ::_exit(0);
 }
@@ -128,7 +132,7 @@ bool decode_child(const std::string& data, Entry& entry) {
   r.watertight_after = watertight != 0;
   entry.status = static_cast<FileStatus>(status);
   entry.reason = data.substr(newline + 1, reason_size);
-  entry.reading = data.substr(newline + 1 + reason_size, reading_size);
+  entry.warnings = data.substr(newline + 1 + reason_size, reading_size);
   entry.record = data.substr(newline + 1 + reason_size + reading_size);
   return !entry.record.empty();
 }
@@ -206,9 +210,11 @@ void print_table_row(const Entry& e) {
 //! The entry's JSON record or table row on stdout; what the reader changed, as a warning on
 //! stderr (as `repair` warns), in either mode.
 void print_entry(const Entry& e, bool json) {
-  if (!e.reading.empty()) {
+  if (!e.warnings.empty()) {
     std::cout.flush();
-    std::cerr << "meshbridge: warning: " << e.name << ": " << e.reading << "\n";
+    std::istringstream lines(e.warnings);
+    for (std::string line; std::getline(lines, line);)
+      std::cerr << "meshbridge: warning: " << e.name << ": " << line << "\n";
   }
   if (json) {
     std::cout << e.record << "\n";
@@ -293,7 +299,7 @@ int run_batch(const BatchArguments& arguments) {
   if (arguments.jobs <= 1) {
     for (std::size_t i = 0; i < entries.size(); ++i) {
       if (entries[i].job && !done[i]) {
-        take_result(entries[i], run_file_job(*entries[i].job, options));
+        take_result(entries[i], run_file_job(*entries[i].job, options), *entries[i].job);
         finished(i);
       }
     }

@@ -122,10 +122,6 @@ bool is_stl_path(const std::string& path) {
   return has_extension(path, ".stl");
 }
 
-bool holds_triangles_only(const std::string& path) {
-  return has_extension(path, ".stl") || has_extension(path, ".3mf");
-}
-
 double apply_separate(const std::string& text, IndexedMesh& mesh, std::size_t vertices_split,
                       const std::string& out, std::ostream& summary) {
   const bool automatic = text == "auto";

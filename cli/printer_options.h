@@ -38,9 +38,6 @@ std::string wider_weld_hint(const Soup& soup, const CloseGapsOptions& weld,
 
 //! True if `path` ends with ".stl" (any case).
 bool is_stl_path(const std::string& path);
-//! True if `path` names a format that holds triangles only (.stl, .3mf, any case): the writer
-//! fans larger polygons.
-bool holds_triangles_only(const std::string& path);
 
 //! `--separate auto|EPS` applied to a repaired mesh about to be written to `out`. For STL, an
 //! explicit EPS that float32 cannot hold is a UsageError naming the smallest EPS that works.

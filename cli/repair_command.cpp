@@ -48,25 +48,6 @@ struct RepairArguments {
   std::string fill_holes;      //!< MAX_EDGES of --fill-holes ("" or "0" = off)
 };
 
-// Formats that hold triangles only (STL, 3MF): how many triangles the writer made of the mesh's
-// polygons by fanning the larger ones, and how many it fanned.
-struct WrittenTriangles {
-  std::size_t triangles = 0;
-  std::size_t fanned = 0;
-};
-
-WrittenTriangles count_written_triangles(const std::string& out, const Soup& soup) {
-  WrittenTriangles written;
-  if (!holds_triangles_only(out))
-    return written;
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const std::size_t n = soup.arity(f);
-    written.triangles += n - 2;
-    written.fanned += n > 3 ? 1 : 0;
-  }
-  return written;
-}
-
 int run_repair(RepairArguments& arguments) {
   const std::string& in = arguments.in;
   const std::string& out = arguments.out;
@@ -108,8 +89,7 @@ int run_repair(RepairArguments& arguments) {
   RepairResult result;
   std::ostringstream separate_summary;
   std::optional<DefectReport> reread;  // STL output as a reader gets it back
-  WrittenTriangles written;
-  std::vector<std::string> left_out;  // what the output format could not hold
+  WrittenOutput written;               // triangles fanned, what the output format could not hold
   {
     ProgressDisplay progress(in, progress_wanted(arguments.progress), progress_wanted(false),
                              repair_plan());
@@ -129,8 +109,7 @@ int run_repair(RepairArguments& arguments) {
     apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
                    separate_summary);
     write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
-    written = count_written_triangles(out, result.mesh.soup);
-    left_out = describe_unwritten(out, attributes);
+    written = describe_written(out, result.mesh.soup, attributes);
     std::error_code status_error;  // (a device or pipe cannot be read back)
     if (is_stl_path(out) && std::filesystem::is_regular_file(out, status_error)) {
       // Only the picture reads the mesh again: without one it is freed before the file is read
@@ -142,12 +121,8 @@ int run_repair(RepairArguments& arguments) {
     if (!arguments.report.empty()) {
       ReportJsonOptions json;
       json.elements = arguments.elements;
-      WrittenOutput output;
-      output.triangles = written.triangles;
-      output.polygons_fanned = written.fanned;
-      output.left_out = left_out;
       const std::string text = repair_report_json(in, out, result.report, &info, json,
-                                                  reread ? &*reread : nullptr, &output) +
+                                                  reread ? &*reread : nullptr, &written) +
                                "\n";
       if (report_to_stdout)
         std::cout << text << std::flush;
@@ -169,13 +144,13 @@ int run_repair(RepairArguments& arguments) {
     }
   }
   warn_about_reader(in, info);
-  for (const std::string& what : left_out)
+  for (const std::string& what : written.left_out)
     std::cerr << "meshbridge: warning: " << out << ": " << what << "\n";
 
   std::ostream& summary = report_to_stdout ? std::cerr : std::cout;
   summary << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
-  if (written.fanned != 0) {
-    summary << "written as " << written.triangles << " triangles: " << written.fanned
+  if (written.polygons_fanned != 0) {
+    summary << "written as " << written.triangles << " triangles: " << written.polygons_fanned
             << " polygons fanned (the format holds triangles only)\n";
   }
   if (reread) {

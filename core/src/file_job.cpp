@@ -181,7 +181,8 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     result.reason = reason;
     result.record =
         batch_record_json(job.name, job.output_name, to_string(status), reason, report, read, json,
-                          report != nullptr && result.reread ? &*result.reread : nullptr);
+                          report != nullptr && result.reread ? &*result.reread : nullptr,
+                          report != nullptr ? &result.written : nullptr);
     return result;
   };
 
@@ -229,6 +230,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
       const std::lock_guard<std::mutex> guard(openmesh_io_lock());
       write_mesh(job.output, repaired.mesh, &attributes);  // maps them through the origins
     }
+    result.written = describe_written(job.output, repaired.mesh.soup, attributes);
     result.report = std::move(repaired.report);
     if (lower(fs::path(job.output).extension().string()) == ".stl") {
       // STL keeps no shared vertices: report the file as a reader will get it back.

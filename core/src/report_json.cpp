@@ -31,6 +31,15 @@ Json read_json(const ReadInfo& info) {
               {"color_map_indices", info.color_map_indices}};
 }
 
+//! What writing the output made of the mesh (repair and batch records), when given.
+void add_written(Json& out, const WrittenOutput* written) {
+  if (written == nullptr)
+    return;
+  out["written"] = Json{{"triangles", written->triangles},
+                        {"polygons_fanned", written->polygons_fanned},
+                        {"left_out", written->left_out}};
+}
+
 //! The counts of a detection report, then its element lists on request.
 void add_defects(Json& out, const DefectReport& r, bool elements) {
   out["vertices"] = r.num_vertices;
@@ -163,11 +172,7 @@ std::string repair_report_json(const std::string& file, const std::string& outpu
   if (read)
     out["read"] = read_json(*read);
   add_repair(out, report, options.elements, reread);
-  if (written) {
-    out["written"] = Json{{"triangles", written->triangles},
-                          {"polygons_fanned", written->polygons_fanned},
-                          {"left_out", written->left_out}};
-  }
+  add_written(out, written);
   return dump(out, options.indent);
 }
 
@@ -185,7 +190,8 @@ std::string compare_report_json(const std::string& file, std::size_t soup_vertic
 std::string batch_record_json(const std::string& file, const std::string& output,
                               const char* status, const std::string& reason,
                               const RepairReport* report, const ReadInfo* read,
-                              const ReportJsonOptions& options, const DefectReport* reread) {
+                              const ReportJsonOptions& options, const DefectReport* reread,
+                              const WrittenOutput* written) {
   Json out = header("batch", file);
   if (!output.empty())
     out["output"] = output;
@@ -194,8 +200,10 @@ std::string batch_record_json(const std::string& file, const std::string& output
     out["reason"] = reason;
   if (read)
     out["read"] = read_json(*read);
-  if (report)
+  if (report) {
     add_repair(out, *report, options.elements, reread);
+    add_written(out, written);
+  }
   return dump(out, options.indent);
 }
 

@@ -352,6 +352,16 @@ batch)
         "meshbridge: warning: p.obj: 2 face records: 0 kept, 1 split (pinched: a vertex revisited), 1 set aside (< 3 distinct corners); 1 dangling edge"
     done
   done
+  # What an output format cannot hold is a warning too, and the record's written.left_out.
+  mkdir -p "$work/coloured"
+  printf 'COFF\n4 4 0\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n0 0 1 9 9 9\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' >"$work/coloured/c.off"
+  for jobs in 1 2; do
+    expect_exit 0 "$mb" batch "$work/coloured" "$work/coloured_out$jobs" --format stl --json --jobs "$jobs"
+    expect_in "$work/err" "meshbridge: warning: c.off: output c.stl: vertex colours not written: STL holds none"
+    [ "$(json_line_field "$work/out" 0 written.left_out.0)" = "vertex colours not written: STL holds none" ] ||
+      fail "batch written.left_out: $(cat "$work/out")"
+    [ "$(json_line_field "$work/out" 0 written.triangles)" = 4 ] || fail "batch written.triangles"
+  done
   printf 'v 0 0 0\nf 1 2 3\n' >"$work/in/broken.obj"
   expect_exit 2 "$mb" batch "$work/in" "$work/res2" --json --quiet
   [ ! -s "$work/err" ] || fail "--quiet printed progress: $(cat "$work/err")"

@@ -162,6 +162,21 @@ MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& 
 std::vector<std::string> describe_unwritten(const std::string& path,
                                             const MeshAttributes& attributes);
 
+//! What write_mesh() makes of a mesh beyond its polygons (describe_written()).
+struct WrittenOutput {
+  //! Triangles written, for formats that hold triangles only (STL, 3MF); 0 for the others.
+  std::size_t triangles = 0;
+  //! Polygons of more than 3 corners fanned into triangles there (0 for the other formats).
+  std::size_t polygons_fanned = 0;
+  //! What the format left out of what was read, one phrase each (describe_unwritten()).
+  std::vector<std::string> left_out;
+};
+
+//! What write_mesh(path, mesh with `soup`, &attributes) makes of it: the triangles and fanned
+//! polygons of a format that holds triangles only (.stl, .3mf), and describe_unwritten().
+WrittenOutput describe_written(const std::string& path, const Soup& soup,
+                               const MeshAttributes& attributes);
+
 //! True if write_mesh and write_file_atomically write `path` in place rather than through a
 //! temporary file renamed over it: a path under /dev/ (/dev/stdout, /dev/null) or an existing
 //! file that is neither a regular file nor a folder (a device, a FIFO).

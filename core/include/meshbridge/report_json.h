@@ -43,16 +43,6 @@ std::string check_report_json(const std::string& file, const DefectReport& repor
                               const ReadInfo* read = nullptr,
                               const ReportJsonOptions& options = {});
 
-//! What writing the output made of the repaired mesh (the CLI's `repair`).
-struct WrittenOutput {
-  //! Triangles written, for formats that hold triangles only (STL, 3MF); 0 for the others.
-  std::size_t triangles = 0;
-  //! Polygons of more than 3 corners fanned into triangles there (0 for the other formats).
-  std::size_t polygons_fanned = 0;
-  //! What the format left out of what was read, one phrase each (describe_unwritten()).
-  std::vector<std::string> left_out;
-};
-
 //! `{"schema_version":1,"kind":"repair","file":...,"output":...,"read":{...},<repair counts>,
 //! "gaps":{<gap closing counts>},"before":{<check counts>},"after":{<check counts>}
 //! [,"reread":{<check counts>}][,"written":{"triangles":N,"polygons_fanned":N,"left_out":[...]}]}`;
@@ -84,15 +74,17 @@ std::string compare_report_json(const std::string& file, std::size_t soup_vertic
 
 //! One line of `batch --json`: `{"schema_version":1,"kind":"batch","file":...,"output":...,
 //! "status":"clean"|"repaired"|"failed"|"skipped"[,"reason":...][,"read":{...}]
-//! [,<repair counts>,"gaps":{...},"before":{...},"after":{...}[,"reread":{...}]]}`. The repair
-//! counts, `gaps` and `before`/`after` are those of repair_report_json() and are present exactly
-//! when `report` is not null (`reread` when `reread` is not null too); `reason` (why it failed or
-//! was skipped) exactly when it is not empty; `output` when not empty.
+//! [,<repair
+//! counts>,"gaps":{...},"before":{...},"after":{...}[,"reread":{...}][,"written":{...}]]}`. The
+//! repair counts, `gaps` and `before`/`after` are those of repair_report_json() and are present
+//! exactly when `report` is not null (`reread` and `written` when they are not null too); `reason`
+//! (why it failed or was skipped) exactly when it is not empty; `output` when not empty.
 std::string batch_record_json(const std::string& file, const std::string& output,
                               const char* status, const std::string& reason,
                               const RepairReport* report, const ReadInfo* read = nullptr,
                               const ReportJsonOptions& options = {},
-                              const DefectReport* reread = nullptr);
+                              const DefectReport* reread = nullptr,
+                              const WrittenOutput* written = nullptr);
 
 //! Converts a string of bytes to valid UTF-8 as described above (U+FFFD per invalid byte).
 std::string to_valid_utf8(const std::string& bytes);

@@ -83,4 +83,19 @@ std::vector<std::string> describe_unwritten(const std::string& path,
   return lost;
 }
 
+WrittenOutput describe_written(const std::string& path, const Soup& soup,
+                               const MeshAttributes& attributes) {
+  WrittenOutput written;
+  const detail::Format format = detail::format_of(path);
+  if (format == detail::Format::stl || format == detail::Format::threemf) {
+    for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+      const std::size_t n = soup.arity(f);
+      written.triangles += n - 2;
+      written.polygons_fanned += n > 3 ? 1 : 0;
+    }
+  }
+  written.left_out = describe_unwritten(path, attributes);
+  return written;
+}
+
 }  // namespace meshbridge
