@@ -205,6 +205,68 @@ TEST_F(ColourFidelity, describe_unwritten_names_what_each_format_cannot_hold) {
           "positions rounded from 64-bit to 32-bit floats: STL holds no more"}));
 }
 
+TEST_F(ColourFidelity, obj_colours_written_0_to_255_are_read_as_such) {
+  const Reading r = read(write("bytes.obj",
+                               "v 0 0 0 255 128 0\nv 1 0 0 0.5 0.25 1\nv 0 1 0\n"
+                               "v 0 0 1 1 1 1\n" +
+                                   std::string(kTetrahedronFaces)));
+  const auto& c = r.attributes.vertex_colors;
+  ASSERT_EQ(c.size(), 4u);
+  EXPECT_EQ(c[0], (Rgba{255, 128, 0, 255}));  // was clamped to yellow (255, 255, 0)
+  EXPECT_EQ(c[1], (Rgba{128, 64, 255, 255}));
+  EXPECT_EQ(c[3], (Rgba{255, 255, 255, 255}));  // all <= 1: the 0..1 scale
+}
+
+TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
+  const auto not_kept_of = [this](const std::string& name, const std::string& bytes) {
+    return read(write(name, bytes)).attributes.not_kept;
+  };
+  // PLY: vertex normals and texture coordinates, a face property, an element of its own.
+  const auto ply = not_kept_of(
+      "uv.ply",
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty float nx\nproperty float s\nelement face 1\n"
+      "property list uchar int vertex_indices\nproperty int flags\nelement material 2\n"
+      "property uchar red\nend_header\n0 0 0 1 0\n1 0 0 1 1\n0 1 0 1 0\n3 0 1 2 7\n1\n2\n");
+  ASSERT_EQ(ply.size(), 3u);
+  EXPECT_EQ(ply[0].what, "PLY vertex properties nx, s");
+  EXPECT_EQ(ply[0].count, 3u);
+  EXPECT_EQ(ply[1].what, "PLY face property flags");
+  EXPECT_EQ(ply[2].what, "PLY element 'material'");
+  EXPECT_EQ(ply[2].count, 2u);
+  // OFF: normals (NOFF), values after a plain OFF vertex, a face colour of 2 values.
+  const auto off = not_kept_of("n.off",
+                               "NOFF\n3 1 0\n0 0 0 0 0 1 0.5\n1 0 0 0 0 1\n0 1 0 0 0 1\n"
+                               "3 0 1 2 0.1 0.2\n");
+  ASSERT_EQ(off.size(), 3u);
+  EXPECT_EQ(off[0].what, "OFF vertex normals (NOFF)");
+  EXPECT_EQ(off[1].count, 1u);  // the vertex line with 0.5 after its normal
+  EXPECT_EQ(off[2].count, 1u);  // the face with 2 values after its corners
+  // OBJ: a w other than 1.
+  const auto obj = not_kept_of("w.obj", "v 0 0 0 2\nv 1 0 0 1\nv 0 1 0\nf 1 2 3\n");
+  ASSERT_EQ(obj.size(), 1u);
+  EXPECT_EQ(obj[0].what, "OBJ vertex w other than 1");
+  EXPECT_EQ(obj[0].count, 1u);
+  // Binary STL: triangles whose attribute word is not 0.
+  std::string stl(80, ' ');
+  const std::uint32_t two = 2;
+  stl.append(reinterpret_cast<const char*>(&two), 4);
+  for (int t = 0; t < 2; ++t) {
+    const float values[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, float(t)};
+    stl.append(reinterpret_cast<const char*>(values), sizeof values);
+    const std::uint16_t attribute = t == 0 ? 0x7C00 : 0;  // red in the VisCAM/SolidView scheme
+    stl.append(reinterpret_cast<const char*>(&attribute), 2);
+  }
+  const auto facets = not_kept_of("a.stl", stl);
+  ASSERT_EQ(facets.size(), 1u);
+  EXPECT_EQ(facets[0].count, 1u);
+  // Named for every output, even the format the file came in.
+  MeshAttributes a;
+  a.not_kept = ply;
+  EXPECT_EQ(describe_unwritten("x.ply", a).front(),
+            "PLY vertex properties nx, s, on 3 vertices: not written (MeshBridge reads past them)");
+}
+
 TEST_F(ColourFidelity, write_mesh_refuses_missing_flags_of_another_size) {
   IndexedMesh mesh;
   mesh.soup = read_soup(write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));

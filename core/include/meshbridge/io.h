@@ -96,6 +96,16 @@ enum ColorChannel : std::uint8_t {
   kRgbaChannels = 15
 };
 
+//! Something a file holds that MeshBridge reads past without keeping (normals, texture
+//! coordinates, other PLY properties and elements, STL facet attributes...), e.g.
+//! {"PLY vertex properties nx, ny, nz", 8, "vertex"}: no writer writes it, so every output
+//! lacks it and describe_unwritten() names it.
+struct NotKept {
+  std::string what;       //!< what it is, with the format's own names
+  std::size_t count = 0;  //!< on how many elements or records
+  std::string noun;       //!< of what ("vertex", "face", "line", "item"), for counted()
+};
+
 //! What a file carries besides positions and polygons, where MeshBridge keeps it.
 struct MeshAttributes {
   std::vector<Rgba> vertex_colors;  //!< empty, or one per soup vertex
@@ -113,9 +123,12 @@ struct MeshAttributes {
   //! OBJ `mtllib` lines as written (never opened); the OBJ writer writes them back, so that the
   //! `usemtl` groups still name materials of a library.
   std::vector<std::string> material_libraries;
-  //! OBJ `vt` and `vn` records: read and their indices checked, but not kept (no writer writes
-  //! texture coordinates or normals). See describe_unwritten().
+  //! OBJ `vt` and `vn` records: read and the form of their indices checked, but not kept (no
+  //! writer writes texture coordinates or normals). See describe_unwritten().
   std::size_t texture_coordinates = 0, normals = 0;
+  //! Everything else the file holds that is read past, not kept (filled only when the reader is
+  //! given attributes). See describe_unwritten().
+  std::vector<NotKept> not_kept;
   bool double_precision = false;  //!< positions were stored as 64-bit floats (PLY double)
 
   //! True if element `i` has a colour of its own (a colour vector that is non-empty and no

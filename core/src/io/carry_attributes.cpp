@@ -36,6 +36,7 @@ MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& 
   out.material_libraries = input.material_libraries;
   out.texture_coordinates = input.texture_coordinates;
   out.normals = input.normals;
+  out.not_kept = input.not_kept;
   carry_colors(input.vertex_colors, input.vertex_color_missing, mesh.vertex_origin,
                out.vertex_colors, out.vertex_color_missing);
   carry_colors(input.face_colors, input.face_color_missing, mesh.face_origin, out.face_colors,

@@ -54,12 +54,18 @@ std::vector<std::string> describe_unwritten(const std::string& path,
       what += counted(attributes.normals, "normal") + " (vn)";
     lost.push_back(what + " not written: MeshBridge writes neither");
   }
+  for (const NotKept& n : attributes.not_kept)
+    lost.push_back(n.what + ", on " + counted(n.count, n.noun) +
+                   ": not written (MeshBridge reads past them)");
   const bool vertex_colors = !attributes.vertex_colors.empty();
   const bool face_colors = !attributes.face_colors.empty();
+  // MeshBridge's 3MF writer writes the core specification only (no materials extension).
+  const std::string none = format == Format::threemf ? ": MeshBridge writes no 3MF materials"
+                                                     : ": " + name + " holds none";
   if (vertex_colors && (format == Format::stl || format == Format::threemf))
-    lost.push_back("vertex colours not written: " + name + " holds none");
+    lost.push_back("vertex colours not written" + none);
   if (face_colors && (format == Format::obj || format == Format::stl || format == Format::threemf))
-    lost.push_back("face colours not written: " + name + " holds none");
+    lost.push_back("face colours not written" + none);
   // A colour on every element or none: the elements the file left without one get white.
   const std::size_t vertices_without = missing_count(attributes.vertex_color_missing);
   if (vertex_colors && vertices_without > 0 && (format == Format::ply || format == Format::off)) {

@@ -21,6 +21,17 @@ namespace meshbridge::detail {
 
 namespace {
 
+//! Adds `n` to the attributes' list, or its count to an entry about the same thing (parts).
+void add_not_kept(MeshAttributes& attributes, const NotKept& n) {
+  for (NotKept& known : attributes.not_kept) {
+    if (known.what == n.what) {
+      known.count += n.count;
+      return;
+    }
+  }
+  attributes.not_kept.push_back(n);
+}
+
 //! Where a part of the file (after the first) refers to vertices relative to its own start.
 struct RelativeCorners {
   //! (soup corner, vertices read in the part before it + its negative index) of every face
@@ -89,6 +100,14 @@ class ObjReader {
     if (attributes_ != nullptr) {
       attributes_->vertex_color_channels = alpha_given_ ? kRgbaChannels : kRgbChannels;
       attributes_->texture_coordinates = texture_coordinates_;
+      if (w_not_one_ > 0)
+        add_not_kept(*attributes_, {"OBJ vertex w other than 1", w_not_one_, "vertex"});
+      if (values_no_colour_ > 0) {
+        add_not_kept(*attributes_,
+                     {"OBJ numbers after a vertex that are no w or colour (5, or more "
+                      "than 7)",
+                      values_no_colour_, "vertex"});
+      }
       attributes_->normals = normals_;
       if (!attributes_->vertex_colors.empty())
         pad_missing_colors(attributes_->vertex_colors, attributes_->vertex_color_missing,
@@ -117,14 +136,22 @@ class ObjReader {
            " coordinate(s), expected 3");
     }
     soup_.positions.push_back(Point(values[0], values[1], values[2]));
-    if (attributes_ != nullptr) {
-      // x y z r g b [a]: colours as floats in [0, 1]; a vertex without one has none.
-      const Rgba color{to_byte(values[3]), to_byte(values[4]), to_byte(values[5]),
-                       n == 7 ? to_byte(values[6]) : std::uint8_t(255)};
-      push_color(attributes_->vertex_colors, attributes_->vertex_color_missing,
-                 soup_.num_vertices() - 1, n >= 6 ? &color : nullptr);
-      alpha_given_ = alpha_given_ || n == 7;
+    if (attributes_ == nullptr)
+      return;
+    // x y z r g b [a]: colours as floats in [0, 1], or 0..255 where some value is above 1 (as
+    // some exporters write them); a vertex without one has none.
+    Rgba color;
+    if (n >= 6) {
+      const bool bytes = *std::max_element(values + 3, values + n) > 1;
+      color = Rgba{to_byte(values[3], bytes), to_byte(values[4], bytes), to_byte(values[5], bytes),
+                   n == 7 ? to_byte(values[6], bytes) : std::uint8_t(255)};
     }
+    push_color(attributes_->vertex_colors, attributes_->vertex_color_missing,
+               soup_.num_vertices() - 1, n >= 6 ? &color : nullptr);
+    alpha_given_ = alpha_given_ || n == 7;
+    // Read past: a w other than 1 ("v x y z w"), and numbers that are neither w nor a colour.
+    w_not_one_ += n == 4 && values[3] != 1;
+    values_no_colour_ += n == 5 || (n == 7 && !in_.at_line_end());
   }
 
   // The records of the OBJ format (Wavefront's specification, appendix B1) that carry nothing
@@ -138,9 +165,11 @@ class ObjReader {
     return std::find(std::begin(kRecords), std::end(kRecords), keyword) != std::end(kRecords);
   }
 
-  static std::uint8_t to_byte(double unit) {
-    const double clamped = std::isfinite(unit) ? std::clamp(unit, 0.0, 1.0) : 0.0;
-    return static_cast<std::uint8_t>(std::lround(clamped * 255.0));
+  //! A colour channel from 0..1, or from 0..255 when `bytes`.
+  static std::uint8_t to_byte(double value, bool bytes) {
+    const double scaled = bytes ? value : value * 255.0;
+    const double clamped = std::isfinite(scaled) ? std::clamp(scaled, 0.0, 255.0) : 0.0;
+    return static_cast<std::uint8_t>(std::lround(clamped));
   }
 
   static std::string clip(std::string_view text) {
@@ -270,6 +299,7 @@ class ObjReader {
   std::size_t texture_coordinates_ = 0, normals_ = 0;
   const ObjIndexOutOfRange* locate_ = nullptr;              // see locate()
   bool alpha_given_ = false;                                // some 'v' line has r g b a
+  std::size_t w_not_one_ = 0, values_no_colour_ = 0;        // see vertex()
   static constexpr std::ptrdiff_t kReleaseEvery = 8 << 20;  // bytes of the map kept behind
   const char* released_;
 };
@@ -394,6 +424,8 @@ bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attr
     attributes->normals += part.attributes.normals;
     for (std::string& library : part.attributes.material_libraries)
       attributes->material_libraries.push_back(std::move(library));
+    for (const NotKept& n : part.attributes.not_kept)
+      add_not_kept(*attributes, n);
     for (FaceGroup& group : part.attributes.face_groups) {
       group.first_face += face_base;
       attributes->face_groups.push_back(std::move(group));

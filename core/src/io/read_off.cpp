@@ -217,11 +217,18 @@ class OffReader {
             note_color(values, integers, ColorOf::vertex, static_cast<Index>(v));
           else if (values.size() == 1)
             ++info_.color_map_indices;
+          else if (!values.empty())
+            ++vertex_values_no_colour_;
         }
         if (want_colors) {
           push_color(attributes_->vertex_colors, attributes_->vertex_color_missing,
                      static_cast<std::size_t>(v), given ? &color : nullptr);
         }
+      } else if (!h.colors && want_colors && !in_.at_line_end()) {
+        // Plain OFF: values past x y z [normal] [s t] (a colour needs the C keyword).
+        numbers_to_line_end(rest, integral);
+        if (rest.size() > (h.normals ? 3u : 0u) + (h.texcoords ? 2u : 0u))
+          ++vertex_values_no_colour_;
       }
       in_.next_line();
     }
@@ -272,6 +279,8 @@ class OffReader {
           note_color(rest, integers, ColorOf::face, static_cast<Index>(soup_.num_faces() - 1));
         else if (rest.size() == 1)
           ++info_.color_map_indices;
+        else if (!rest.empty())
+          ++face_values_no_colour_;
       }
       in_.next_line();
     }
@@ -282,6 +291,7 @@ class OffReader {
            ": '" + clip(in_.word()) + "' (a false face count, or text after the mesh)");
     }
     if (want_colors) {
+      note_not_kept(h, static_cast<std::size_t>(nv));
       attributes_->vertex_color_channels = vertex_alpha_given_ ? kRgbaChannels : kRgbChannels;
       attributes_->face_color_channels = face_alpha_given_ ? kRgbaChannels : kRgbChannels;
     }
@@ -312,6 +322,32 @@ class OffReader {
       const std::string_view text(start, static_cast<std::size_t>(in_.position() - start));
       integral.push_back(text.find_first_of(".eEnN") == std::string_view::npos);
       values.push_back(x);
+    }
+  }
+
+  // What the file holds that is read past (with attributes only): normals, texture coordinates,
+  // values after a vertex or face that are no colour.
+  void note_not_kept(const OffHeader& h, std::size_t vertices) {
+    auto& not_kept = attributes_->not_kept;
+    if (h.normals && vertices > 0)
+      not_kept.push_back({"OFF vertex normals (NOFF)", vertices, "vertex"});
+    if (h.texcoords && vertices > 0)
+      not_kept.push_back({"OFF texture coordinates (ST)", vertices, "vertex"});
+    if (vertex_values_no_colour_ > 0) {
+      not_kept.push_back(
+          {std::string("OFF values after a vertex that are no colour (") +
+               (h.colors ? "not 1, 3 or 4 numbers" : "plain OFF: colours need COFF") + ")",
+           vertex_values_no_colour_, "vertex line"});
+    }
+    if (face_values_no_colour_ > 0) {
+      not_kept.push_back(
+          {"OFF values after a face's corners that are no colour (not 1, 3 or 4 "
+           "numbers)",
+           face_values_no_colour_, "face line"});
+    }
+    if (binary_face_colours_ > 0) {
+      not_kept.push_back(
+          {"binary OFF face colours (Geomview's layout)", binary_face_colours_, "face"});
     }
   }
 
@@ -456,13 +492,18 @@ class OffReader {
         corners.push_back(static_cast<Index>(index));
       }
       add_face(corners);
-      if (layout.color_counts)  // checked by fits(): a count of at most 4, then the floats
-        p += 4 * (std::uint64_t(word()));
+      if (layout.color_counts) {  // checked by fits(): a count of at most 4, then the floats
+        const std::uint32_t colour_values = word();
+        binary_face_colours_ += colour_values > 0 ? 1 : 0;
+        p += 4 * std::uint64_t(colour_values);
+      }
     }
     if (p != end) {
       fail("binary OFF: " + std::to_string(left()) +
            " bytes follow its last face (neither OpenMesh's layout nor Geomview's fits the file)");
     }
+    if (attributes_ != nullptr)
+      note_not_kept(h, nv);
   }
 
   const MappedFile& file_;
@@ -473,7 +514,9 @@ class OffReader {
   const char* released_ = file_.data();
   bool unit_colors_seen_ = false;  //!< some colour was written as floats (0..1)
   bool vertex_alpha_given_ = false, face_alpha_given_ = false;  //!< some colour had 4 values
-  std::vector<std::pair<ColorOf, Index>> ambiguous_colors_;     //!< integer colours all <= 1
+  std::size_t vertex_values_no_colour_ = 0, face_values_no_colour_ = 0;  //!< see note_not_kept
+  std::size_t binary_face_colours_ = 0;  //!< Geomview binary faces with a colour
+  std::vector<std::pair<ColorOf, Index>> ambiguous_colors_;  //!< integer colours all <= 1
 };
 
 }  // namespace

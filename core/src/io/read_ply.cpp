@@ -215,12 +215,39 @@ class PlyReader {
       std::vector<Role> roles;
       for (const PlyProperty& p : e.properties)
         roles.push_back(role_of(e, p));
+      if (attributes_ != nullptr && e.count > 0)
+        note_not_kept(e, roles);
       if (e.name == "vertex")
         read_vertices(e, roles, source);
       else
         read_records(e, roles, source);
       if constexpr (std::is_same_v<Source, BinarySource>)  // what is read is not needed again
         file_.release_before(reinterpret_cast<const char*>(source.position()));
+    }
+  }
+
+  //! The properties of vertices and faces, and the elements, that are read past (an `edge`
+  //! element is counted in ReadInfo::dangling_edges instead).
+  void note_not_kept(const PlyElement& e, const std::vector<Role>& roles) {
+    const bool polygons = e.name == "face" || e.name == "tristrips";
+    if (e.name != "vertex" && !polygons) {
+      if (e.name != "edge")
+        attributes_->not_kept.push_back({"PLY element '" + e.name + "'", e.count, "item"});
+      return;
+    }
+    std::string names;
+    std::size_t skipped = 0;
+    for (std::size_t k = 0; k < roles.size(); ++k) {
+      if (roles[k] != Role::skip)
+        continue;
+      names += (skipped++ == 0 ? "" : ", ") + e.properties[k].name;
+    }
+    if (skipped > 0) {
+      attributes_->not_kept.push_back(
+          {"PLY " + e.name + (skipped == 1 ? " property " : " properties ") + names, e.count,
+           e.name == "vertex" ? "vertex"
+           : e.name == "face" ? "face"
+                              : "strip"});
     }
   }
 

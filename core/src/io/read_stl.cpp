@@ -9,6 +9,7 @@
 #include "meshbridge/errors.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -38,14 +39,22 @@ bool equals_ignoring_case(std::string_view word, std::string_view lower) {
 //! The stretch of the file a binary STL reader keeps mapped behind and ahead of it.
 constexpr std::size_t kWindow = std::size_t(8) << 20;
 
-void read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup, ReadInfo& info) {
+//! Returns how many triangles have a non-zero attribute word (the 16 bits after each triangle:
+//! 0 by the format, a colour in some programs; not kept).
+std::size_t read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup,
+                        ReadInfo& info) {
   const auto* bytes = reinterpret_cast<const unsigned char*>(file.data()) + 84;
   info.declared_faces = triangles;
   info.declared_vertices = 3 * std::size_t(triangles);
-  const auto keys = [&file, bytes](std::size_t first, std::size_t count, FloatKey* out) {
+  std::atomic<std::size_t> attribute_words{0};
+  const auto keys = [&file, bytes, &attribute_words](std::size_t first, std::size_t count,
+                                                     FloatKey* out) {
+    std::size_t used = 0;
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = first + i;
       const unsigned char* p = bytes + 50 * (c / 3) + 12 + 12 * (c % 3);  // after the normal
+      if (c % 3 == 2)
+        used += (p[12] | p[13]) != 0;  // the attribute word after the last corner
       const std::uint32_t bits[3] = {little_endian_u32(p), little_endian_u32(p + 4),
                                      little_endian_u32(p + 8)};
       // All exponent bits set: infinite or NaN.
@@ -58,6 +67,8 @@ void read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup, Re
       for (int k = 0; k < 3; ++k)
         out[i][k] = bits[k] == 0x80000000u ? 0 : bits[k];  // -0 is +0 (float_key)
     }
+    if (used > 0)
+      attribute_words += used;
     // Every 8 MiB of the file, the 8 MiB read before go back to the kernel (see
     // MappedFile::release_before), so the map adds a window to the peak memory, not the whole file,
     // and the 8 MiB after the next are mapped in one call. (At the start of a part that window may
@@ -73,6 +84,7 @@ void read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup, Re
   };
   file.prefault_between(file.data(), file.data() + std::min(file.size(), 2 * kWindow));
   weld_triangle_corners(3 * std::size_t(triangles), keys, soup, reading_threads());
+  return attribute_words.load();
 }
 
 // ASCII STL, read as the grammar it is: `solid NAME`, then facets (`facet normal x y z`,
@@ -156,12 +168,16 @@ void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
 
 }  // namespace
 
-void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes*) {
+void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
   const auto* head = reinterpret_cast<const unsigned char*>(file.data());
   const std::size_t size = file.size();
   const std::uint32_t triangles = size >= 84 ? little_endian_u32(head + 80) : 0;
   if (size >= 84 && 84 + 50 * std::uint64_t(triangles) == size) {
-    read_binary(file, triangles, soup, info);
+    const std::size_t used = read_binary(file, triangles, soup, info);
+    if (attributes != nullptr && used > 0) {
+      attributes->not_kept.push_back(
+          {"binary STL facet attribute words (colours in some programs)", used, "facet"});
+    }
     return;
   }
   TextScanner probe(after_byte_order_mark(file.data(), file.end()), file.end());
