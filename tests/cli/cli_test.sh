@@ -290,8 +290,15 @@ atomic_output)
     expect_in "$work/err" "is the input file itself; repair would replace it (pass --in-place"
   done
   cmp -s "$models/twocubes.obj" "$work/self.obj" || fail "the input changed"
+  chmod 0640 "$work/self.obj"
   expect_exit 0 "$mb" repair "$work/self.obj" "$work/self.obj" --in-place
   expect_in "$work/out" "vertices: 14 in, 16 out"
+  [ "$(stat -c %a "$work/self.obj")" = 640 ] || fail "--in-place changed the mode to $(stat -c %a "$work/self.obj")"
+  # A replaced output keeps its permissions, as a shell redirection would (0600 stays private).
+  echo old >"$work/private.ply"
+  chmod 0600 "$work/private.ply"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/private.ply"
+  [ "$(stat -c %a "$work/private.ply")" = 600 ] || fail "the output's mode became $(stat -c %a "$work/private.ply")"
   expect_exit 0 "$mb" check "$work/self.obj"
   # A pipe or a device is written in place, never replaced by a file (as root, renaming over
   # /dev/stdout or a device node would replace it); a symbolic link stays one.

@@ -125,6 +125,14 @@ void write_atomically(const std::string& path, const std::function<void(AtomicOu
     std::remove(temporary.c_str());
     throw;
   }
+  // The file replaced keeps its permissions (and, where allowed, its owner), as a shell
+  // redirection into it would: a 0600 output does not become world-readable.
+  struct stat replaced {};
+  if (::stat(target.c_str(), &replaced) == 0 && S_ISREG(replaced.st_mode)) {
+    if (::chown(temporary.c_str(), replaced.st_uid, replaced.st_gid) != 0)
+      (void)::chown(temporary.c_str(), static_cast<uid_t>(-1), replaced.st_gid);  // group only
+    (void)::chmod(temporary.c_str(), replaced.st_mode & 07777);
+  }
   if (std::rename(temporary.c_str(), target.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
     std::remove(temporary.c_str());
