@@ -162,7 +162,8 @@ def write(path: Union[str, "os.PathLike[str]"], mesh: Any, faces: Optional[Faces
     :class:`UserWarning` says how many (as ``meshbridge repair`` warns); write 3MF, PLY, OBJ or
     OFF to keep the repair.
 
-    Raises :class:`WriteError` naming the file (also for non-manifold input: repair first).
+    Any soup is written as it is (a non-manifold one too: repair it first to write a manifold
+    mesh). Raises :class:`WriteError` naming the file.
     """
     target = _path(path)
     edges, vertices = _core.write(target, _soup(mesh, faces))

@@ -272,8 +272,10 @@ TEST_F(HostileFile, obj_index_out_of_range) {
 TEST_F(HostileFile, obj_index_zero_and_relative_index_before_the_first_vertex) {
   expect_error<ReadError>("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n",
                           "line 4: face corner '0': OBJ indices start at 1");
-  expect_error<ReadError>("relative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -7\n",
-                          "line 4: face corner '-7' refers to vertex -3, before the first vertex");
+  expect_error<ReadError>(
+      "relative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -7\n",
+      "line 4: face corner '-7' counts 7 vertices back, before the first vertex: "
+      "only 3 vertices come before it");
 }
 
 TEST_F(HostileFile, obj_index_too_large_for_any_integer) {

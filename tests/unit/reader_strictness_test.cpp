@@ -259,6 +259,25 @@ TEST_F(ReaderStrictness, off_without_its_keyword_is_plain_off_and_one_line_is_na
             std::string::npos);
   EXPECT_NE(error_of("junk.off", "hello 4 4 0\n").find("not an OFF file: it starts with 'hello'"),
             std::string::npos);
+  // A vertex line missing: the first face is read as the last vertex, and the message says so.
+  EXPECT_NE(error_of("short.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n")
+                .find("OFF face 2 of 2 is missing (line 8): the file ends (a false count; or fewer "
+                      "vertex lines than the 4 declared, so that a face was read as one)"),
+            std::string::npos);
+}
+
+TEST_F(ReaderStrictness, cr_line_ends_alone_are_named) {
+  for (const char* name : {"mac.obj", "mac.off"}) {
+    const std::string text = std::string(name) == "mac.obj"
+                                 ? "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r"
+                                 : "OFF\r3 1 0\r0 0 0\r1 0 0\r0 1 0\r3 0 1 2\r";
+    EXPECT_NE(error_of(name, text).find("its lines end in CR alone (classic Mac OS text)"),
+              std::string::npos)
+        << error_of(name, text);
+  }
+  // CRLF is read as it is.
+  EXPECT_EQ(error_of("dos.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n"),
+            "read without error");
 }
 
 }  // namespace

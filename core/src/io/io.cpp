@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <string>
 
 namespace meshbridge {
@@ -79,6 +80,13 @@ void check_attributes(const std::string& path, const IndexedMesh& mesh,
   check_flags(attributes->face_color_missing.size(), attributes->face_colors.size(), "face");
 }
 
+// True if the start of a text file has line ends but every one is a CR alone (no LF at all).
+bool has_cr_line_ends_only(const detail::MappedFile& file) {
+  const std::size_t n = std::min<std::size_t>(file.size(), std::size_t(1) << 16);
+  return std::memchr(file.data(), '\n', n) == nullptr &&
+         std::memchr(file.data(), '\r', n) != nullptr;
+}
+
 // A face corner past the file's last vertex is a malformed file: throws the ReadError that names
 // the first one (OBJ: by its line, read again; the reader could not tell, as an OBJ face may name
 // a vertex written after it). Returns if there is none.
@@ -110,6 +118,11 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
   if (format == Format::unknown)
     throw ReadError(path + ": unknown format (expected .obj, .off, .ply, .stl or .3mf)");
 
+  if ((format == Format::obj || format == Format::off) && has_cr_line_ends_only(file)) {
+    throw ReadError(path +
+                    ": its lines end in CR alone (classic Mac OS text); MeshBridge reads "
+                    "LF or CRLF line ends: convert the file first (tr '\\r' '\\n')");
+  }
   Soup soup;
   ReadInfo counts;
   if (attributes != nullptr)

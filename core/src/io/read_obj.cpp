@@ -230,9 +230,9 @@ class ObjReader {
       return 0;
     }
     if (-index > count) {
-      fail(std::string(what) + " corner '" + clip(text) + "' refers to vertex " +
-           std::to_string(count + index + 1) + ", before the first vertex (" +
-           std::to_string(count) + " so far)");
+      fail(std::string(what) + " corner '" + clip(text) + "' counts " + std::to_string(-index) +
+           " vertices back, before the first vertex: only " +
+           counted(std::size_t(count), "vertex") + " come before it");
     }
     return static_cast<Index>(count + index);
   }

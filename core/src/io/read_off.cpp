@@ -239,7 +239,10 @@ class OffReader {
       std::int64_t n = 0;
       if (in_.at_end() || !in_.integer(n)) {
         fail("OFF face " + std::to_string(f + 1) + " of " + std::to_string(nf) + " is missing" +
-             at_line() + ": the file ends or has no corner count there");
+             at_line() +
+             (in_.at_end() ? ": the file ends (a false count; or fewer vertex lines than the " +
+                                 std::to_string(nv) + " declared, so that a face was read as one)"
+                           : ": no corner count there"));
       }
       if (n < 0)
         fail("OFF face " + std::to_string(f + 1) + " has a negative corner count " +
