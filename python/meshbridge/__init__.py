@@ -139,6 +139,10 @@ def read(path: Union[str, "os.PathLike[str]"]) -> Soup:
     of lists), ``corner_vertices``/``face_begin`` (the polygons as flat arrays), ``path`` and
     ``read_info`` (what the file declared). Its arrays are read-only views.
 
+    What the reader did not keep as it was (a pinched polygon split, a record with fewer than 3
+    corners set aside, dangling edges, skipped lines) is a :class:`UserWarning`, as the CLI warns,
+    and ``soup.reading`` in words.
+
     A Soup holds positions and polygons only: colours, OBJ groups, materials and texture
     coordinates stay in the file (:func:`meshbridge.batch.run_batch` and the CLI carry them to
     the output).
@@ -147,7 +151,10 @@ def read(path: Union[str, "os.PathLike[str]"]) -> Soup:
     of range, named by line where the format has lines) or :class:`InvalidMeshError` (a
     non-finite coordinate), naming the file.
     """
-    return _core.read(_path(path))
+    soup = _core.read(_path(path))
+    if soup.reading is not None:  # as the CLI warns: a split, set-aside or skipped record
+        warnings.warn(f"{soup.path}: {soup.reading}", UserWarning, stacklevel=2)
+    return soup
 
 
 def write(path: Union[str, "os.PathLike[str]"], mesh: Any, faces: Optional[Faces] = None) -> None:

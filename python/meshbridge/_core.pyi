@@ -68,6 +68,9 @@ class Soup:
     @property
     def read_info(self) -> Optional[dict[str, Any]]:
         """What the file declared next to what was read; None when built from arrays."""
+    @property
+    def reading(self) -> Optional[str]:
+        """What the reader did not keep as it was, in words; None when it kept every record."""
 
 def read(path: str) -> Soup: ...
 def write(path: str, soup: Soup) -> Tuple[int, int]: ...

@@ -162,6 +162,14 @@ PYBIND11_MODULE(_core, m) {
                                                      : py::object(py::str(s.path));
                              })
       .def_property_readonly(
+          "reading",
+          [](const PySoup& s) -> py::object {
+            if (s.path.empty() || !s.info.changed_anything())
+              return py::none();
+            return py::str(describe_reading(s.info));
+          },
+          "What the reader did not keep as it was (describe_reading(), as the CLI warns), or None")
+      .def_property_readonly(
           "read_info",
           [](const PySoup& s) -> py::object {
             if (s.path.empty())

@@ -148,6 +148,17 @@ def test_read_write_round_trip(tmp_path):
     assert meshbridge.read(tmp_path / "plain.off").num_faces == 24
 
 
+def test_read_warns_about_records_not_kept_as_they_are(tmp_path):
+    path = tmp_path / "pinched.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 1 4 5\nf 1 2\n")
+    with pytest.warns(UserWarning, match=r"pinched.obj: 2 face records: 0 kept, 1 split"):
+        soup = meshbridge.read(path)
+    assert soup.reading.startswith("2 face records: 0 kept, 1 split (pinched")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a file read as it is: no warning
+        assert meshbridge.read(MODELS / "twocubes.obj").reading is None
+
+
 def test_stl_that_welds_the_repair_back_warns_with_counts(tmp_path):
     result = meshbridge.repair(meshbridge.read(MODELS / "twocubes.obj"))
     with pytest.warns(UserWarning, match=r"re-creates 1 singular edge and 2 singular vertices"):
