@@ -66,6 +66,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         "vertex colours do not match the vertices");
     fuzz::check(attributes.face_colors.empty() || attributes.face_colors.size() == soup.num_faces(),
                 "face colours do not match the faces");
+    fuzz::check(attributes.vertex_color_missing.empty() ||
+                    attributes.vertex_color_missing.size() == attributes.vertex_colors.size(),
+                "vertex missing-colour flags do not match the colours");
+    fuzz::check(attributes.face_color_missing.empty() ||
+                    attributes.face_color_missing.size() == attributes.face_colors.size(),
+                "face missing-colour flags do not match the colours");
   } catch (const ReadError&) {
   } catch (const InvalidSoupError&) {
   }
@@ -95,19 +101,33 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::fprintf(stderr, "%s\n", error.what());
     fuzz::fail("write_mesh failed on a repaired mesh");
   }
+  const WrittenOutput written = describe_written(out, result.mesh.soup, attributes);
   Soup back;
+  MeshAttributes back_attributes;
   try {
-    back = read_soup(out);
+    back = read_soup(out, nullptr, &back_attributes);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "%s\n", error.what());
     fuzz::fail("a written mesh does not read back");
   }
   std::remove(out.c_str());
+  // Colours read back cover their elements, and missing-colour flags their colours.
+  const auto& b = back_attributes;
+  fuzz::check(b.vertex_colors.empty() || b.vertex_colors.size() == back.num_vertices(),
+              "vertex colours read back do not cover the vertices");
+  fuzz::check(b.face_colors.empty() || b.face_colors.size() == back.num_faces(),
+              "face colours read back do not cover the faces");
+  fuzz::check(
+      b.vertex_color_missing.empty() || b.vertex_color_missing.size() == b.vertex_colors.size(),
+      "vertex missing-colour flags of another size");
+  fuzz::check(b.face_color_missing.empty() || b.face_color_missing.size() == b.face_colors.size(),
+              "face missing-colour flags of another size");
   if (output == 3) {
     std::size_t triangles = 0;
     for (std::size_t f = 0; f < result.mesh.soup.num_faces(); ++f)
       triangles += result.mesh.soup.arity(f) - 2;
     fuzz::check(back.num_faces() == triangles, "triangles lost writing STL");
+    fuzz::check(written.triangles == triangles, "describe_written miscounts the STL triangles");
     return 0;
   }
   fuzz::check(back.num_faces() == result.mesh.soup.num_faces(), "faces lost writing");
