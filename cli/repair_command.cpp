@@ -75,8 +75,16 @@ int run_repair(RepairArguments& arguments) {
   // A report on standard output ('-', /dev/stdout or the file stdout goes to) is printed there,
   // and the summary moves to standard error, so that stdout holds the JSON alone.
   const bool report_to_stdout = arguments.report == "-" || is_standard_output(arguments.report);
-  if (!arguments.report.empty() && !report_to_stdout)
+  if (!arguments.report.empty() && !report_to_stdout) {
+    // The report must not replace the mesh read or the mesh written.
+    for (const std::string* mesh : {&in, &out}) {
+      std::error_code same;
+      if (arguments.report == *mesh || std::filesystem::equivalent(arguments.report, *mesh, same))
+        throw UsageError(arguments.report + ": --report names the " +
+                         (mesh == &in ? "input" : "output") + " mesh; name another file");
+    }
     check_writable_file(arguments.report);
+  }
   if (!arguments.before_after.empty()) {
     if (!ends_with_png(arguments.before_after)) {
       throw UsageError(arguments.before_after + ": --before-after is written as PNG; name it .png");

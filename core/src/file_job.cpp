@@ -148,14 +148,21 @@ BatchPlan plan_batch(const std::string& in_dir, const std::string& out_dir,
   std::set<std::string> natural, taken;
   for (const auto& named_file : named)
     natural.insert(in_format(named_file.first).generic_string());
+  // A file already in the output format keeps its own name: with --in-place its result replaces
+  // it, never another file's (a.obj and a.ply to PLY: a.ply stays a.ply, a.obj becomes a-obj.ply).
+  for (const auto& named_file : named) {
+    if (in_format(named_file.first).generic_string() == named_file.first)
+      taken.insert(named_file.first);
+  }
   for (const auto& [name, file] : named) {
     FileJob job;
     job.input = file.string();
     job.name = name;
     fs::path relative = in_format(name);
-    if (taken.count(relative.generic_string()) > 0) {
+    const bool own_name = relative.generic_string() == name;
+    if (!own_name && taken.count(relative.generic_string()) > 0) {
       // a.obj and a.off both going to a.ply: the later one becomes a-off.ply, or a-off-2.ply
-      // (-3, ...) when a-off.ply is another file's output.
+      // (-3, ...) when a-off.ply is another file's output (or a file of the folder).
       const std::string base =
           relative.stem().string() + "-" + fs::path(name).extension().string().substr(1);
       relative.replace_filename(base + "." + format);

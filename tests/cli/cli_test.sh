@@ -289,6 +289,11 @@ atomic_output)
     expect_exit 2 "$mb" repair "$work/self.obj" "$same"
     expect_in "$work/err" "is the input file itself; repair would replace it (pass --in-place"
   done
+  # Nor may --report name IN or OUT.
+  for same in "$work/self.obj" "$work/./self_link.obj" "$work/report_out.obj"; do
+    expect_exit 2 "$mb" repair "$work/self.obj" "$work/report_out.obj" --report "$same"
+    expect_in "$work/err" "--report names the"
+  done
   cmp -s "$models/twocubes.obj" "$work/self.obj" || fail "the input changed"
   chmod 0640 "$work/self.obj"
   expect_exit 0 "$mb" repair "$work/self.obj" "$work/self.obj" --in-place

@@ -73,6 +73,23 @@ TEST_F(FileJobTest, renamed_outputs_never_take_another_files_output) {
                          "twocubes.off -> twocubes-off-3.ply"}));
 }
 
+// A file already in the output format keeps its own name, so that with --in-place its result
+// replaces it and not another file's.
+TEST_F(FileJobTest, a_file_in_the_output_format_keeps_its_own_name) {
+  fs::copy_file(kModels / "twocubes.off", in_ / "twocubes.ply.off");
+  std::ofstream(in_ / "twocubes.ply") << "not read by the plan\n";
+  FileJobOptions options;
+  options.format = "ply";
+  const BatchPlan plan = plan_batch(in_.string(), in_.string(), options, /*in_place=*/true);
+  std::vector<std::string> outputs;
+  for (const FileJob& job : plan.jobs)
+    outputs.push_back(job.name + " -> " + job.output_name);
+  EXPECT_EQ(outputs, (std::vector<std::string>{
+                         "sub/ico.obj -> sub/ico.ply", "twocubes.obj -> twocubes-obj.ply",
+                         "twocubes.off -> twocubes-off.ply", "twocubes.ply -> twocubes.ply",
+                         "twocubes.ply.off -> twocubes.ply.ply"}));
+}
+
 TEST_F(FileJobTest, plan_refuses_outdir_equal_to_or_inside_indir) {
   EXPECT_THROW(plan_batch(in_.string(), in_.string(), {}), std::invalid_argument);
   EXPECT_THROW(plan_batch(in_.string(), (in_ / "sub" / "out").string(), {}), std::invalid_argument);
