@@ -117,7 +117,8 @@ int run_repair(RepairArguments& arguments) {
     apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
                    separate_summary);
     write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
-    written = describe_written(out, result.mesh.soup, attributes);
+    written =
+        describe_written(out, result.mesh.soup, attributes, result.report.gaps.vertices_welded);
     std::error_code status_error;  // (a device or pipe cannot be read back)
     if (is_stl_path(out) && std::filesystem::is_regular_file(out, status_error)) {
       // Only the picture reads the mesh again: without one it is freed before the file is read

@@ -201,8 +201,19 @@ TEST_F(ColourFidelity, describe_unwritten_names_what_each_format_cannot_hold) {
           "neither",
           "vertex colours not written: STL holds none", "face colours not written: STL holds none",
           "OBJ groups and materials not written (1 o/g/usemtl line, 0 mtllib lines): STL "
-          "holds none",
-          "positions rounded from 64-bit to 32-bit floats: STL holds no more"}));
+          "holds none"}));
+  // What only the mesh tells: positions that are no float, colours of welded vertices.
+  Soup soup;
+  soup.positions = {Point(0.1, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
+  soup.add_polygon({0, 1, 2});
+  const WrittenOutput stl = describe_written("x.stl", soup, a, 2);
+  EXPECT_EQ(stl.triangles, 1u);
+  EXPECT_EQ(stl.left_out.back(),
+            "positions of 1 vertex rounded to 32-bit floats: STL holds no more");
+  EXPECT_EQ(stl.left_out[stl.left_out.size() - 2],
+            "colours of 2 welded vertices not written: each takes the colour of the vertex it "
+            "welded into");
+  EXPECT_EQ(describe_written("x.ply", soup, MeshAttributes()).left_out.size(), 0u);
 }
 
 TEST_F(ColourFidelity, obj_colours_written_0_to_255_are_read_as_such) {
@@ -265,6 +276,18 @@ TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
   a.not_kept = ply;
   EXPECT_EQ(describe_unwritten("x.ply", a).front(),
             "PLY vertex properties nx, s, on 3 vertices: not written (MeshBridge reads past them)");
+}
+
+TEST_F(ColourFidelity, obj_group_lines_after_the_last_face_are_written_back) {
+  const Reading r = read(write("trailing.obj",
+                               "g a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
+                               "g trailing\nusemtl unused\n"));
+  const std::vector<std::string> lines = lines_of(write_back(r, "trailing_out.obj"));
+  ASSERT_EQ(lines.size(), 8u);
+  EXPECT_EQ(lines[4], "g a");
+  EXPECT_EQ(lines[5], "f 1 2 3");
+  EXPECT_EQ(lines[6], "g trailing");
+  EXPECT_EQ(lines[7], "usemtl unused");
 }
 
 TEST_F(ColourFidelity, write_mesh_refuses_missing_flags_of_another_size) {

@@ -370,7 +370,7 @@ TEST_F(HostileFile, obj_material_library_naming_an_endless_file) {
 
 TEST_F(HostileFile, off_header_claims_more_vertices_than_present) {
   expect_error<ReadError>("few_vertices.off", "OFF\n5 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-                          "OFF vertex 5 of 5: expected 3 numbers (line 7), the file ends");
+                          "OFF vertex 5 of 5: expected 3 numbers, but the file ends");
 }
 
 TEST_F(HostileFile, off_header_claims_more_faces_than_present) {

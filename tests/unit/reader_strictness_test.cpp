@@ -261,7 +261,7 @@ TEST_F(ReaderStrictness, off_without_its_keyword_is_plain_off_and_one_line_is_na
             std::string::npos);
   // A vertex line missing: the first face is read as the last vertex, and the message says so.
   EXPECT_NE(error_of("short.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n")
-                .find("OFF face 2 of 2 is missing (line 8): the file ends (a false count; or fewer "
+                .find("OFF face 2 of 2 is missing: the file ends (a false count; or fewer "
                       "vertex lines than the 4 declared, so that a face was read as one)"),
             std::string::npos);
 }

@@ -166,12 +166,12 @@ Soup read_soup(const std::string& path, ReadInfo* info = nullptr,
 MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& mesh);
 
 //! What write_mesh() leaves out when it writes a mesh read with `attributes` to `path` (format
-//! by extension): one phrase per kind, e.g. "24 texture coordinates (vt) and 8 normals (vn) not
-//! written: MeshBridge writes neither", "face colours not written: STL holds none", "3 vertices
-//! without a colour written white: PLY gives every vertex a colour or none", "OBJ groups and
-//! materials not written (2 o/g/usemtl lines, 1 mtllib line): PLY holds none", "positions
-//! rounded from 64-bit to 32-bit floats: STL holds no more". Empty when the output holds all
-//! MeshBridge read. For a warning before or after writing (the CLI's `repair` prints each).
+//! by extension), as far as the attributes tell: one phrase per kind, e.g. "24 texture
+//! coordinates (vt) and 8 normals (vn) not written: MeshBridge writes neither", "face colours not
+//! written: STL holds none", "3 vertices without a colour written white: PLY gives every vertex a
+//! colour or none", "OBJ groups and materials not written (2 o/g/usemtl lines, 1 mtllib line):
+//! PLY holds none", and each NotKept of the attributes. Empty when the output holds all
+//! MeshBridge read. describe_written() adds what only the mesh tells (rounding to floats).
 std::vector<std::string> describe_unwritten(const std::string& path,
                                             const MeshAttributes& attributes);
 
@@ -186,9 +186,12 @@ struct WrittenOutput {
 };
 
 //! What write_mesh(path, mesh with `soup`, &attributes) makes of it: the triangles and fanned
-//! polygons of a format that holds triangles only (.stl, .3mf), and describe_unwritten().
+//! polygons of a format that holds triangles only (.stl, .3mf); describe_unwritten(); there, the
+//! vertices with a coordinate that is not exactly a 32-bit float ("positions of 12 vertices
+//! rounded to 32-bit floats: STL holds no more"); and, when the input had vertex colours and
+//! repair welded `vertices_welded` vertices (RepairReport::gaps), that their colours gave way.
 WrittenOutput describe_written(const std::string& path, const Soup& soup,
-                               const MeshAttributes& attributes);
+                               const MeshAttributes& attributes, std::size_t vertices_welded = 0);
 
 //! True if write_mesh and write_file_atomically write `path` in place rather than through a
 //! temporary file renamed over it: a path under /dev/ (/dev/stdout, /dev/null) or an existing

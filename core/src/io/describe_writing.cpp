@@ -84,23 +84,36 @@ std::vector<std::string> describe_unwritten(const std::string& path,
                    counted(attributes.material_libraries.size(), "mtllib line") + "): " + name +
                    " holds none");
   }
-  if (attributes.double_precision && (format == Format::stl || format == Format::threemf))
-    lost.push_back("positions rounded from 64-bit to 32-bit floats: " + name + " holds no more");
   return lost;
 }
 
 WrittenOutput describe_written(const std::string& path, const Soup& soup,
-                               const MeshAttributes& attributes) {
+                               const MeshAttributes& attributes, std::size_t vertices_welded) {
   WrittenOutput written;
   const detail::Format format = detail::format_of(path);
+  written.left_out = describe_unwritten(path, attributes);
+  if (vertices_welded > 0 && !attributes.vertex_colors.empty()) {
+    written.left_out.push_back("colours of " + counted(vertices_welded, "welded vertex") +
+                               " not written: each takes the colour of the vertex it welded into");
+  }
   if (format == detail::Format::stl || format == detail::Format::threemf) {
     for (std::size_t f = 0; f < soup.num_faces(); ++f) {
       const std::size_t n = soup.arity(f);
       written.triangles += n - 2;
       written.polygons_fanned += n > 3 ? 1 : 0;
     }
+    std::size_t rounded = 0;  // vertices with a coordinate that is not exactly a float
+    for (const Point& p : soup.positions) {
+      rounded += static_cast<double>(static_cast<float>(p[0])) != p[0] ||
+                 static_cast<double>(static_cast<float>(p[1])) != p[1] ||
+                 static_cast<double>(static_cast<float>(p[2])) != p[2];
+    }
+    if (rounded > 0) {
+      written.left_out.push_back("positions of " + counted(rounded, "vertex") +
+                                 " rounded to 32-bit floats: " + name_of(format) +
+                                 " holds no more");
+    }
   }
-  written.left_out = describe_unwritten(path, attributes);
   return written;
 }
 

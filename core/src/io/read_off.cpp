@@ -80,7 +80,10 @@ class OffReader {
       file_.release_before(released_);
     }
   }
-  std::string at_line() const { return " (line " + std::to_string(in_.line()) + ")"; }
+  std::string at_line() const {
+    return in_.at_end() ? std::string(" (at the end of the file)")
+                        : " (line " + std::to_string(in_.line()) + ")";
+  }
 
   OffHeader read_header() {
     in_.skip_space_and_comments();
@@ -194,9 +197,9 @@ class OffReader {
         in_.skip_space_and_comments();
         if (!in_.number(x)) {
           fail("OFF vertex " + std::to_string(v + 1) + " of " + std::to_string(nv) +
-               ": expected 3 numbers" + at_line() +
-               (in_.at_end() ? ", the file ends (a truncated file or a false count)"
-                             : ", found '" + clip(in_.word()) + "'"));
+               ": expected 3 numbers" +
+               (in_.at_end() ? ", but the file ends (a truncated file or a false count)"
+                             : at_line() + ", found '" + clip(in_.word()) + "'"));
         }
       }
       soup_.positions.push_back(Point(xyz[0], xyz[1], xyz[2]));
@@ -239,10 +242,9 @@ class OffReader {
       std::int64_t n = 0;
       if (in_.at_end() || !in_.integer(n)) {
         fail("OFF face " + std::to_string(f + 1) + " of " + std::to_string(nf) + " is missing" +
-             at_line() +
              (in_.at_end() ? ": the file ends (a false count; or fewer vertex lines than the " +
                                  std::to_string(nv) + " declared, so that a face was read as one)"
-                           : ": no corner count there"));
+                           : at_line() + ": no corner count there"));
       }
       if (n < 0)
         fail("OFF face " + std::to_string(f + 1) + " has a negative corner count " +
@@ -290,8 +292,9 @@ class OffReader {
     // A face count lower than the faces given would drop the rest without a word.
     in_.skip_space_and_comments();
     if (!in_.at_end()) {
-      fail("OFF declares " + std::to_string(nf) + " faces, but more follows them" + at_line() +
-           ": '" + clip(in_.word()) + "' (a false face count, or text after the mesh)");
+      fail("OFF declares " + counted(static_cast<std::size_t>(nf), "face") +
+           ", but more follows them" + at_line() + ": '" + clip(in_.word()) +
+           "' (a false face count, or text after the mesh)");
     }
     if (want_colors) {
       note_not_kept(h, static_cast<std::size_t>(nv));

@@ -37,6 +37,7 @@ void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
                                              ? &attributes->face_groups
                                              : nullptr;
   std::size_t current_group = static_cast<std::size_t>(-1);
+  std::size_t written_end = 0;  // one past the last group line written
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     if (groups != nullptr) {
       // The last group starting at or before the input face (none before the first group).
@@ -54,6 +55,7 @@ void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
           for (auto g = first; g != after; ++g)
             text.text(g->name).ch('\n');
           current_group = index;
+          written_end = static_cast<std::size_t>(after - groups->begin());
         }
       }
     }
@@ -62,6 +64,9 @@ void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
       text.ch(' ').number(static_cast<std::uint64_t>(v) + 1);
     text.ch('\n');
   }
+  // Group lines after the input's last face (a trailing "g" or "usemtl") follow the faces.
+  for (std::size_t g = written_end; groups != nullptr && g < groups->size(); ++g)
+    text.text((*groups)[g].name).ch('\n');
   text.flush();
 }
 
