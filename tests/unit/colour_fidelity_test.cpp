@@ -271,6 +271,24 @@ TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
   const auto facets = not_kept_of("a.stl", stl);
   ASSERT_EQ(facets.size(), 1u);
   EXPECT_EQ(facets[0].count, 1u);
+  // ASCII STL solid names, a binary STL header colour, PLY comments.
+  const auto named = not_kept_of("named.stl",
+                                 "solid part A\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                                 "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n");
+  ASSERT_EQ(named.size(), 1u);
+  EXPECT_EQ(named[0].what, "ASCII STL solid names");
+  std::string coloured = stl;
+  coloured.replace(0, 10, "COLOR=\x80\x80\x80\xff");
+  EXPECT_EQ(not_kept_of("colour.stl", coloured).back().what,
+            "binary STL header colour (COLOR=/MATERIAL=)");
+  const auto comments = not_kept_of(
+      "c.ply",
+      "ply\nformat ascii 1.0\ncomment TextureFile tex.png\ncomment written by MeshBridge\n"
+      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  ASSERT_EQ(comments.size(), 1u);
+  EXPECT_EQ(comments[0].count, 1u);  // MeshBridge's own comment is not counted
   // Named for every output, even the format the file came in.
   MeshAttributes a;
   a.not_kept = ply;

@@ -654,15 +654,15 @@ TEST_F(HostileFile, ascii_stl_truncated_and_malformed) {
       " endloop\nendfacet\n";
   expect_read("one.stl", "solid t\n" + facet + "endsolid t\n", 3, 1);
   expect_error<ReadError>("truncated.stl", "solid t\nfacet normal 0 0 1\n outer loop\n  vertex 0 0",
-                          "ASCII STL line 4: facet 0, corner 0 is not 'vertex x y z'");
+                          "ASCII STL line 4: facet 1, corner 1 is not 'vertex x y z'");
   expect_error<ReadError>("two_vertices.stl",
                           "solid t\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n"
                           "  vertex 1 0 0\n endloop\nendfacet\nendsolid t\n",
-                          "ASCII STL line 2: facet 0 has 2 vertices; an STL facet is a triangle");
+                          "ASCII STL line 2: facet 1 has 2 vertices; an STL facet is a triangle");
   expect_error<ReadError>("nan.stl",
                           "solid t\nfacet normal 0 0 1\n outer loop\n  vertex nan 0 0\n"
                           "  vertex 1 0 0\n  vertex 0 1 0\n endloop\nendfacet\nendsolid t\n",
-                          "ASCII STL line 4: facet 0, corner 0 is not");
+                          "ASCII STL line 4: facet 1, corner 1 is not");
 }
 
 TEST_F(HostileFile, unknown_extension_directory_and_missing_file) {

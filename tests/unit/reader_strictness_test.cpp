@@ -117,7 +117,7 @@ TEST_F(ReaderStrictness, ascii_stl_is_read_as_its_grammar) {
   EXPECT_EQ(info.declared_faces, 2u);
   // A facet with four corners is not cut to a triangle.
   EXPECT_NE(error_of("quad.stl", "solid q\n" + facet("outer loop", triangle + "vertex 0 1 0\n"))
-                .find("ASCII STL line 2: facet 0 has 4 vertices; an STL facet is a triangle (3)"),
+                .find("ASCII STL line 2: facet 1 has 4 vertices; an STL facet is a triangle (3)"),
             std::string::npos);
   // A misspelt keyword is named, not skipped with its facet.
   EXPECT_NE(error_of("typo.stl", "solid t\n" + facet("outer lop", triangle))
@@ -127,7 +127,7 @@ TEST_F(ReaderStrictness, ascii_stl_is_read_as_its_grammar) {
                 .find("line 10: 'xyz' where a facet, 'solid' or 'endsolid' was expected"),
             std::string::npos);
   EXPECT_NE(error_of("cut.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n")
-                .find("the file ends inside facet 0 (truncated)"),
+                .find("the file ends inside facet 1 (truncated)"),
             std::string::npos);
 }
 

@@ -136,8 +136,12 @@ PlyHeader parse_ply_header(std::string_view data, const std::string& path) {
     }
     const std::vector<std::string_view> w = words_of(line);
     const std::string at = where + "PLY header line " + std::to_string(line_number) + ": ";
-    if (w.empty() || w[0] == "comment" || w[0] == "obj_info")
+    if (w.empty())
       continue;
+    if (w[0] == "comment" || w[0] == "obj_info") {
+      header.comments += line.find("comment written by MeshBridge") == std::string_view::npos;
+      continue;
+    }
     if (w[0] == "end_header") {
       if (!has_format)
         throw ReadError(where + "the PLY header has no format line");

@@ -48,6 +48,8 @@ struct PlyHeader {
   Format format = Format::ascii;
   std::vector<PlyElement> elements;
   std::size_t body = 0;  //!< byte offset of the first data byte after "end_header\n"
+  //! `comment` and `obj_info` lines, MeshBridge's own "comment written by MeshBridge" aside.
+  std::size_t comments = 0;
 };
 
 //! Parses the header at the start of `data` (a whole file).

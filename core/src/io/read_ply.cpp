@@ -116,6 +116,8 @@ class PlyReader {
   void read() {
     header_ = parse_ply_header(file_.view(), file_.path());
     check_elements();
+    if (attributes_ != nullptr && header_.comments > 0)
+      attributes_->not_kept.push_back({"PLY comment and obj_info lines", header_.comments, "line"});
     const char* body = file_.data() + header_.body;
     if (header_.format == Format::ascii) {
       AsciiSource source(body, file_.end());

@@ -92,7 +92,9 @@ std::size_t read_binary(const MappedFile& file, std::uint32_t triangles, Soup& s
 // solids may follow each other. Keywords in any case; `outerloop` is taken for `outer loop`, and
 // `endloop`/`endfacet`/`endsolid` may be missing. Anything else is an error naming its line, so
 // that no facet is dropped or cut to a triangle without a word.
-void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
+//! Returns how many solids have a name (not kept).
+std::size_t read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
+  std::size_t named_solids = 0;
   TextScanner in(after_byte_order_mark(file.data(), file.end()), file.end());
   std::vector<float> corners;
   std::size_t triangles = 0;
@@ -111,6 +113,7 @@ void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
   std::string_view word = next_word();
   while (!word.empty()) {
     if (equals_ignoring_case(word, "solid") || equals_ignoring_case(word, "endsolid")) {
+      named_solids += equals_ignoring_case(word, "solid") && !in.at_line_end();
       in.next_line();  // the solid's name may be any words, "outer" included
       word = next_word();
       continue;
@@ -129,8 +132,8 @@ void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
       if (!equals_ignoring_case(word, "loop"))
         fail(in.line(), quoted(word) + " after 'outer' (expected 'outer loop')");
     } else if (!equals_ignoring_case(word, "outerloop")) {
-      fail(in.line(),
-           quoted(word) + " in facet " + std::to_string(triangles) + " (expected 'outer loop')");
+      fail(in.line(), quoted(word) + " in facet " + std::to_string(triangles + 1) +
+                          " (expected 'outer loop')");
     }
     int n = 0;
     for (word = next_word(); equals_ignoring_case(word, "vertex"); word = next_word(), ++n) {
@@ -139,16 +142,17 @@ void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
       const bool ok = in.number(x) && in.number(y) && in.number(z) && std::isfinite(float(x)) &&
                       std::isfinite(float(y)) && std::isfinite(float(z));
       if (!ok) {
-        fail(line, "facet " + std::to_string(triangles) + ", corner " + std::to_string(n) +
+        fail(line, "facet " + std::to_string(triangles + 1) + ", corner " + std::to_string(n + 1) +
                        " is not 'vertex x y z' with three finite numbers (32-bit floats)");
       }
       if (n < 3)  // STL coordinates are 32-bit floats (binary STL stores nothing else)
         corners.insert(corners.end(), {float(x), float(y), float(z)});
     }
     if (n < 3 && word.empty())
-      fail(in.line(), "the file ends inside facet " + std::to_string(triangles) + " (truncated)");
+      fail(in.line(),
+           "the file ends inside facet " + std::to_string(triangles + 1) + " (truncated)");
     if (n != 3) {
-      fail(facet_line, "facet " + std::to_string(triangles) + " has " + std::to_string(n) +
+      fail(facet_line, "facet " + std::to_string(triangles + 1) + " has " + std::to_string(n) +
                            " vertices; an STL facet is a triangle (3)");
     }
     if (equals_ignoring_case(word, "endloop"))
@@ -164,6 +168,7 @@ void read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
       out[c - first] = float_key(corners[3 * c], corners[3 * c + 1], corners[3 * c + 2]);
   };
   weld_triangle_corners(3 * triangles, keys, soup, reading_threads());
+  return named_solids;
 }
 
 }  // namespace
@@ -177,6 +182,11 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
     if (attributes != nullptr && used > 0) {
       attributes->not_kept.push_back(
           {"binary STL facet attribute words (colours in some programs)", used, "facet"});
+    }
+    // Materialise's and VisCAM's whole-object colour in the 80-byte header.
+    if (attributes != nullptr &&
+        (std::memcmp(head, "COLOR=", 6) == 0 || std::memcmp(head, "MATERIAL=", 9) == 0)) {
+      attributes->not_kept.push_back({"binary STL header colour (COLOR=/MATERIAL=)", 1, "file"});
     }
     return;
   }
@@ -197,7 +207,9 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
                          : std::string("has at least 84 bytes")) +
                     ", this file has " + std::to_string(size));
   }
-  read_ascii(file, soup, info);
+  const std::size_t named_solids = read_ascii(file, soup, info);
+  if (attributes != nullptr && named_solids > 0)
+    attributes->not_kept.push_back({"ASCII STL solid names", named_solids, "solid"});
 }
 
 }  // namespace meshbridge::detail
