@@ -139,13 +139,18 @@ def read(path: Union[str, "os.PathLike[str]"]) -> Soup:
     of lists), ``corner_vertices``/``face_begin`` (the polygons as flat arrays), ``path`` and
     ``read_info`` (what the file declared). Its arrays are read-only views.
 
-    What the reader did not keep as it was (a pinched polygon split, a record with fewer than 3
-    corners set aside, dangling edges, skipped lines) is a :class:`UserWarning`, as the CLI warns,
-    and ``soup.reading`` in words.
+    The polygons are the file's face records as they are: a pinched polygon (one that passes a
+    vertex twice, ``f 1 2 3 1 4 5``) keeps its corners, and :func:`check` and :func:`repair` split
+    it at the repeated vertex, the same way for every format; a record with fewer than 3 distinct
+    corners stays a face (a 1- or 2-corner record repeats its last corner up to 3) that
+    :func:`check` counts in ``faces_set_aside`` and :func:`repair` sets aside. Either is a
+    :class:`UserWarning`, as the CLI warns, and ``soup.reading`` in words (also dangling edges,
+    lone points and skipped lines).
 
-    A Soup holds positions and polygons only: colours, OBJ groups, materials and texture
-    coordinates stay in the file (:func:`meshbridge.batch.run_batch` and the CLI carry them to
-    the output).
+    A Soup holds positions and polygons only. What else the file holds (colours, OBJ groups and
+    materials, texture coordinates, normals, other PLY properties) is listed in
+    ``soup.not_held`` and named in a :class:`UserWarning`, because :func:`write` cannot write it
+    back; :func:`meshbridge.batch.run_batch` and the CLI carry colours and groups to the output.
 
     Raises :class:`ReadError` (missing, unreadable, empty or malformed file, a vertex index out
     of range, named by line where the format has lines) or :class:`InvalidMeshError` (a
@@ -154,6 +159,14 @@ def read(path: Union[str, "os.PathLike[str]"]) -> Soup:
     soup = _core.read(_path(path))
     if soup.reading is not None:  # as the CLI warns: a split, set-aside or skipped record
         warnings.warn(f"{soup.path}: {soup.reading}", UserWarning, stacklevel=2)
+    if soup.not_held:  # what write() cannot give back
+        warnings.warn(
+            f"{soup.path}: a Soup holds positions and polygons only; not held: "
+            + "; ".join(soup.not_held)
+            + " (meshbridge.batch and the CLI carry colours and groups to their output)",
+            UserWarning,
+            stacklevel=2,
+        )
     return soup
 
 
@@ -161,8 +174,8 @@ def write(path: Union[str, "os.PathLike[str]"], mesh: Any, faces: Optional[Faces
     """Writes a manifold mesh to OBJ, OFF, PLY, STL or 3MF (chosen by the extension).
 
     ``mesh`` is a :class:`Soup`, a :class:`RepairResult`, or vertices with ``faces``: positions
-    and polygons only (no colours or groups; :func:`meshbridge.batch.run_batch` carries a file's
-    own). The file is written under a temporary name and renamed, so on error the previous file
+    and polygons only (no colours or groups: :func:`read` warns of what a file held besides, in
+    ``soup.not_held``; :func:`meshbridge.batch.run_batch` carries a file's own). The file is written under a temporary name and renamed, so on error the previous file
     is untouched.
     STL and 3MF get triangles. STL cannot keep split vertices (every reader welds them again):
     when reading the written STL back re-creates singular edges or vertices, a

@@ -71,6 +71,10 @@ class Soup:
     @property
     def reading(self) -> Optional[str]:
         """What the reader did not keep as it was, in words; None when it kept every record."""
+    @property
+    def not_held(self) -> List[str]:
+        """What the file holds besides positions and polygons (colours, groups, normals...), one
+        phrase per kind; empty when nothing or built from arrays."""
 
 def read(path: str) -> Soup: ...
 def write(path: str, soup: Soup) -> Tuple[int, int]: ...

@@ -47,6 +47,8 @@ struct PySoup {
   Soup soup;
   std::string path;  //!< the file it was read from; empty when built from arrays
   ReadInfo info;
+  //! What the file held that the soup does not (describe_not_held()); empty from arrays.
+  std::vector<std::string> not_held;
 };
 
 //! OpenMesh's readers and writers keep state in process-wide singletons: one file at a time.
@@ -170,6 +172,10 @@ PYBIND11_MODULE(_core, m) {
           },
           "What the reader did not keep as it was (describe_reading(), as the CLI warns), or None")
       .def_property_readonly(
+          "not_held", [](const PySoup& s) { return s.not_held; },
+          "What the file holds besides positions and polygons, which a Soup does not "
+          "(describe_not_held()): one phrase per kind, empty when none or built from arrays")
+      .def_property_readonly(
           "read_info",
           [](const PySoup& s) -> py::object {
             if (s.path.empty())
@@ -208,10 +214,11 @@ PYBIND11_MODULE(_core, m) {
                 py::make_tuple(i.declared_vertices, i.declared_faces, i.faces_dropped_by_reader,
                                i.faces_kept, i.faces_split, i.faces_set_aside, i.dangling_edges,
                                i.lone_points, i.strip_joins, i.unknown_records,
-                               i.color_map_indices));
+                               i.color_map_indices),
+                s.not_held);
           },
           [](const py::tuple& state) {
-            if (state.size() != 5)
+            if (state.size() != 5 && state.size() != 6)
               throw InvalidSoupError("Soup: bad pickle state");
             auto soup = std::make_shared<PySoup>();
             const auto unpack = [&state](std::size_t item, auto& vector) {
@@ -234,6 +241,8 @@ PYBIND11_MODULE(_core, m) {
             info.faces_dropped_by_reader = i[2], info.faces_kept = i[3], info.faces_split = i[4];
             info.faces_set_aside = i[5], info.dangling_edges = i[6], info.lone_points = i[7];
             info.strip_joins = i[8], info.unknown_records = i[9], info.color_map_indices = i[10];
+            if (state.size() == 6)
+              soup->not_held = state[5].cast<std::vector<std::string>>();
             validate_soup(soup->soup);
             return soup;
           }));
@@ -245,8 +254,10 @@ PYBIND11_MODULE(_core, m) {
         {
           py::gil_scoped_release release;
           const std::lock_guard<std::mutex> lock(io_lock());
-          soup->soup = read_soup(path, &soup->info);
+          MeshAttributes attributes;
+          soup->soup = read_soup(path, &soup->info, &attributes);
           soup->path = path;
+          soup->not_held = describe_not_held(attributes);
         }
         return soup;
       },

@@ -159,6 +159,35 @@ def test_read_warns_about_records_not_kept_as_they_are(tmp_path):
         assert meshbridge.read(MODELS / "twocubes.obj").reading is None
 
 
+def test_read_names_what_a_soup_does_not_hold(tmp_path):
+    path = tmp_path / "coloured.obj"
+    path.write_text(
+        "mtllib a.mtl\nv 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n"
+        "g lid\nusemtl red\nf 1/1/1 2/1/1 3/1/1\n"
+    )
+    with pytest.warns(UserWarning, match=r"coloured.obj: a Soup holds positions and polygons"):
+        soup = meshbridge.read(path)
+    assert soup.not_held == [
+        "vertex colours (2 vertices)",
+        "OBJ groups and materials (2 o/g/usemtl lines, 1 mtllib line)",
+        "1 texture coordinate (vt)",
+        "1 normal (vn)",
+    ]
+    ply = tmp_path / "normals.ply"
+    ply.write_text(
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n"
+    )
+    with pytest.warns(UserWarning, match=r"PLY vertex properties nx, ny, nz, on 3 vertices"):
+        assert meshbridge.read(ply).not_held == ["PLY vertex properties nx, ny, nz, on 3 vertices"]
+    import pickle
+
+    assert pickle.loads(pickle.dumps(soup)).not_held == soup.not_held
+    assert meshbridge.Soup(soup.vertices, soup.faces).not_held == []
+
+
 def test_stl_that_welds_the_repair_back_warns_with_counts(tmp_path):
     result = meshbridge.repair(meshbridge.read(MODELS / "twocubes.obj"))
     with pytest.warns(UserWarning, match=r"re-creates 1 singular edge and 2 singular vertices"):

@@ -175,6 +175,13 @@ MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& 
 std::vector<std::string> describe_unwritten(const std::string& path,
                                             const MeshAttributes& attributes);
 
+//! What a soup alone (positions and polygons: Soup, the Python module's Soup) does not hold of
+//! a file read with `attributes`, one phrase per kind: "vertex colours (8 vertices)", "face
+//! colours (6 faces)", "OBJ groups and materials (2 o/g/usemtl lines, 1 mtllib line)", "24 texture
+//! coordinates (vt)", "8 normals (vn)", and each NotKept ("PLY vertex properties nx, ny, nz, on 8
+//! vertices"). Empty when the file held nothing else.
+std::vector<std::string> describe_not_held(const MeshAttributes& attributes);
+
 //! What write_mesh() makes of a mesh beyond its polygons (describe_written()).
 struct WrittenOutput {
   //! Triangles written, for formats that hold triangles only (STL, 3MF); 0 for the others.

@@ -87,6 +87,33 @@ std::vector<std::string> describe_unwritten(const std::string& path,
   return lost;
 }
 
+std::vector<std::string> describe_not_held(const MeshAttributes& attributes) {
+  std::vector<std::string> held_elsewhere;
+  if (!attributes.vertex_colors.empty()) {
+    const std::size_t without = missing_count(attributes.vertex_color_missing);
+    held_elsewhere.push_back("vertex colours (" +
+                             counted(attributes.vertex_colors.size() - without, "vertex") + ")");
+  }
+  if (!attributes.face_colors.empty()) {
+    const std::size_t without = missing_count(attributes.face_color_missing);
+    held_elsewhere.push_back("face colours (" +
+                             counted(attributes.face_colors.size() - without, "face") + ")");
+  }
+  if (!attributes.face_groups.empty() || !attributes.material_libraries.empty()) {
+    held_elsewhere.push_back("OBJ groups and materials (" +
+                             counted(attributes.face_groups.size(), "o/g/usemtl line") + ", " +
+                             counted(attributes.material_libraries.size(), "mtllib line") + ")");
+  }
+  if (attributes.texture_coordinates > 0)
+    held_elsewhere.push_back(counted(attributes.texture_coordinates, "texture coordinate") +
+                             " (vt)");
+  if (attributes.normals > 0)
+    held_elsewhere.push_back(counted(attributes.normals, "normal") + " (vn)");
+  for (const NotKept& n : attributes.not_kept)
+    held_elsewhere.push_back(n.what + ", on " + counted(n.count, n.noun));
+  return held_elsewhere;
+}
+
 WrittenOutput describe_written(const std::string& path, const Soup& soup,
                                const MeshAttributes& attributes, std::size_t vertices_welded) {
   WrittenOutput written;
