@@ -64,6 +64,22 @@ int run_check(const CheckArguments& arguments) {
   return report.has_defects() || info.faces_dropped_by_reader > 0 ? kDefectsFound : kOk;
 }
 
+//! run_check; with --json, an error is also a JSON object on stdout (for scripts that parse it),
+//! then passed on to main, which names it on stderr and exits 2.
+int run_check_or_report_error(const CheckArguments& arguments) {
+  if (!arguments.json)
+    return run_check(arguments);
+  try {
+    return run_check(arguments);
+  } catch (const std::bad_alloc&) {
+    std::cout << check_failed_json(arguments.file, "out of memory") << "\n";
+    throw;
+  } catch (const std::exception& error) {
+    std::cout << check_failed_json(arguments.file, error.what()) << "\n";
+    throw;
+  }
+}
+
 }  // namespace
 
 void add_check_command(CLI::App& app, int& exit_code) {
@@ -74,8 +90,10 @@ void add_check_command(CLI::App& app, int& exit_code) {
       "Exit 0 = no defect, 1 = defects found, 2 = error.");
   command->add_option("FILE", arguments->file, "mesh to check (.obj, .off, .ply, .stl, .3mf)")
       ->required();
-  command->add_flag("--json", arguments->json,
-                    "print the report as JSON instead of text (docs/report-schema.md)");
+  command->add_flag(
+      "--json", arguments->json,
+      "print the report as JSON instead of text (docs/report-schema.md); a file that "
+      "cannot be checked prints {..., \"status\": \"failed\", \"reason\": MESSAGE} and exits 2");
   command->add_flag("--elements", arguments->elements,
                     "with --json: also list the defective elements (vertex indices, edges); "
                     "default counts only");
@@ -88,7 +106,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
   command->add_flag("--progress", arguments->progress,
                     "show the stage and a progress bar on stderr even when it is not a terminal "
                     "(on a terminal it shows anyway once the work takes over a second)");
-  command->callback([arguments, &exit_code] { exit_code = run_check(*arguments); });
+  command->callback([arguments, &exit_code] { exit_code = run_check_or_report_error(*arguments); });
 }
 
 }  // namespace meshbridge::cli

@@ -162,6 +162,14 @@ std::string check_report_json(const std::string& file, const DefectReport& repor
   return dump(out, options.indent);
 }
 
+std::string check_failed_json(const std::string& file, const std::string& reason,
+                              const ReportJsonOptions& options) {
+  Json out = header("check", file);
+  out["status"] = "failed";
+  out["reason"] = reason;
+  return dump(out, options.indent);
+}
+
 std::string repair_report_json(const std::string& file, const std::string& output,
                                const RepairReport& report, const ReadInfo* read,
                                const ReportJsonOptions& options, const DefectReport* reread,

@@ -61,6 +61,15 @@ check_exit_codes)
   expect_in "$work/out" "singular edges: 1"
   expect_exit 2 "$mb" check "$work/missing.obj"
   expect_in "$work/err" "meshbridge check: error: $work/missing.obj: cannot read: no such file"
+  # With --json, stdout still holds one object a script can parse: the failure and its reason.
+  expect_exit 2 "$mb" check --json "$work/missing.obj"
+  [ "$(json_field "$work/out" status)" = failed ] || fail "check --json of a missing file: status"
+  [ "$(json_field "$work/out" reason)" = "$work/missing.obj: cannot read: no such file" ] ||
+    fail "check --json of a missing file: reason"
+  printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' >"$work/short.off"
+  expect_exit 2 "$mb" check --json "$work/short.off"
+  expect_in "$work/out" '"reason":"'"$work"'/short.off: OFF vertex 3 of 3: expected 3 numbers'
+  expect_in "$work/err" "meshbridge check: error: $work/short.off: OFF vertex 3 of 3"
   expect_exit 2 "$mb" check
   expect_in "$work/err" "meshbridge check: error: FILE is required (see \`meshbridge check --help\`)"
   expect_exit 2 "$mb" frobnicate

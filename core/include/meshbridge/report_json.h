@@ -43,6 +43,12 @@ std::string check_report_json(const std::string& file, const DefectReport& repor
                               const ReadInfo* read = nullptr,
                               const ReportJsonOptions& options = {});
 
+//! `{"schema_version":1,"kind":"check","file":...,"status":"failed","reason":...}`: what
+//! `check --json` prints instead of the report when FILE cannot be checked (`reason`: the error
+//! message, as on stderr; `status` and `reason` as in a failed batch record).
+std::string check_failed_json(const std::string& file, const std::string& reason,
+                              const ReportJsonOptions& options = {});
+
 //! `{"schema_version":1,"kind":"repair","file":...,"output":...,"read":{...},<repair counts>,
 //! "gaps":{<gap closing counts>},"before":{<check counts>},"after":{<check counts>}
 //! [,"reread":{<check counts>}][,"written":{"triangles":N,"polygons_fanned":N,"left_out":[...]}]}`;
