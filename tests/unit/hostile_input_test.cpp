@@ -441,7 +441,9 @@ TEST_F(HostileFile, ply_ascii_header_claims_more_elements_than_present) {
       "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
       "property float z\nelement face 3\nproperty list uchar int vertex_indices\nend_header\n";
   expect_error<ReadError>("few.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-                          "PLY vertex 5 of 5: property 'y' is missing or unreadable");
+                          "ascii PLY: line 13, vertex 4 of 5: 4 values where the header's "
+                          "properties (x, y, z) take 3 (a malformed line, or a false element "
+                          "count before it)");
 }
 
 TEST_F(HostileFile, ply_negative_element_count) {

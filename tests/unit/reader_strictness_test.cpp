@@ -95,7 +95,7 @@ TEST_F(ReaderStrictness, off_and_ascii_ply_holding_more_faces_than_declared_are_
       "property float z\nelement face 3\nproperty list uchar int vertex_indices\nend_header\n"
       "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
   EXPECT_NE(error_of("fewer.ply", header + faces)
-                .find("ascii PLY: values follow the last declared element (face 3)"),
+                .find("ascii PLY: line 17: values after the last declared item (face 3)"),
             std::string::npos);
   EXPECT_EQ(read_soup(write("exact.ply", header + "3 0 2 1\n3 0 1 3\n3 1 2 3\n\n")).num_faces(),
             3u);
@@ -278,6 +278,50 @@ TEST_F(ReaderStrictness, cr_line_ends_alone_are_named) {
   // CRLF is read as it is.
   EXPECT_EQ(error_of("dos.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n"),
             "read without error");
+}
+
+//! Success if `text` holds `part`; the message shows `text` otherwise.
+::testing::AssertionResult contains(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "'" << part << "' not in: " << text;
+}
+
+TEST_F(ReaderStrictness, ascii_ply_errors_name_the_line_that_does_not_match_the_header) {
+  // Line 1 is "ply"; the body starts on line 10.
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const auto error_with = [&](const std::string& name, const std::string& body) {
+    return error_of(name, header + body);
+  };
+  EXPECT_TRUE(contains(error_with("extra.ply", "0 0 0\n1 0 0 5\n0 1 0\n3 0 1 2\n"),
+                       "extra.ply: ascii PLY: line 11, vertex 2 of 3: 4 values where the "
+                       "header's properties (x, y, z) take 3"));
+  EXPECT_TRUE(contains(error_with("short.ply", "0 0 0\n1 0\n0 1 0\n3 0 1 2\n"),
+                       "line 11, vertex 2 of 3: the line ends before property 'z'"));
+  EXPECT_TRUE(contains(error_with("list.ply", "0 0 0\n1 0 0\n0 1 0\n3 0 1\n"),
+                       "line 13, face 1 of 1: list 'vertex_indices' counts 3 entries, but the "
+                       "line holds 2"));
+  EXPECT_TRUE(contains(error_with("long.ply", "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 7\n"),
+                       "line 13, face 1 of 1: 5 values where the header's properties "
+                       "(vertex_indices) take 4"));
+  EXPECT_TRUE(contains(error_with("word.ply", "0 0 0\n1 0 x\n0 1 0\n3 0 1 2\n"),
+                       "line 11, vertex 2 of 3: property 'z' is 'x', not a number"));
+  EXPECT_TRUE(contains(error_with("frac.ply", "0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n"),
+                       "line 13, face 1 of 1: entry 2 of list 'vertex_indices' is '1.5', not a "
+                       "vertex index"));
+  // Blank lines and CRLF line ends count as lines.
+  EXPECT_TRUE(contains(error_with("crlf.ply", "0 0 0\r\n\r\n1 0 0\r\n0 1\r\n3 0 1 2\r\n"),
+                       "line 13, vertex 3 of 3: the line ends before property 'z'"));
+  EXPECT_TRUE(contains(error_with("cut.ply", "0 0 0\n1 0 0\n0 1 0\n"),
+                       "ascii PLY: the file ends after line 12, before face 1 of 1 (a truncated "
+                       "file or a false count)"));
+  EXPECT_TRUE(contains(error_with("after.ply", "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n\n7\n"),
+                       "line 15: values after the last declared item (face 1)"));
+  // Values wrapped over lines are still read (the reader takes words; only errors look at lines).
+  EXPECT_EQ(read_soup(write("wrapped.ply", header + "0 0\n0\n1 0 0 0 1 0\n3 0 1 2\n")).num_faces(),
+            1u);
 }
 
 }  // namespace

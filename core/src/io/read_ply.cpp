@@ -5,6 +5,7 @@
 #include "io/formats.h"
 #include "io/huge_pages.h"
 #include "io/parallel_parts.h"
+#include "io/ply_ascii_lines.h"
 #include "io/ply_binary_blocks.h"
 #include "io/ply_header.h"
 #include "io/ply_sources.h"
@@ -120,16 +121,23 @@ class PlyReader {
       attributes_->not_kept.push_back({"PLY comment and obj_info lines", header_.comments, "line"});
     const char* body = file_.data() + header_.body;
     if (header_.format == Format::ascii) {
-      AsciiSource source(body, file_.end());
-      read_elements(source);
-      // A count lower than the values given would drop the rest without a word.
-      if (!source.only_space_left()) {
-        throw ReadError(where() + "ascii PLY: values follow the last declared element (" +
-                        (header_.elements.empty()
-                             ? std::string("none")
-                             : header_.elements.back().name + " " +
-                                   std::to_string(header_.elements.back().count)) +
-                        "): a false element count, or text after the mesh");
+      try {
+        AsciiSource source(body, file_.end());
+        read_elements(source);
+        // A count lower than the values given would drop the rest without a word.
+        if (!source.only_space_left()) {
+          throw ReadError(where() + "ascii PLY: values follow the last declared element (" +
+                          (header_.elements.empty()
+                               ? std::string("none")
+                               : header_.elements.back().name + " " +
+                                     std::to_string(header_.elements.back().count)) +
+                          "): a false element count, or text after the mesh");
+        }
+      } catch (const ReadError&) {
+        // Values are read as words; the line where they stop matching the header says more.
+        if (const auto line = locate_ascii_ply_mismatch(file_.view(), header_))
+          throw ReadError(where() + "ascii PLY: " + *line);
+        throw;
       }
     } else {
       BinarySource source(body, file_.end(), header_.format == Format::binary_big_endian);
