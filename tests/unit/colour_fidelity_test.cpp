@@ -271,6 +271,28 @@ TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
   const auto facets = not_kept_of("a.stl", stl);
   ASSERT_EQ(facets.size(), 1u);
   EXPECT_EQ(facets[0].count, 1u);
+  // Facet normals against the winding (a zero normal makes no claim), binary and ASCII.
+  std::string flipped(80, ' ');
+  const std::uint32_t three = 3;
+  flipped.append(reinterpret_cast<const char*>(&three), 4);
+  for (float z : {-1.0f, 0.0f, 1.0f}) {
+    const float values[12] = {0, 0, z, 0, 0, 0, 1, 0, 0, 0, 1, 0};
+    flipped.append(reinterpret_cast<const char*>(values), sizeof values);
+    flipped.append(2, '\0');
+  }
+  const auto reversed = not_kept_of("flipped.stl", flipped);
+  ASSERT_EQ(reversed.size(), 1u);
+  EXPECT_EQ(reversed[0].what,
+            "STL facet normals against the winding of their corners (written ones follow the "
+            "winding)");
+  EXPECT_EQ(reversed[0].count, 1u);
+  const auto reversed_ascii =
+      not_kept_of("flipped_ascii.stl",
+                  "solid\nfacet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                  "vertex 0 1 0\nendloop\nendfacet\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\n"
+                  "vertex 1 0 0\nvertex 0 1 1\nendloop\nendfacet\nendsolid\n");
+  ASSERT_EQ(reversed_ascii.size(), 1u);
+  EXPECT_EQ(reversed_ascii[0].count, 1u);
   // ASCII STL solid names, a binary STL header colour, PLY comments.
   const auto named = not_kept_of("named.stl",
                                  "solid part A\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"

@@ -36,25 +36,57 @@ bool equals_ignoring_case(std::string_view word, std::string_view lower) {
   return true;
 }
 
+//! True if a facet's stored normal `n` points against the normal of its corners' winding
+//! (a b c, counter-clockwise seen from outside): both non-zero and their dot product negative.
+//! A zero or non-finite stored normal (many writers leave it 0 0 0) is no claim either way.
+bool normal_against_winding(const float n[3], const float a[3], const float b[3],
+                            const float c[3]) {
+  const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
+  const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
+  const double w[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                       u[0] * v[1] - u[1] * v[0]};
+  const double dot = n[0] * w[0] + n[1] * w[1] + n[2] * w[2];
+  return std::isfinite(dot) && dot < 0;
+}
+
+float little_endian_float(const unsigned char* b) {
+  const std::uint32_t bits = little_endian_u32(b);
+  float value;
+  std::memcpy(&value, &bits, 4);
+  return value;
+}
+
+//! What a binary STL reader reads past: counts of facets.
+struct BinaryFacetNotes {
+  std::size_t attribute_words = 0;   //!< a non-zero attribute word (a colour in some programs)
+  std::size_t normals_reversed = 0;  //!< a stored normal against the winding
+};
+
 //! The stretch of the file a binary STL reader keeps mapped behind and ahead of it.
 constexpr std::size_t kWindow = std::size_t(8) << 20;
 
 //! Returns how many triangles have a non-zero attribute word (the 16 bits after each triangle:
-//! 0 by the format, a colour in some programs; not kept).
-std::size_t read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup,
-                        ReadInfo& info) {
+//! 0 by the format, a colour in some programs) and a normal against their winding (not kept:
+//! every writer recomputes normals from the corners).
+BinaryFacetNotes read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup,
+                             ReadInfo& info) {
   const auto* bytes = reinterpret_cast<const unsigned char*>(file.data()) + 84;
   info.declared_faces = triangles;
   info.declared_vertices = 3 * std::size_t(triangles);
-  std::atomic<std::size_t> attribute_words{0};
-  const auto keys = [&file, bytes, &attribute_words](std::size_t first, std::size_t count,
-                                                     FloatKey* out) {
-    std::size_t used = 0;
+  std::atomic<std::size_t> attribute_words{0}, normals_reversed{0};
+  const auto keys = [&file, bytes, &attribute_words, &normals_reversed](
+                        std::size_t first, std::size_t count, FloatKey* out) {
+    std::size_t used = 0, reversed = 0;
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = first + i;
       const unsigned char* p = bytes + 50 * (c / 3) + 12 + 12 * (c % 3);  // after the normal
-      if (c % 3 == 2)
+      if (c % 3 == 2) {
         used += (p[12] | p[13]) != 0;  // the attribute word after the last corner
+        float values[12];              // the normal and the three corners
+        for (int k = 0; k < 12; ++k)
+          values[k] = little_endian_float(bytes + 50 * (c / 3) + 4 * k);
+        reversed += normal_against_winding(values, values + 3, values + 6, values + 9);
+      }
       const std::uint32_t bits[3] = {little_endian_u32(p), little_endian_u32(p + 4),
                                      little_endian_u32(p + 8)};
       // All exponent bits set: infinite or NaN.
@@ -69,6 +101,8 @@ std::size_t read_binary(const MappedFile& file, std::uint32_t triangles, Soup& s
     }
     if (used > 0)
       attribute_words += used;
+    if (reversed > 0)
+      normals_reversed += reversed;
     // Every 8 MiB of the file, the 8 MiB read before go back to the kernel (see
     // MappedFile::release_before), so the map adds a window to the peak memory, not the whole file,
     // and the 8 MiB after the next are mapped in one call. (At the start of a part that window may
@@ -84,7 +118,7 @@ std::size_t read_binary(const MappedFile& file, std::uint32_t triangles, Soup& s
   };
   file.prefault_between(file.data(), file.data() + std::min(file.size(), 2 * kWindow));
   weld_triangle_corners(3 * std::size_t(triangles), keys, soup, reading_threads());
-  return attribute_words.load();
+  return {attribute_words.load(), normals_reversed.load()};
 }
 
 // ASCII STL, read as the grammar it is: `solid NAME`, then facets (`facet normal x y z`,
@@ -92,9 +126,14 @@ std::size_t read_binary(const MappedFile& file, std::uint32_t triangles, Soup& s
 // solids may follow each other. Keywords in any case; `outerloop` is taken for `outer loop`, and
 // `endloop`/`endfacet`/`endsolid` may be missing. Anything else is an error naming its line, so
 // that no facet is dropped or cut to a triangle without a word.
-//! Returns how many solids have a name (not kept).
-std::size_t read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
+//! What an ASCII STL reader reads past: solid names, facet normals against the winding.
+struct AsciiNotes {
   std::size_t named_solids = 0;
+  std::size_t normals_reversed = 0;
+};
+
+AsciiNotes read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
+  std::size_t named_solids = 0, normals_reversed = 0;
   TextScanner in(after_byte_order_mark(file.data(), file.end()), file.end());
   std::vector<float> corners;
   std::size_t triangles = 0;
@@ -122,9 +161,15 @@ std::size_t read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
       fail(in.line(), quoted(word) + " where a facet, 'solid' or 'endsolid' was expected");
     const std::size_t facet_line = in.line();
     word = next_word();
-    if (equals_ignoring_case(word, "normal")) {  // recomputed from the corners: not kept
-      for (int i = 0; i < 3 && !in.at_line_end(); ++i)
-        in.word();
+    float normal[3] = {0, 0, 0};  // recomputed from the corners: not kept
+    if (equals_ignoring_case(word, "normal")) {
+      for (int i = 0; i < 3 && !in.at_line_end(); ++i) {
+        const std::string_view value = in.word();
+        double x = 0;
+        if (parse_double(value.data(), value.data() + value.size(), x) ==
+            value.data() + value.size())
+          normal[i] = static_cast<float>(x);
+      }
       word = next_word();
     }
     if (equals_ignoring_case(word, "outer")) {
@@ -159,6 +204,8 @@ std::size_t read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
       word = next_word();
     if (equals_ignoring_case(word, "endfacet"))
       word = next_word();
+    const float* a = corners.data() + corners.size() - 9;
+    normals_reversed += normal_against_winding(normal, a, a + 3, a + 6);
     ++triangles;
   }
   info.declared_faces = triangles;
@@ -168,7 +215,15 @@ std::size_t read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
       out[c - first] = float_key(corners[3 * c], corners[3 * c + 1], corners[3 * c + 2]);
   };
   weld_triangle_corners(3 * triangles, keys, soup, reading_threads());
-  return named_solids;
+  return {named_solids, normals_reversed};
+}
+
+//! The NotKept entry of facet normals against the winding.
+NotKept reversed_normals(std::size_t facets) {
+  return {
+      "STL facet normals against the winding of their corners (written ones follow the "
+      "winding)",
+      facets, "facet"};
 }
 
 }  // namespace
@@ -178,11 +233,13 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   const std::size_t size = file.size();
   const std::uint32_t triangles = size >= 84 ? little_endian_u32(head + 80) : 0;
   if (size >= 84 && 84 + 50 * std::uint64_t(triangles) == size) {
-    const std::size_t used = read_binary(file, triangles, soup, info);
-    if (attributes != nullptr && used > 0) {
-      attributes->not_kept.push_back(
-          {"binary STL facet attribute words (colours in some programs)", used, "facet"});
+    const BinaryFacetNotes notes = read_binary(file, triangles, soup, info);
+    if (attributes != nullptr && notes.attribute_words > 0) {
+      attributes->not_kept.push_back({"binary STL facet attribute words (colours in some programs)",
+                                      notes.attribute_words, "facet"});
     }
+    if (attributes != nullptr && notes.normals_reversed > 0)
+      attributes->not_kept.push_back(reversed_normals(notes.normals_reversed));
     // Materialise's and VisCAM's whole-object colour in the 80-byte header.
     if (attributes != nullptr &&
         (std::memcmp(head, "COLOR=", 6) == 0 || std::memcmp(head, "MATERIAL=", 9) == 0)) {
@@ -207,9 +264,11 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
                          : std::string("has at least 84 bytes")) +
                     ", this file has " + std::to_string(size));
   }
-  const std::size_t named_solids = read_ascii(file, soup, info);
-  if (attributes != nullptr && named_solids > 0)
-    attributes->not_kept.push_back({"ASCII STL solid names", named_solids, "solid"});
+  const AsciiNotes notes = read_ascii(file, soup, info);
+  if (attributes != nullptr && notes.named_solids > 0)
+    attributes->not_kept.push_back({"ASCII STL solid names", notes.named_solids, "solid"});
+  if (attributes != nullptr && notes.normals_reversed > 0)
+    attributes->not_kept.push_back(reversed_normals(notes.normals_reversed));
 }
 
 }  // namespace meshbridge::detail

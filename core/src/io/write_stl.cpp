@@ -52,6 +52,20 @@ void put_float(unsigned char* at, double value) {
   put_u32(at, bits);
 }
 
+//! The point stored as three little-endian floats at `at`.
+Point stored_point(const unsigned char* at) {
+  Point p;
+  for (int i = 0; i < 3; ++i) {
+    std::uint32_t bits = 0;
+    for (int k = 0; k < 4; ++k)
+      bits |= std::uint32_t(at[4 * i + k]) << (8 * k);
+    float value;
+    std::memcpy(&value, &bits, 4);
+    p[i] = value;
+  }
+  return p;
+}
+
 }  // namespace
 
 void write_stl(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*,
@@ -74,12 +88,18 @@ void write_stl(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
     std::size_t used = 0;
     for_each_triangle(soup, [&](const Point& a, const Point& b, const Point& c) {
       unsigned char* r = block.data() + 50 * used;
-      const Point n = unit_normal(a, b, c);
-      const Point* values[4] = {&n, &a, &b, &c};
-      for (int k = 0; k < 4; ++k) {
+      const Point* corners[3] = {&a, &b, &c};
+      for (int k = 0; k < 3; ++k) {
         for (int i = 0; i < 3; ++i)
-          put_float(r + 12 * k + 4 * i, (*values[k])[i]);
+          put_float(r + 12 + 12 * k + 4 * i, (*corners[k])[i]);
       }
+      // The normal of the corners as stored (32-bit floats), read back from the bytes: writing
+      // what a binary STL reader gets back then gives the same bytes. (Not through a
+      // double -> float -> double cast: GCC 12's SLP vectorizer drops that rounding in some
+      // lanes at -O2 and -O3.)
+      const Point n = unit_normal(stored_point(r + 12), stored_point(r + 24), stored_point(r + 36));
+      for (int i = 0; i < 3; ++i)
+        put_float(r + 4 * i, n[i]);
       r[48] = r[49] = 0;
       if (++used == kPerBlock) {
         out.write(block.data(), 50 * used);
