@@ -311,6 +311,22 @@ TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   ASSERT_EQ(comments.size(), 1u);
   EXPECT_EQ(comments[0].count, 1u);  // MeshBridge's own comment is not counted
+  // Bytes after the last element of a binary PLY (a false count would hide faces there).
+  std::string binary_ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  const float corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  binary_ply.append(reinterpret_cast<const char*>(corners), sizeof corners);
+  const std::int32_t face[3] = {0, 1, 2};
+  binary_ply += '\3';
+  binary_ply.append(reinterpret_cast<const char*>(face), sizeof face);
+  EXPECT_TRUE(not_kept_of("exact.ply", binary_ply).empty());
+  const auto tail = not_kept_of("tail.ply", binary_ply + '\3' + std::string(12, '\0'));
+  ASSERT_EQ(tail.size(), 1u);
+  EXPECT_EQ(tail[0].what,
+            "data after the last declared binary PLY element (padding, or a false count)");
+  EXPECT_EQ(tail[0].count, 13u);
   // Named for every output, even the format the file came in.
   MeshAttributes a;
   a.not_kept = ply;
