@@ -53,7 +53,9 @@ Reading read_with(unsigned threads, const std::string& path) {
   return r;
 }
 
-::testing::AssertionResult same_reading(const Reading& a, const Reading& b) {
+//! `read_past`: compare what was read past too (not between formats: an ASCII STL names its
+//! solid, a binary one has none).
+::testing::AssertionResult same_reading(const Reading& a, const Reading& b, bool read_past = true) {
   if (a.error != b.error)
     return ::testing::AssertionFailure()
            << "errors differ: '" << a.error << "' / '" << b.error << "'";
@@ -91,6 +93,12 @@ Reading read_with(unsigned threads, const std::string& path) {
   if (s.material_libraries != t.material_libraries ||
       s.texture_coordinates != t.texture_coordinates || s.normals != t.normals)
     return ::testing::AssertionFailure() << "mtllib, vt or vn counts differ";
+  if (read_past && s.not_kept.size() != t.not_kept.size())
+    return ::testing::AssertionFailure() << "read-past lists differ";
+  for (std::size_t k = 0; read_past && k < s.not_kept.size(); ++k) {
+    if (s.not_kept[k].what != t.not_kept[k].what || s.not_kept[k].count != t.not_kept[k].count)
+      return ::testing::AssertionFailure() << "read past: '" << s.not_kept[k].what << "' differs";
+  }
   if (a.attributes.face_groups.size() != b.attributes.face_groups.size())
     return ::testing::AssertionFailure() << "groups differ";
   for (std::size_t g = 0; g < a.attributes.face_groups.size(); ++g) {
@@ -136,7 +144,7 @@ TEST_F(ParallelReading, binary_and_ascii_stl_weld_the_same_in_parts) {
   EXPECT_LT(one.soup.num_vertices(), mesh.soup.num_vertices() + 1);
   expect_same_for_every_thread_count(binary);
   expect_same_for_every_thread_count(ascii);
-  EXPECT_TRUE(same_reading(one, read_with(2, ascii)));
+  EXPECT_TRUE(same_reading(one, read_with(2, ascii), false));
 }
 
 TEST_F(ParallelReading, binary_stl_names_the_first_non_finite_corner_in_file_order) {
@@ -286,6 +294,31 @@ TEST_F(ParallelReading, obj_with_relative_indices_groups_and_colours_reads_the_s
   EXPECT_EQ(one.attributes.normals, 2 * group_lines);
   EXPECT_FALSE(one.attributes.face_groups.empty());
   expect_same_for_every_thread_count(file);
+}
+
+TEST_F(ParallelReading, obj_vt_and_vn_indices_without_a_record_are_counted_in_parts) {
+  const Soup board = test_support::shuffled(models::checkerboard_cubes(30), 5);
+  const std::string clean = path("clean.obj"), broken = path("broken.obj");
+  write_busy_obj(clean, board);
+  const auto no_record = [](const Reading& r) {
+    for (const NotKept& n : r.attributes.not_kept) {
+      if (n.what.find("has no record for") != std::string::npos)
+        return n.count;
+    }
+    return std::size_t(0);
+  };
+  EXPECT_EQ(no_record(read_with(1, clean)), 0u);
+  {
+    std::ofstream out(broken, std::ios::binary);
+    out << std::ifstream(clean, std::ios::binary).rdbuf();
+    // Relative vt -2 and vn -3 reach back to records of earlier parts: fine. Then a vt past the
+    // last, a vn before the first, an index 0 (one corner with two faults counts once).
+    out << "f 1/-2/-3 2/1 3//2\nf 1/999999 2/1/999999 3/0/-999999\nf 4/1 5//-99999999 6\n";
+  }
+  const Reading one = read_with(1, broken);
+  ASSERT_EQ(one.error, "");
+  EXPECT_EQ(no_record(one), 4u);
+  expect_same_for_every_thread_count(broken);
 }
 
 TEST_F(ParallelReading, obj_whose_faces_the_size_estimate_misses_reads_every_record) {

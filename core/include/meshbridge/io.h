@@ -124,7 +124,8 @@ struct MeshAttributes {
   //! `usemtl` groups still name materials of a library.
   std::vector<std::string> material_libraries;
   //! OBJ `vt` and `vn` records: read and the form of their indices checked, but not kept (no
-  //! writer writes texture coordinates or normals). See describe_unwritten().
+  //! writer writes texture coordinates or normals); corners whose vt or vn index names no
+  //! record are a NotKept entry. See describe_unwritten().
   std::size_t texture_coordinates = 0, normals = 0;
   //! Everything else the file holds that is read past, not kept (filled only when the reader is
   //! given attributes). See describe_unwritten().

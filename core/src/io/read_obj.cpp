@@ -40,6 +40,16 @@ struct RelativeCorners {
   std::int64_t lowest = 0;  //!< lowest offset of any relative index (faces, l, p), or 0
 };
 
+//! The texture coordinate (vt, slot 0) and normal (vn, slot 1) indices of the corners a reader
+//! met, to tell whether some name a record the file does not have (which is then counted by
+//! reading the file again: see count_attribute_index_faults).
+struct AttributeIndices {
+  std::int64_t highest[2] = {0, 0};  //!< highest positive index (1-based)
+  //! Lowest (records of the kind read before, in this reader + negative index): below 0 where a
+  //! relative index reaches before the reader's first record.
+  std::int64_t lowest[2] = {0, 0};
+};
+
 //! Reads the lines [first, last) of an OBJ file (all of it, or one part when `relative` is
 //! given: then negative indices are recorded there, not resolved).
 class ObjReader {
@@ -53,6 +63,17 @@ class ObjReader {
         relative_(relative),
         in_(first, last, true, true),
         released_(first) {}
+
+  //! The vt/vn indices met by read().
+  const AttributeIndices& attribute_indices() const { return attribute_indices_; }
+
+  //! Reads the file counting the corners whose vt or vn index names a record past the file's
+  //! `totals` (vt, vn) or, relative, before its first one.
+  std::size_t count_attribute_index_faults(const std::size_t totals[2]) {
+    totals_ = totals;
+    read();
+    return attribute_index_faults_;
+  }
 
   //! Reads until soup face `where.face` and throws the ReadError naming its line.
   [[noreturn]] void locate(const ObjIndexOutOfRange& where) {
@@ -199,18 +220,22 @@ class ObjReader {
                               ? " before its texture coordinate or normal"
                               : " (expected 'v', 'v/vt', 'v//vn' or 'v/vt/vn')")));
     }
-    // The texture coordinate and normal indices are checked for form only.
+    // The texture coordinate and normal indices: their form checked here, their range noted
+    // (attribute_index()).
+    bool names_no_record = false;
     for (int part = 0; end != last && part < 2; ++part) {
       if (*end != '/')
         break;
       ++end;
-      std::int64_t ignored = 0;
+      std::int64_t attribute = 0;
       if (end != last && *end != '/') {
-        end = parse_integer(end, last, ignored);
+        end = parse_integer(end, last, attribute);
         if (end == nullptr)
           break;
+        names_no_record = attribute_index(part, attribute) || names_no_record;
       }
     }
+    attribute_index_faults_ += names_no_record;
     if (end != last)
       fail(std::string(what) + " corner '" + clip(text) +
            "' is not 'v', 'v/vt', 'v//vn' or 'v/vt/vn'");
@@ -235,6 +260,21 @@ class ObjReader {
            counted(std::size_t(count), "vertex") + " come before it");
     }
     return static_cast<Index>(count + index);
+  }
+
+  // Notes vt (slot 0) or vn (slot 1) index `index` of a corner; true when counting faults
+  // (count_attribute_index_faults) and it names no record of the file.
+  bool attribute_index(int slot, std::int64_t index) {
+    const std::int64_t before =
+        static_cast<std::int64_t>(slot == 0 ? texture_coordinates_ : normals_);
+    if (totals_ != nullptr)
+      return index == 0 || index > std::int64_t(totals_[slot]) || before + index < 0;
+    AttributeIndices& r = attribute_indices_;
+    if (index > 0)
+      r.highest[slot] = std::max(r.highest[slot], index);
+    else  // a negative index, or 0 (no OBJ index), which is below every record
+      r.lowest[slot] = std::min(r.lowest[slot], index == 0 ? -1 : before + index);
+    return false;
   }
 
   void read_corners(const char* what) {
@@ -297,6 +337,9 @@ class ObjReader {
   TextScanner in_;
   std::vector<Index> corners_;
   std::size_t texture_coordinates_ = 0, normals_ = 0;
+  AttributeIndices attribute_indices_;
+  const std::size_t* totals_ = nullptr;  // vt and vn of the file: count_attribute_index_faults
+  std::size_t attribute_index_faults_ = 0;
   const ObjIndexOutOfRange* locate_ = nullptr;              // see locate()
   bool alpha_given_ = false;                                // some 'v' line has r g b a
   std::size_t w_not_one_ = 0, values_no_colour_ = 0;        // see vertex()
@@ -387,6 +430,7 @@ struct ObjPart {
   ReadInfo info;
   MeshAttributes attributes;
   RelativeCorners relative;
+  AttributeIndices attribute_indices;
 };
 
 //! Appends part `part` (read after `soup`'s vertices and faces) to `soup`, `info`, `attributes`.
@@ -451,7 +495,7 @@ bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attr
 //! appended in file order. False (outputs to be reset) if a part met an error or a negative
 //! index that reaches before the file's first vertex: the one-thread read names it.
 bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& info,
-                   MeshAttributes* attributes) {
+                   MeshAttributes* attributes, AttributeIndices& attribute_indices) {
   std::vector<ObjPart> parts(n);
   for (unsigned k = 0; k < n; ++k) {
     parts[k].first = k == 0 ? after_byte_order_mark(file.data(), file.end()) : parts[k - 1].last;
@@ -476,17 +520,35 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
     ObjPart& part = parts[k];
     try {
       if (k == 0) {
-        ObjReader(file, part.first, part.last, soup, info, attributes).read();
+        ObjReader reader(file, part.first, part.last, soup, info, attributes);
+        reader.read();
+        part.attribute_indices = reader.attribute_indices();
       } else {
         reserve_huge(part.soup, part.counts.vertices, part.counts.faces, part.counts.corners);
-        ObjReader(file, part.first, part.last, part.soup, part.info,
-                  attributes != nullptr ? &part.attributes : nullptr, &part.relative)
-            .read();
+        ObjReader reader(file, part.first, part.last, part.soup, part.info,
+                         attributes != nullptr ? &part.attributes : nullptr, &part.relative);
+        reader.read();
+        part.attribute_indices = reader.attribute_indices();
       }
     } catch (const ReadError&) {
       failed[k] = 1;
     }
   });
+  // The vt/vn indices of the whole file: relative ones of a part from the records before it.
+  std::int64_t before[2] = {0, 0};
+  for (unsigned k = 0; k < n; ++k) {
+    const AttributeIndices& part = parts[k].attribute_indices;
+    for (int slot = 0; slot < 2; ++slot) {
+      attribute_indices.highest[slot] =
+          std::max(attribute_indices.highest[slot], part.highest[slot]);
+      attribute_indices.lowest[slot] =
+          std::min(attribute_indices.lowest[slot], before[slot] + part.lowest[slot]);
+    }
+    const MeshAttributes& counted =
+        k == 0 && attributes != nullptr ? *attributes : parts[k].attributes;
+    before[0] += static_cast<std::int64_t>(counted.texture_coordinates);
+    before[1] += static_cast<std::int64_t>(counted.normals);
+  }
   for (unsigned k = 0; k < n; ++k) {
     if (failed[k] || (k > 0 && !append_part(parts[k], soup, info, attributes)))
       return false;
@@ -508,11 +570,13 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   const unsigned n = static_cast<unsigned>(
       std::clamp<std::size_t>(file.size() / (std::size_t(1) << 20), 1, reading_threads()));
   bool read = false;
+  AttributeIndices attribute_indices;
   if (n > 1) {
-    read = read_in_parts(file, n, soup, info, attributes);
+    read = read_in_parts(file, n, soup, info, attributes, attribute_indices);
     if (!read) {
       soup = Soup();
       info = ReadInfo();
+      attribute_indices = AttributeIndices();
       if (attributes != nullptr)
         *attributes = MeshAttributes();
     }
@@ -520,9 +584,30 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   if (!read) {
     const RecordCounts counts = estimate_records(file.data(), file.end());
     reserve_huge(soup, counts.vertices, counts.faces, counts.corners);
-    ObjReader(file, after_byte_order_mark(file.data(), file.end()), file.end(), soup, info,
-              attributes)
-        .read();
+    ObjReader reader(file, after_byte_order_mark(file.data(), file.end()), file.end(), soup, info,
+                     attributes);
+    reader.read();
+    attribute_indices = reader.attribute_indices();
+  }
+  if (attributes == nullptr)
+    return;
+  // A vt or vn index the file has no record for: counted by reading the file once more (only
+  // such a broken file pays for it), and named as read past (MeshBridge keeps neither).
+  const std::size_t totals[2] = {attributes->texture_coordinates, attributes->normals};
+  bool faulty = false;
+  for (int slot = 0; slot < 2; ++slot) {
+    faulty = faulty || attribute_indices.lowest[slot] < 0 ||
+             attribute_indices.highest[slot] > static_cast<std::int64_t>(totals[slot]);
+  }
+  if (faulty) {
+    Soup again;
+    ReadInfo ignored;
+    const std::size_t corners = ObjReader(file, after_byte_order_mark(file.data(), file.end()),
+                                          file.end(), again, ignored, nullptr)
+                                    .count_attribute_index_faults(totals);
+    add_not_kept(*attributes,
+                 {"OBJ texture coordinate (vt) or normal (vn) indices the file has no record for",
+                  corners, "corner"});
   }
 }
 
