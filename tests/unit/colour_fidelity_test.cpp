@@ -179,6 +179,34 @@ TEST_F(ColourFidelity, ply_strip_triangles_have_no_colour_and_off_writes_none_fo
                                       "face a colour or none"}));
 }
 
+TEST_F(ColourFidelity, channels_a_file_lacked_are_named_where_the_format_needs_all_three) {
+  MeshAttributes a;
+  a.vertex_colors.resize(3);
+  a.vertex_color_channels = kRedChannel;
+  a.face_colors.resize(1);
+  a.face_color_channels = kRedChannel | kBlueChannel | kAlphaChannel;
+  const auto off = describe_unwritten("x.off", a);
+  ASSERT_EQ(off.size(), 2u);
+  EXPECT_EQ(off[0],
+            "vertex colours written with green and blue 0: the file gave no green and blue, and "
+            "OFF colours have red, green and blue");
+  EXPECT_EQ(off[1],
+            "face colours written with green 0: the file gave no green, and OFF colours "
+            "have red, green and blue");
+  const auto obj = describe_unwritten("x.obj", a);  // OBJ holds no face colours at all
+  ASSERT_EQ(obj.size(), 2u);
+  EXPECT_EQ(obj[0], "face colours not written: OBJ holds none");
+  EXPECT_EQ(obj[1].substr(0, 44), "vertex colours written with green and blue 0");
+  EXPECT_TRUE(describe_unwritten("x.ply", a).empty());  // PLY writes the file's own channels
+  // Read from a PLY of red only.
+  const Reading r = read(write("red.ply",
+                               "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                               "property float y\nproperty float z\nproperty uchar red\n"
+                               "element face 1\nproperty list uchar int vertex_indices\n"
+                               "end_header\n0 0 0 200\n1 0 0 100\n0 1 0 50\n3 0 1 2\n"));
+  EXPECT_EQ(describe_unwritten("red.off", r.attributes).size(), 1u);
+}
+
 TEST_F(ColourFidelity, describe_unwritten_names_what_each_format_cannot_hold) {
   MeshAttributes a;
   EXPECT_TRUE(describe_unwritten("x.stl", a).empty());

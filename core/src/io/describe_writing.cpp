@@ -32,6 +32,22 @@ const char* name_of(detail::Format format) {
   return "this format";
 }
 
+//! The red, green and blue channels missing from `channels` (ColorChannel bits), e.g. "green
+//! and blue"; empty when all three are there.
+std::string missing_rgb(std::uint8_t channels) {
+  std::vector<const char*> names;
+  if ((channels & kRedChannel) == 0)
+    names.push_back("red");
+  if ((channels & kGreenChannel) == 0)
+    names.push_back("green");
+  if ((channels & kBlueChannel) == 0)
+    names.push_back("blue");
+  std::string text;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    text += std::string(k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return text;
+}
+
 std::size_t missing_count(const std::vector<bool>& missing) {
   return static_cast<std::size_t>(std::count(missing.begin(), missing.end(), true));
 }
@@ -66,6 +82,19 @@ std::vector<std::string> describe_unwritten(const std::string& path,
     lost.push_back("vertex colours not written" + none);
   if (face_colors && (format == Format::obj || format == Format::stl || format == Format::threemf))
     lost.push_back("face colours not written" + none);
+  // OBJ and OFF colours are red, green and blue: a channel the file lacked (a PLY of red only)
+  // is written as 0.
+  const bool rgb_format = format == Format::obj || format == Format::off;
+  const std::string vertex_missing = missing_rgb(attributes.vertex_color_channels);
+  if (vertex_colors && rgb_format && !vertex_missing.empty()) {
+    lost.push_back("vertex colours written with " + vertex_missing + " 0: the file gave no " +
+                   vertex_missing + ", and " + name + " colours have red, green and blue");
+  }
+  const std::string face_missing = missing_rgb(attributes.face_color_channels);
+  if (face_colors && format == Format::off && !face_missing.empty()) {
+    lost.push_back("face colours written with " + face_missing + " 0: the file gave no " +
+                   face_missing + ", and OFF colours have red, green and blue");
+  }
   // A colour on every element or none: the elements the file left without one get white.
   const std::size_t vertices_without = missing_count(attributes.vertex_color_missing);
   if (vertex_colors && vertices_without > 0 && (format == Format::ply || format == Format::off)) {
