@@ -312,13 +312,23 @@ TEST_F(ParallelReading, obj_vt_and_vn_indices_without_a_record_are_counted_in_pa
     std::ofstream out(broken, std::ios::binary);
     out << std::ifstream(clean, std::ios::binary).rdbuf();
     // Relative vt -2 and vn -3 reach back to records of earlier parts: fine. Then a vt past the
-    // last, a vn before the first, an index 0 (one corner with two faults counts once).
-    out << "f 1/-2/-3 2/1 3//2\nf 1/999999 2/1/999999 3/0/-999999\nf 4/1 5//-99999999 6\n";
+    // last, a vn before the first, an index 0 (one corner with two faults counts once); an
+    // index 0 alone in the last part.
+    out << "f 1/-2/-3 2/1 3//2\nf 1/999999 2/1/999999 3/0/-999999\nf 4/1 5//-99999999 6\n"
+        << "f 7/1/0 8/1/1 9/1/1\n";
   }
   const Reading one = read_with(1, broken);
   ASSERT_EQ(one.error, "");
-  EXPECT_EQ(no_record(one), 4u);
+  EXPECT_EQ(no_record(one), 5u);
   expect_same_for_every_thread_count(broken);
+  // The only fault an index 0 in the last part: found by every thread count.
+  const std::string zero = path("zero.obj");
+  {
+    std::ofstream out(zero, std::ios::binary);
+    out << std::ifstream(clean, std::ios::binary).rdbuf() << "f 1/1 2/0 3/1\n";
+  }
+  for (unsigned threads : {1u, 2u, 4u})
+    EXPECT_EQ(no_record(read_with(threads, zero)), 1u) << threads;
 }
 
 TEST_F(ParallelReading, obj_whose_faces_the_size_estimate_misses_reads_every_record) {

@@ -48,6 +48,7 @@ struct AttributeIndices {
   //! Lowest (records of the kind read before, in this reader + negative index): below 0 where a
   //! relative index reaches before the reader's first record.
   std::int64_t lowest[2] = {0, 0};
+  bool zero = false;  //!< some index is 0 (OBJ counts from 1, or from -1 back)
 };
 
 //! Reads the lines [first, last) of an OBJ file (all of it, or one part when `relative` is
@@ -272,8 +273,10 @@ class ObjReader {
     AttributeIndices& r = attribute_indices_;
     if (index > 0)
       r.highest[slot] = std::max(r.highest[slot], index);
-    else  // a negative index, or 0 (no OBJ index), which is below every record
-      r.lowest[slot] = std::min(r.lowest[slot], index == 0 ? -1 : before + index);
+    else if (index < 0)
+      r.lowest[slot] = std::min(r.lowest[slot], before + index);
+    else
+      r.zero = true;
     return false;
   }
 
@@ -538,6 +541,7 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
   std::int64_t before[2] = {0, 0};
   for (unsigned k = 0; k < n; ++k) {
     const AttributeIndices& part = parts[k].attribute_indices;
+    attribute_indices.zero = attribute_indices.zero || part.zero;
     for (int slot = 0; slot < 2; ++slot) {
       attribute_indices.highest[slot] =
           std::max(attribute_indices.highest[slot], part.highest[slot]);
@@ -594,7 +598,7 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   // A vt or vn index the file has no record for: counted by reading the file once more (only
   // such a broken file pays for it), and named as read past (MeshBridge keeps neither).
   const std::size_t totals[2] = {attributes->texture_coordinates, attributes->normals};
-  bool faulty = false;
+  bool faulty = attribute_indices.zero;
   for (int slot = 0; slot < 2; ++slot) {
     faulty = faulty || attribute_indices.lowest[slot] < 0 ||
              attribute_indices.highest[slot] > static_cast<std::int64_t>(totals[slot]);
