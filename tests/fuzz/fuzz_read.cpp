@@ -13,6 +13,7 @@
 #include "meshbridge/validate.h"
 
 #include <unistd.h>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -95,12 +96,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const char* const kOutputs[] = {"_out.obj", "_out.off", "_out.ply", "_out.stl"};
   const int output = (data[0] >> 3) % 4;
   const std::string out = kBase + kOutputs[output];
+  // STL stores 32-bit floats: a coordinate beyond their range is refused, not written as inf.
+  bool beyond_floats = false;
+  for (const Point& p : result.mesh.soup.positions) {
+    for (int i = 0; i < 3; ++i)
+      beyond_floats = beyond_floats || std::isinf(static_cast<float>(p[i]));
+  }
   try {
     write_mesh(out, result.mesh, &attributes);
   } catch (const WriteError& error) {
+    if (output == 3 && beyond_floats)
+      return 0;
     std::fprintf(stderr, "%s\n", error.what());
     fuzz::fail("write_mesh failed on a repaired mesh");
   }
+  fuzz::check(!(output == 3 && beyond_floats), "STL written with a coordinate beyond floats");
   const WrittenOutput written = describe_written(out, result.mesh.soup, attributes);
   Soup back;
   MeshAttributes back_attributes;

@@ -280,6 +280,34 @@ TEST_F(PlyStlIo, a_binary_stl_of_double_positions_reads_and_writes_back_to_the_s
   }
 }
 
+TEST_F(PlyStlIo, coordinates_beyond_32_bit_floats_are_refused_by_stl_and_3mf_not_written_inf) {
+  Soup soup;
+  soup.positions = {Point(0, 0, 0), Point(1e300, 0, 0), Point(0, 1, 0)};
+  soup.add_polygon({0, 1, 2});
+  for (const char* name : {"huge.stl", "huge_ascii.stl", "huge.3mf"}) {
+    SCOPED_TRACE(name);
+    WriteOptions options;
+    options.binary = std::string(name) != "huge_ascii.stl";
+    const std::string file = path(name);
+    try {
+      write_mesh(file, as_mesh(soup), nullptr, options);
+      ADD_FAILURE() << "written";
+    } catch (const WriteError& e) {
+      EXPECT_NE(std::string(e.what()).find(file + ": vertex 2 has coordinate 1e+300, beyond what "
+                                                  "the 32-bit floats of"),
+                std::string::npos)
+          << e.what();
+    }
+    EXPECT_FALSE(std::ifstream(file).good());  // nothing left behind
+  }
+  // Formats that hold doubles keep it; 3.4e38 itself still fits a float.
+  write_mesh(path("huge.ply"), as_mesh(soup));
+  EXPECT_EQ(read_soup(path("huge.ply")).positions[1][0], 1e300);
+  soup.positions[1][0] = 3.4e38;
+  write_mesh(path("big.stl"), as_mesh(soup));
+  EXPECT_EQ(read_soup(path("big.stl")).positions[1][0], double(3.4e38f));
+}
+
 // --- what OpenMesh's readers lose ------------------------------------------------------------
 
 TEST_F(PlyStlIo, ply_tristrips_with_restarts_alternate_winding_and_skip_joins) {

@@ -30,6 +30,7 @@ void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
                const WriteOptions& /*options*/) {
   const Soup& soup = mesh.soup;
   const std::string& path = out.target();  // for error messages
+  require_float_range(soup, path, "3MF");
   std::vector<NMR::MODELMESHVERTEX> vertices(soup.num_vertices());
   for (std::size_t v = 0; v < soup.num_vertices(); ++v)
     for (int a = 0; a < 3; ++a)

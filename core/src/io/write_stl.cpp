@@ -7,6 +7,7 @@
 
 #include "meshbridge/errors.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -68,10 +69,27 @@ Point stored_point(const unsigned char* at) {
 
 }  // namespace
 
+void require_float_range(const Soup& soup, const std::string& path, const char* format) {
+  for (std::size_t v = 0; v < soup.positions.size(); ++v) {
+    for (int i = 0; i < 3; ++i) {
+      const double x = soup.positions[v][i];
+      if (std::isinf(static_cast<float>(x))) {
+        char number[32];
+        char* end = std::to_chars(number, number + sizeof number, x).ptr;
+        throw WriteError(path + ": vertex " + std::to_string(v + 1) + " has coordinate " +
+                         std::string(number, end) + ", beyond what the 32-bit floats of " + format +
+                         " hold (at most 3.4e38): write PLY, OBJ or OFF, which keep it");
+      }
+    }
+  }
+}
+
 void write_stl(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*,
                const WriteOptions& options) {
   const Soup& soup = mesh.soup;
   const std::uint64_t triangles = triangle_count(soup);
+  // Binary STL stores floats; ASCII STL readers (MeshBridge's too) take its numbers as floats.
+  require_float_range(soup, out.target(), "STL");
   if (options.binary) {
     if (triangles > 0xFFFFFFFFu) {
       throw WriteError(out.target() + ": " + std::to_string(triangles) +
