@@ -183,7 +183,10 @@ def write(path: Union[str, "os.PathLike[str]"], mesh: Any, faces: Optional[Faces
     OFF to keep the repair.
 
     Any soup is written as it is (a non-manifold one too: repair it first to write a manifold
-    mesh). Raises :class:`WriteError` naming the file.
+    mesh). Raises :class:`InvalidMeshError` (an index out of range, a face of fewer than 3
+    corners, a non-finite coordinate) or :class:`WriteError` (a coordinate beyond the 32-bit
+    floats of STL and 3MF, a triangle that names a vertex twice for 3MF, no permission...),
+    naming the file; nothing is written then.
     """
     target = _path(path)
     edges, vertices = _core.write(target, _soup(mesh, faces))

@@ -188,6 +188,18 @@ def test_read_names_what_a_soup_does_not_hold(tmp_path):
     assert meshbridge.Soup(soup.vertices, soup.faces).not_held == []
 
 
+def test_write_refuses_what_it_cannot_write_and_leaves_no_file(tmp_path):
+    v = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
+    for name in ("a.stl", "a.obj", "a.ply", "a.off", "a.3mf"):
+        with pytest.raises(meshbridge.InvalidMeshError, match=r"not written: face 0, corner 2"):
+            meshbridge.write(tmp_path / name, v, [[0, 1, 1000000]])
+    with pytest.raises(meshbridge.WriteError, match=r"vertex 0 has coordinate 1e\+300"):
+        meshbridge.write(tmp_path / "huge.stl", [[1e300, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+    with pytest.raises(meshbridge.WriteError, match=r"face 0 names a vertex twice"):
+        meshbridge.write(tmp_path / "degenerate.3mf", v, [[0, 1, 1]])
+    assert sorted(p.name for p in tmp_path.iterdir()) == []
+
+
 def test_stl_that_welds_the_repair_back_warns_with_counts(tmp_path):
     result = meshbridge.repair(meshbridge.read(MODELS / "twocubes.obj"))
     with pytest.warns(UserWarning, match=r"re-creates 1 singular edge and 2 singular vertices"):

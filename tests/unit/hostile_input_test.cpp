@@ -621,11 +621,11 @@ TEST_F(HostileFile, binary_stl_with_nan_and_infinite_coordinates) {
   triangles[1][4] = nan;
   // OpenMesh would weld the NaN corner onto an arbitrary vertex (NaN compares equal to all).
   expect_error<InvalidSoupError>("nan.stl", binary_stl(triangles, 4),
-                                 "binary STL triangle 1, corner 1 has a non-finite coordinate");
+                                 "binary STL facet 2, corner 2 has a non-finite coordinate");
   triangles = kTetrahedron;
   triangles[2][0] = inf;
   expect_error<InvalidSoupError>("inf.stl", binary_stl(triangles, 4),
-                                 "binary STL triangle 2, corner 0 has a non-finite coordinate");
+                                 "binary STL facet 3, corner 1 has a non-finite coordinate");
 }
 
 TEST_F(HostileFile, binary_stl_whose_header_starts_with_solid) {

@@ -154,14 +154,15 @@ TEST_F(ParallelReading, binary_stl_names_the_first_non_finite_corner_in_file_ord
   std::fstream bytes(file, std::ios::in | std::ios::out | std::ios::binary);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
-  // Triangle 40000 (last part), then triangle 20000 (a middle part), corner 1, y.
+  // Triangle 40000 (last part), then triangle 20000 (a middle part), corner 1, y (0-based;
+  // messages count from 1).
   for (const auto& [triangle, value] : {std::pair<long, float>{40000, inf}, {20000, nan}}) {
     bytes.seekp(84 + 50 * triangle + 12 + 12 + 4);
     bytes.write(reinterpret_cast<const char*>(&value), 4);
   }
   bytes.close();
   const Reading one = read_with(1, file);
-  EXPECT_NE(one.error.find("triangle 20000, corner 1 has a non-finite"), std::string::npos)
+  EXPECT_NE(one.error.find("facet 20001, corner 2 has a non-finite"), std::string::npos)
       << one.error;
   expect_same_for_every_thread_count(file);
 }

@@ -293,7 +293,7 @@ TEST_F(PlyStlIo, coordinates_beyond_32_bit_floats_are_refused_by_stl_and_3mf_not
       write_mesh(file, as_mesh(soup), nullptr, options);
       ADD_FAILURE() << "written";
     } catch (const WriteError& e) {
-      EXPECT_NE(std::string(e.what()).find(file + ": vertex 2 has coordinate 1e+300, beyond what "
+      EXPECT_NE(std::string(e.what()).find(file + ": vertex 1 has coordinate 1e+300, beyond what "
                                                   "the 32-bit floats of"),
                 std::string::npos)
           << e.what();

@@ -19,6 +19,7 @@
 #include <dirent.h>
 #include <stdlib.h>
 #include <unistd.h>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -331,6 +332,26 @@ TEST_F(TextFormats, failed_write_leaves_no_file_and_the_old_one_untouched) {
     }
   }
   EXPECT_THROW(write_mesh(dir_ + "/no_such_dir/x.obj", mesh), WriteError);
+  // A soup validate_soup() refuses is not written in any format (an index past the positions
+  // made the writers read beyond them): the error names the file and the corner or vertex.
+  for (const char* name : {"keep.off", "keep.obj", "keep.ply", "keep.stl", "keep.3mf"}) {
+    IndexedMesh broken;
+    broken.soup = triangle_soup();
+    broken.soup.corner_vertices[2] = 1000000;
+    try {
+      write_mesh(dir_ + "/" + name, broken);
+      ADD_FAILURE() << name << ": no error";
+    } catch (const InvalidSoupError& e) {
+      EXPECT_NE(
+          std::string(e.what()).find(name + std::string(": not written: face 0, corner 2: "
+                                                        "vertex index 1000000 is out of range")),
+          std::string::npos)
+          << e.what();
+    }
+    broken.soup = triangle_soup();
+    broken.soup.positions[1][2] = std::nan("");
+    EXPECT_THROW(write_mesh(dir_ + "/" + name, broken), InvalidSoupError) << name;
+  }
   std::ifstream in(target);
   std::string line;
   std::getline(in, line);

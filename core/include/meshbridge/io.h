@@ -243,6 +243,8 @@ struct WriteOptions {
 //! on any error the previous file at `path` is untouched and no temporary file stays. A `path`
 //! that is a device or a pipe (/dev/stdout, a FIFO) is written in place, never replaced
 //! (written_in_place()); through a symbolic link, the file it points to is replaced.
+//! \throw InvalidSoupError naming the path and the face, corner or vertex when `mesh.soup` fails
+//!        validate_soup() (nothing is written)
 //! \throw WriteError naming the path and the reason
 void write_mesh(const std::string& path, const IndexedMesh& mesh,
                 const MeshAttributes* attributes = nullptr, const WriteOptions& options = {});

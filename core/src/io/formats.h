@@ -80,9 +80,9 @@ void write_ply(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
 void write_stl(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
                const WriteOptions& options);
 //! For writers that store positions as 32-bit floats (STL, 3MF): throws WriteError naming
-//! `path`, the first vertex whose coordinate a float cannot hold (beyond +-3.4e38, which a float
-//! would turn into infinity) and the formats that can. Rounding within the range is not an
-//! error (describe_written() names it).
+//! `path`, the first vertex (0-based, as validate_soup() names them) whose coordinate a float
+//! cannot hold (beyond +-3.4e38, which a float would turn into infinity) and the formats that can.
+//! Rounding within the range is not an error (describe_written() names it).
 void require_float_range(const Soup& soup, const std::string& path, const char* format);
 
 //! 3MF through lib3mf 1.8 into `out.temporary_path()`: one mesh object with every polygon fanned

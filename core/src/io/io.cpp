@@ -3,6 +3,7 @@
 // every reader produced the same way (formats.h states the contract).
 
 #include "meshbridge/io.h"
+#include "meshbridge/validate.h"
 
 #include "io/atomic_write.h"
 #include "io/formats.h"
@@ -184,6 +185,13 @@ void write_mesh(const std::string& path, const IndexedMesh& mesh, const MeshAttr
   const Format format = format_of(path);
   if (format == Format::unknown)
     throw WriteError(path + ": unknown format (expected .obj, .off, .ply, .stl or .3mf)");
+  // A writer indexes positions by every corner: an index out of range would write (or crash on)
+  // memory beyond them, and a non-finite coordinate a file no reader takes back.
+  try {
+    validate_soup(mesh.soup);
+  } catch (const InvalidSoupError& error) {
+    throw InvalidSoupError(path + ": not written: " + error.what());
+  }
   check_attributes(path, mesh, attributes);
   detail::write_atomically(path, [&](detail::AtomicOutput& out) {
     switch (format) {

@@ -92,8 +92,8 @@ BinaryFacetNotes read_binary(const MappedFile& file, std::uint32_t triangles, So
       // All exponent bits set: infinite or NaN.
       if ((bits[0] & 0x7F800000u) == 0x7F800000u || (bits[1] & 0x7F800000u) == 0x7F800000u ||
           (bits[2] & 0x7F800000u) == 0x7F800000u) {
-        throw InvalidSoupError(file.path() + ": binary STL triangle " + std::to_string(c / 3) +
-                               ", corner " + std::to_string(c % 3) +
+        throw InvalidSoupError(file.path() + ": binary STL facet " + std::to_string(c / 3 + 1) +
+                               ", corner " + std::to_string(c % 3 + 1) +
                                " has a non-finite coordinate");
       }
       for (int k = 0; k < 3; ++k)

@@ -38,8 +38,15 @@ void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
   std::vector<NMR::MODELMESHTRIANGLE> triangles;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     const PolygonView p = soup.polygon(f);
-    for (std::size_t i = 1; i + 1 < p.size(); ++i)
+    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+      // lib3mf refuses a triangle that names a vertex twice ("cannot store the mesh").
+      if (p[0] == p[i] || p[i] == p[i + 1] || p[0] == p[i + 1]) {
+        throw WriteError(path + ": face " + std::to_string(f) +
+                         " names a vertex twice (a degenerate triangle), which 3MF refuses: "
+                         "repair sets such faces aside or splits them");
+      }
       triangles.push_back({{p[0], p[i], p[i + 1]}});
+    }
   }
   Released model, object, item, writer;
   check(NMR::lib3mf_createmodel(&model.instance), path, "create a model");

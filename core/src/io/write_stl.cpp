@@ -76,7 +76,7 @@ void require_float_range(const Soup& soup, const std::string& path, const char* 
       if (std::isinf(static_cast<float>(x))) {
         char number[32];
         char* end = std::to_chars(number, number + sizeof number, x).ptr;
-        throw WriteError(path + ": vertex " + std::to_string(v + 1) + " has coordinate " +
+        throw WriteError(path + ": vertex " + std::to_string(v) + " has coordinate " +
                          std::string(number, end) + ", beyond what the 32-bit floats of " + format +
                          " hold (at most 3.4e38): write PLY, OBJ or OFF, which keep it");
       }
