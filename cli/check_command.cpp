@@ -7,6 +7,7 @@
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
+#include "meshbridge/read_accounting.h"
 #include "meshbridge/report_json.h"
 
 #include <CLI/CLI.hpp>
@@ -41,6 +42,7 @@ int run_check(const CheckArguments& arguments) {
     const Soup soup = read_soup(path, &info);
     progress.stage(Stage::detect, 0);
     report = detect_defects(soup);
+    count_records_without_corners(info, report);  // face records with no corner: set aside too
     if (!arguments
              .json) {  // what repair's gap closing would do (the report is of the file as read)
       gaps = preview_close_gaps(soup, weld, &report);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
 #include "meshbridge/counted.h"
+#include "meshbridge/read_accounting.h"
 #include "paths.h"
 #include "pictures.h"
 #include "printer_options.h"
@@ -113,6 +114,7 @@ int run_repair(RepairArguments& arguments) {
     } else {
       result = repair(soup, options);
     }
+    count_records_without_corners(info, result.report);  // face records with no corner
     progress.stage(Stage::write, 0);
     apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
                    separate_summary);

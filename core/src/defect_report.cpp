@@ -9,7 +9,8 @@ bool DefectReport::has_defects() const {
   // Isolated vertices and zero-area faces are listed, not defects (see the header).
   return !singular_edges.empty() || num_singular_vertices() > 0 || !boundary_edges.empty() ||
          !degenerate_faces.empty() || !excluded_faces.empty() || !duplicate_faces.empty() ||
-         !inconsistent_edges.empty() || num_nonorientable_components > 0;
+         !inconsistent_edges.empty() || num_nonorientable_components > 0 ||
+         records_without_corners > 0;
 }
 
 namespace {
@@ -37,9 +38,9 @@ std::string to_text(const DefectReport& r, std::size_t max_listed) {
   std::ostringstream out;
   const auto index = [&](Index i) { out << i; };
   const auto pair = [&](const VertexPair& p) { out << p.v0 << "-" << p.v1; };
-  out << "vertices " << r.num_vertices << ", faces " << r.num_faces << ", edges " << r.num_edges
-      << ", components " << r.num_components << ", Euler characteristic " << r.euler_characteristic
-      << ", watertight " << (r.watertight ? "yes" : "no") << "\n";
+  out << "vertices " << r.num_vertices << ", faces " << r.num_faces_of_file() << ", edges "
+      << r.num_edges << ", components " << r.num_components << ", Euler characteristic "
+      << r.euler_characteristic << ", watertight " << (r.watertight ? "yes" : "no") << "\n";
   list(out, "singular edges", r.singular_edges, max_listed, [&](const SingularEdge& e) {
     out << e.vertices.v0 << "-" << e.vertices.v1 << " (" << e.contenders << " faces)";
   });
@@ -52,6 +53,9 @@ std::string to_text(const DefectReport& r, std::size_t max_listed) {
   list(out, "isolated vertices", r.isolated_vertices, max_listed, index);
   list(out, "degenerate faces (repeated vertex)", r.degenerate_faces, max_listed, index);
   list(out, "faces set aside (< 3 distinct vertices)", r.excluded_faces, max_listed, index);
+  if (r.records_without_corners > 0)
+    out << "  face records without any corner (set aside, not in the list): "
+        << r.records_without_corners << "\n";
   list(out, "zero-area faces", r.zero_area_faces, max_listed, index);
   list(out, "duplicate faces", r.duplicate_faces, max_listed, index);
   return out.str();

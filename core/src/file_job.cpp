@@ -3,6 +3,7 @@
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
+#include "meshbridge/read_accounting.h"
 
 #include <unistd.h>
 
@@ -219,6 +220,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
       result.reading = describe_reading(info);
     RepairResult repaired = repair(std::move(soup), options.repair);  // unchanged: no copy
     soup = Soup();
+    count_records_without_corners(info, repaired.report);  // face records with no corner
     const fs::path folder = fs::path(job.output).parent_path();
     if (!folder.empty()) {
       fs::create_directories(folder, error);

@@ -43,7 +43,7 @@ void add_written(Json& out, const WrittenOutput* written) {
 //! The counts of a detection report, then its element lists on request.
 void add_defects(Json& out, const DefectReport& r, bool elements) {
   out["vertices"] = r.num_vertices;
-  out["faces"] = r.num_faces;
+  out["faces"] = r.num_faces_of_file();
   out["edges"] = r.num_edges;
   out["components"] = r.num_components;
   out["euler_characteristic"] = r.euler_characteristic;
@@ -63,7 +63,7 @@ void add_defects(Json& out, const DefectReport& r, bool elements) {
   out["nonorientable_components"] = r.num_nonorientable_components;
   out["isolated_vertices"] = r.isolated_vertices.size();
   out["degenerate_faces"] = r.degenerate_faces.size();
-  out["faces_set_aside"] = r.excluded_faces.size();
+  out["faces_set_aside"] = r.num_faces_set_aside();
   out["zero_area_faces"] = r.zero_area_faces.size();
   out["duplicate_faces"] = r.duplicate_faces.size();
   if (!elements)

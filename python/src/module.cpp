@@ -11,6 +11,7 @@
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/errors.h"
 #include "meshbridge/io.h"
+#include "meshbridge/read_accounting.h"
 #include "meshbridge/repair.h"
 #include "meshbridge/stl_round_trip.h"
 #include "meshbridge/validate.h"
@@ -292,8 +293,10 @@ PYBIND11_MODULE(_core, m) {
       [](const PySoup& soup, bool elements) {
         py::gil_scoped_release release;
         validate_soup(soup.soup);
-        return check_json(soup.path, detect_defects(soup.soup),
-                          soup.path.empty() ? nullptr : &soup.info, elements);
+        DefectReport report = detect_defects(soup.soup);
+        if (!soup.path.empty())
+          count_records_without_corners(soup.info, report);
+        return check_json(soup.path, report, soup.path.empty() ? nullptr : &soup.info, elements);
       },
       py::arg("soup"), py::arg("elements") = false);
 
@@ -305,6 +308,8 @@ PYBIND11_MODULE(_core, m) {
         {
           py::gil_scoped_release release;
           result = std::make_unique<RepairResult>(repair(soup.soup, options));
+          if (!soup.path.empty())
+            count_records_without_corners(soup.info, result->report);
           json = repair_json(soup.path, result->report, soup.path.empty() ? nullptr : &soup.info,
                              elements);
         }

@@ -61,6 +61,19 @@ check_exit_codes)
   expect_in "$work/out" "singular edges: 1"
   expect_exit 2 "$mb" check "$work/missing.obj"
   expect_in "$work/err" "meshbridge check: error: $work/missing.obj: cannot read: no such file"
+  # A face record with no corner (OFF "0") is a face of the file set aside: a defect, as one
+  # with 1 or 2 corners is (check exits 1, batch calls the file repaired, not clean).
+  printf 'OFF\n4 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n0\n' \
+    >"$work/cornerless.off"
+  expect_exit 1 "$mb" check --json "$work/cornerless.off"
+  [ "$(json_field "$work/out" faces)/$(json_field "$work/out" faces_set_aside)" = 5/1 ] ||
+    fail "check --json of a face record without corners: faces/faces_set_aside"
+  [ "$(json_field "$work/out" has_defects)" = true ] || fail "cornerless record: has_defects"
+  mkdir -p "$work/cornerless_in" && cp "$work/cornerless.off" "$work/cornerless_in/"
+  expect_exit 0 "$mb" batch "$work/cornerless_in" "$work/cornerless_out" --json
+  [ "$(json_line_field "$work/out" 0 status)/$(json_line_field "$work/out" 0 faces_in)" = \
+    repaired/5 ] || fail "batch of a face record without corners: status/faces_in"
+  expect_exit 0 "$mb" check "$work/cornerless_out/cornerless.off"
   # With --json, stdout still holds one object a script can parse: the failure and its reason.
   expect_exit 2 "$mb" check --json "$work/missing.obj"
   [ "$(json_field "$work/out" status)" = failed ] || fail "check --json of a missing file: status"

@@ -157,6 +157,15 @@ def test_read_warns_about_records_not_kept_as_they_are(tmp_path):
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # a file read as it is: no warning
         assert meshbridge.read(MODELS / "twocubes.obj").reading is None
+    # A record with no corner at all is in no soup, yet a face of the file set aside.
+    bare = tmp_path / "bare.obj"
+    bare.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf\n")
+    with pytest.warns(UserWarning, match=r"1 without any corner"):
+        soup = meshbridge.read(bare)
+    report = meshbridge.check(soup)
+    assert (report["faces"], report["faces_set_aside"], report["has_defects"]) == (2, 1, True)
+    repaired = meshbridge.repair(soup).report
+    assert (repaired["faces_in"], repaired["faces_set_aside"], repaired["faces_out"]) == (2, 1, 1)
 
 
 def test_read_names_what_a_soup_does_not_hold(tmp_path):

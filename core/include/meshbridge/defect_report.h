@@ -47,6 +47,18 @@ struct DefectReport {
   std::size_t num_components = 0;                //!< connected through every contender
   long long euler_characteristic = 0;            //!< V - E + F over the used vertices
   bool watertight = false;  //!< closed 2-manifold: no boundary, singular or inconsistent element
+  //! Face records of the file with no corner at all, so in no soup (set by
+  //! count_records_without_corners(), 0 for a soup alone): counted in the reports' `faces` and
+  //! `faces_set_aside` (num_faces() and num_faces_set_aside()) and a defect, as the faces set
+  //! aside of the soup are; the element lists cannot name them.
+  std::size_t records_without_corners = 0;
+
+  //! The soup's polygons and the records without corners: the faces of the file.
+  std::size_t num_faces_of_file() const { return num_faces + records_without_corners; }
+  //! Faces set aside (< 3 distinct corners), the records without corners included.
+  std::size_t num_faces_set_aside() const {
+    return excluded_faces.size() + records_without_corners;
+  }
 
   std::size_t num_singular_vertices() const {
     return singular_edge_vertices.size() + pinch_vertices.size();
