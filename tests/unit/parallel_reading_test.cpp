@@ -330,6 +330,17 @@ TEST_F(ParallelReading, obj_vt_and_vn_indices_without_a_record_are_counted_in_pa
   }
   for (unsigned threads : {1u, 2u, 4u})
     EXPECT_EQ(no_record(read_with(threads, zero)), 1u) << threads;
+  // An l or p corner past the last vertex, in the last part: the same error for every count.
+  const std::string past = path("past.obj");
+  {
+    std::ofstream out(past, std::ios::binary);
+    out << std::ifstream(clean, std::ios::binary).rdbuf() << "p 99999999\n";
+  }
+  const Reading point = read_with(1, past);
+  EXPECT_NE(point.error.find("point corner '99999999' refers to vertex 99999999"),
+            std::string::npos)
+      << point.error;
+  expect_same_for_every_thread_count(past);
 }
 
 TEST_F(ParallelReading, obj_whose_faces_the_size_estimate_misses_reads_every_record) {

@@ -324,5 +324,28 @@ TEST_F(ReaderStrictness, ascii_ply_errors_name_the_line_that_does_not_match_the_
             1u);
 }
 
+TEST_F(ReaderStrictness, obj_l_and_p_and_ply_edges_past_the_last_vertex_are_errors) {
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  EXPECT_TRUE(contains(error_of("p.obj", triangle + "l 1 3\np 9\n"),
+                       "p.obj: line 6: point corner '9' refers to vertex 9, but the file has 3 "
+                       "vertices"));
+  EXPECT_TRUE(contains(error_of("l.obj", triangle + "l 2 100000\n"),
+                       "line 5: line corner '100000' refers to vertex 100000"));
+  // A forward reference to a vertex the file gives later is fine, as for faces.
+  EXPECT_EQ(read_soup(write("forward.obj", "l 1 4\n" + triangle + "v 1 1 0\n")).num_faces(), 1u);
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  EXPECT_TRUE(contains(error_of("e.ply", ply + "0 3\n"),
+                       "e.ply: PLY edge 1 of 1: property 'vertex2' is vertex index 3, but the file "
+                       "has 3 vertices"));
+  EXPECT_TRUE(contains(error_of("n.ply", ply + "-1 2\n"), "property 'vertex1' is vertex index -1"));
+  ReadInfo info;
+  EXPECT_EQ(read_soup(write("ok.ply", ply + "0 2\n"), &info).num_faces(), 1u);
+  EXPECT_EQ(info.dangling_edges, 1u);
+}
+
 }  // namespace
 }  // namespace meshbridge

@@ -49,6 +49,9 @@ struct AttributeIndices {
   //! relative index reaches before the reader's first record.
   std::int64_t lowest[2] = {0, 0};
   bool zero = false;  //!< some index is 0 (OBJ counts from 1, or from -1 back)
+  //! Highest positive vertex index of an `l` or `p` corner (faces are checked by
+  //! account_faces; these are counted, not kept, so they are checked here).
+  std::int64_t highest_element_vertex = 0;
 };
 
 //! Reads the lines [first, last) of an OBJ file (all of it, or one part when `relative` is
@@ -74,6 +77,14 @@ class ObjReader {
     totals_ = totals;
     read();
     return attribute_index_faults_;
+  }
+
+  //! Reads the file and throws the ReadError naming the first `l` or `p` corner whose vertex
+  //! index is past `vertices` (the file's count).
+  [[noreturn]] void locate_element_vertex_past(std::size_t vertices) {
+    element_vertex_limit_ = &vertices;
+    read();
+    throw ReadError(file_.path() + ": an l or p corner past the last vertex not found again");
   }
 
   //! Reads until soup face `where.face` and throws the ReadError naming its line.
@@ -246,6 +257,15 @@ class ObjReader {
     if (index > 0) {
       if (index > std::int64_t(kNoIndex))
         fail(std::string(what) + " corner '" + clip(text) + "': index beyond 32 bits");
+      if (std::string_view(what) != "face") {  // l and p: counted, so checked here
+        attribute_indices_.highest_element_vertex =
+            std::max(attribute_indices_.highest_element_vertex, index);
+        if (element_vertex_limit_ != nullptr && index > std::int64_t(*element_vertex_limit_)) {
+          fail(std::string(what) + " corner '" + clip(text) + "' refers to vertex " +
+               std::to_string(index) + ", but the file has " +
+               counted(*element_vertex_limit_, "vertex"));
+        }
+      }
       return static_cast<Index>(index - 1);
     }
     if (relative_ != nullptr) {  // resolved when the parts before are read
@@ -342,6 +362,7 @@ class ObjReader {
   std::size_t texture_coordinates_ = 0, normals_ = 0;
   AttributeIndices attribute_indices_;
   const std::size_t* totals_ = nullptr;  // vt and vn of the file: count_attribute_index_faults
+  const std::size_t* element_vertex_limit_ = nullptr;  // see locate_element_vertex_past()
   std::size_t attribute_index_faults_ = 0;
   const ObjIndexOutOfRange* locate_ = nullptr;              // see locate()
   bool alpha_given_ = false;                                // some 'v' line has r g b a
@@ -542,6 +563,8 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
   for (unsigned k = 0; k < n; ++k) {
     const AttributeIndices& part = parts[k].attribute_indices;
     attribute_indices.zero = attribute_indices.zero || part.zero;
+    attribute_indices.highest_element_vertex =
+        std::max(attribute_indices.highest_element_vertex, part.highest_element_vertex);
     for (int slot = 0; slot < 2; ++slot) {
       attribute_indices.highest[slot] =
           std::max(attribute_indices.highest[slot], part.highest[slot]);
@@ -592,6 +615,14 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
                      attributes);
     reader.read();
     attribute_indices = reader.attribute_indices();
+  }
+  // An l or p corner past the last vertex: an error naming its line, as for faces.
+  if (attribute_indices.highest_element_vertex > std::int64_t(soup.num_vertices())) {
+    Soup again;
+    ReadInfo ignored;
+    ObjReader(file, after_byte_order_mark(file.data(), file.end()), file.end(), again, ignored,
+              nullptr)
+        .locate_element_vertex_past(soup.num_vertices());
   }
   if (attributes == nullptr)
     return;

@@ -10,6 +10,7 @@
 #include "io/ply_header.h"
 #include "io/ply_sources.h"
 
+#include "meshbridge/counted.h"
 #include "meshbridge/errors.h"
 
 #include <cmath>
@@ -156,6 +157,14 @@ class PlyReader {
 
  private:
   std::string where() const { return file_.path() + ": "; }
+  //! The count the header declares for the `vertex` element.
+  std::uint64_t vertex_count() const {
+    for (const PlyElement& e : header_.elements) {
+      if (e.name == "vertex")
+        return e.count;
+    }
+    return 0;
+  }
   std::string item(const PlyElement& e, std::uint64_t i) const {
     return "PLY " + e.name + " " + std::to_string(i + 1) + " of " + std::to_string(e.count);
   }
@@ -399,6 +408,11 @@ class PlyReader {
           std::int64_t v = 0;
           if (!source.integer(p.type, v))
             throw unreadable(e, i, p);
+          if (v < 0 || static_cast<std::uint64_t>(v) >= vertex_count()) {
+            throw ReadError(where() + item(e, i) + ": property '" + p.name + "' is vertex index " +
+                            std::to_string(v) + ", but the file has " +
+                            counted(vertex_count(), "vertex") + " (indices count from 0)");
+          }
         } else if (is_color(r) && colors) {
           double value = 0;
           if (!source.real(p.type, value))
