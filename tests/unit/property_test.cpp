@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <sstream>
 
@@ -232,6 +233,38 @@ std::string mesh_digest(const IndexedMesh& mesh) {
 }
 
 }  // namespace
+
+// With orientation off no face is reversed, by any stage (stitching glued inconsistent sides by
+// reversing a component): every side of every output face, mapped to input vertices, is a side
+// of the input polygon it came from, running the same way.
+TEST(RepairProperties, without_orientation_no_face_is_reversed) {
+  RepairOptions options;
+  options.orient = false;
+  for (const models::NamedModel& model : models::canonical_models()) {
+    Soup soups[2] = {model.soup, model.soup};
+    for (std::size_t f = 0; f < soups[1].num_faces(); f += 2) {  // every other face reversed
+      auto first = soups[1].corner_vertices.begin() + soups[1].face_begin[f];
+      std::reverse(first, soups[1].corner_vertices.begin() + soups[1].face_begin[f + 1]);
+    }
+    for (const Soup& input : soups) {
+      SCOPED_TRACE(model.name);
+      const RepairResult result = repair(input, options);
+      EXPECT_EQ(result.report.faces_flipped, 0u);
+      const IndexedMesh& out = result.mesh;
+      for (std::size_t f = 0; f < out.soup.num_faces(); ++f) {
+        const PolygonView p = out.soup.polygon(f);
+        const PolygonView q = input.polygon(out.face_origin[f]);
+        for (std::size_t i = 0; i < p.size(); ++i) {
+          const Index a = out.vertex_origin[p[i]], b = out.vertex_origin[p[(i + 1) % p.size()]];
+          bool found = false;
+          for (std::size_t k = 0; k < q.size() && !found; ++k)
+            found = q[k] == a && q[(k + 1) % q.size()] == b;
+          EXPECT_TRUE(found) << "output face " << f << ", side " << a << "-" << b;
+        }
+      }
+    }
+  }
+}
 
 // repair(Soup&&) returns the soup itself when nothing changes (no grouping, no copy) and runs
 // the full repair otherwise; either way its mesh and report equal repair(const Soup&)'s. Closed

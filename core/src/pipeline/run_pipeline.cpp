@@ -58,7 +58,7 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
   //    component turned as a whole (closed ones outward).
   pairing.stitched.assign(soup.num_corners(), 0);
   if (options.stitch)
-    counts.sides_stitched = stitch(soup, grouped, pairing);
+    counts.sides_stitched = stitch(soup, grouped, pairing, options.orient);
   if (options.orient)
     orient_components(soup, grouped, pairing);
 

@@ -8,7 +8,8 @@
 
 namespace meshbridge::detail {
 
-std::size_t stitch(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing) {
+std::size_t stitch(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing,
+                   bool may_flip) {
   const CornerFaces& corner_face = grouped.corner_face;
   const EdgeBridges& bridges = grouped.bridges;
   std::vector<Index>& mate = pairing.mate;
@@ -63,10 +64,11 @@ std::size_t stitch(const Soup& soup, const GroupedSides& grouped, SidePairing& p
         const Index root_t = components.find(corner_face[t], flip_t);
         const bool along_s = runs_along(soup, corner_face, s) != (flipped[corner_face[s]] ^ flip_s);
         const bool along_t = runs_along(soup, corner_face, t) != (flipped[corner_face[t]] ^ flip_t);
-        if (root_s == root_t) {
-          if (along_s == along_t)
-            continue;
-        } else {
+        // Sides running the same way need one component reversed: never within a component,
+        // and across components only when faces may be flipped (orientation on).
+        if (along_s == along_t && (root_s == root_t || !may_flip))
+          continue;
+        if (root_s != root_t) {
           // Keep the larger component as it is; on a tie the one whose face at this edge has the
           // smaller face key (not the smaller root, which depends on face order).
           bool keep_s = components.size(root_s) > components.size(root_t);
