@@ -161,8 +161,9 @@ int run_repair(RepairArguments& arguments) {
   std::ostream& summary = report_to_stdout ? std::cerr : std::cout;
   summary << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
   if (written.polygons_fanned != 0) {
-    summary << "written as " << written.triangles << " triangles: " << written.polygons_fanned
-            << " polygons fanned (the format holds triangles only)\n";
+    summary << "written as " << written.triangles
+            << " triangles: " << counted(written.polygons_fanned, "polygon")
+            << " cut into triangles (the format holds triangles only)\n";
   }
   if (reread) {
     // STL keeps no shared vertices: say what a reader gets back from the written file.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/stl_round_trip.h"
 
+#include "io/triangulate.h"
+
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/separate_copies.h"
 
@@ -40,12 +42,11 @@ Soup stl_round_trip(const Soup& soup) {
       out.add_vertex(Point(key[0], key[1], key[2]));
     return it->second;
   };
+  detail::Triangulation t;  // as the STL writer cuts polygons
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const PolygonView p = soup.polygon(f);
-    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-      const Index a = weld(p[0]), b = weld(p[i]), c = weld(p[i + 1]);
-      out.add_polygon({a, b, c});
-    }
+    detail::triangulate_polygon(soup, f, t);
+    for (const auto& [a, b, c] : t.triangles)
+      out.add_polygon({weld(a), weld(b), weld(c)});
   }
   return out;
 }

@@ -193,7 +193,7 @@ repair_formats)
   for ext in stl 3mf; do
     expect_exit 0 "$mb" repair "$work/box.off" "$work/box.$ext" --report "$work/box.json"
     expect_in "$work/out" "faces: 7 in, 7 out"
-    expect_in "$work/out" "written as 16 triangles: 7 polygons fanned (the format holds triangles only)"
+    expect_in "$work/out" "written as 16 triangles: 7 polygons cut into triangles (the format holds triangles only)"
     [ "$(json_field "$work/box.json" written.triangles)" = 16 ] || fail "$ext: written.triangles"
     [ "$(json_field "$work/box.json" written.polygons_fanned)" = 7 ] || fail "$ext: written.polygons_fanned"
     expect_exit 0 "$mb" check "$work/box.$ext" --json

@@ -308,6 +308,61 @@ TEST_F(PlyStlIo, coordinates_beyond_32_bit_floats_are_refused_by_stl_and_3mf_not
   EXPECT_EQ(read_soup(path("big.stl")).positions[1][0], double(3.4e38f));
 }
 
+TEST_F(PlyStlIo, non_convex_polygons_are_cut_into_triangles_inside_them_for_stl) {
+  // An L (area 3), a comb of 4 teeth (area 11) in a tilted plane, and a pinched polygon (no ear
+  // test can hold: fanned as before, still n - 2 triangles).
+  const auto tilt = [](double x, double y) { return Point(x, 0.6 * y, 0.8 * y); };
+  Soup soup;
+  for (const auto& [x, y] :
+       std::vector<std::pair<double, double>>{{1, 2}, {0, 2}, {0, 0}, {2, 0}, {2, 1}, {1, 1}})
+    soup.add_vertex(Point(x, y, 0));
+  soup.add_polygon({0, 1, 2, 3, 4, 5});
+  const std::vector<std::pair<double, double>> teeth = {
+      {0, 0}, {7, 0}, {7, 2}, {6, 2}, {6, 1}, {5, 1}, {5, 2}, {4, 2},
+      {4, 1}, {3, 1}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  std::vector<Index> ring;
+  for (const auto& [x, y] : teeth) {
+    ring.push_back(static_cast<Index>(soup.num_vertices()));
+    soup.add_vertex(tilt(x, y));
+  }
+  soup.add_polygon(ring);
+  const std::string file = path("polygons.stl");
+  write_mesh(file, as_mesh(soup));
+  const Soup back = read_soup(file);
+  ASSERT_EQ(back.num_faces(), 4u + (teeth.size() - 2));
+  // Every triangle runs the polygon's way round (a fan of a non-convex polygon has triangles
+  // that run the other way, reaching outside it), and their areas add up to the polygon's.
+  const auto area = [&](std::size_t f, const Point& normal) {
+    const PolygonView t = back.polygon(f);
+    const Point& a = back.positions[t[0]];
+    return 0.5 * (((back.positions[t[1]] - a) % (back.positions[t[2]] - a)) | normal);
+  };
+  double l_area = 0, comb_area = 0;
+  const Point up(0, 0, 1), tilted(0, -0.8, 0.6);
+  for (std::size_t f = 0; f < 4; ++f) {
+    EXPECT_GT(area(f, up), 0) << f;
+    l_area += area(f, up);
+  }
+  for (std::size_t f = 4; f < back.num_faces(); ++f) {
+    EXPECT_GT(area(f, tilted), 1e-9) << f;
+    comb_area += area(f, tilted);
+  }
+  EXPECT_NEAR(l_area, 3.0, 1e-6);
+  EXPECT_NEAR(comb_area, 11.0, 1e-5);
+  // A pinched polygon (a vertex twice) still gives n - 2 triangles.
+  Soup pinched;
+  for (const auto& [x, y] :
+       std::vector<std::pair<double, double>>{{0, 0}, {1, 0}, {1, 1}, {-1, 0}, {-1, -1}})
+    pinched.add_vertex(Point(x, y, 0));
+  pinched.add_polygon({0, 1, 2, 0, 3, 4});
+  WriteOptions ascii;
+  ascii.binary = false;
+  write_mesh(path("pinched.stl"), as_mesh(pinched), nullptr, ascii);
+  ReadInfo info;
+  EXPECT_EQ(read_soup(path("pinched.stl"), &info).num_faces(), 4u);
+  EXPECT_EQ(info.declared_faces, 4u);
+}
+
 // --- what OpenMesh's readers lose ------------------------------------------------------------
 
 TEST_F(PlyStlIo, ply_tristrips_with_restarts_alternate_winding_and_skip_joins) {

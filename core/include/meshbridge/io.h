@@ -187,7 +187,8 @@ std::vector<std::string> describe_not_held(const MeshAttributes& attributes);
 struct WrittenOutput {
   //! Triangles written, for formats that hold triangles only (STL, 3MF); 0 for the others.
   std::size_t triangles = 0;
-  //! Polygons of more than 3 corners fanned into triangles there (0 for the other formats).
+  //! Polygons of more than 3 corners cut into triangles there (ear clipping in their plane, so
+  //! a non-convex polygon stays covered by its own area; 0 for the other formats).
   std::size_t polygons_fanned = 0;
   //! What the format left out of what was read, one phrase each (describe_unwritten()).
   std::vector<std::string> left_out;
@@ -235,7 +236,8 @@ struct WriteOptions {
 };
 
 //! Writes `mesh` by the format of the extension. Text formats write each coordinate as the
-//! shortest decimal that reads back to the same double. STL gets triangles (polygons fanned).
+//! shortest decimal that reads back to the same double. STL and 3MF get triangles
+//! (polygons cut by ear clipping in their plane: the triangles cover the polygon, not more).
 //! Colours of `attributes` (of the soup `mesh` came from) are carried through `vertex_origin`
 //! and `face_origin` where the format holds them (OFF faces, PLY vertices and faces); a face
 //! with origin kNoIndex (added by hole filling) gets the default colour.

@@ -9,8 +9,8 @@
 
 namespace meshbridge {
 
-//! The soup any STL reader gets back from `soup` written as STL: polygons fanned into triangles
-//! from their first corner (as write_mesh() writes them), positions rounded to float32, vertices
+//! The soup any STL reader gets back from `soup` written as STL: polygons cut into triangles by
+//! ear clipping (as write_mesh() writes them), positions rounded to float32, vertices
 //! welded by exact position in order of first use (as read_soup() and every STL reader weld).
 //! #V' <= #V, #F' = number of triangles.
 Soup stl_round_trip(const Soup& soup);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/formats.h"
+#include "io/triangulate.h"
 
 #include "meshbridge/errors.h"
 
@@ -36,16 +37,17 @@ void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
     for (int a = 0; a < 3; ++a)
       vertices[v].m_fPosition[a] = static_cast<float>(soup.positions[v][a]);
   std::vector<NMR::MODELMESHTRIANGLE> triangles;
+  Triangulation triangulation;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const PolygonView p = soup.polygon(f);
-    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+    triangulate_polygon(soup, f, triangulation);
+    for (const auto& [a, b, c] : triangulation.triangles) {
       // lib3mf refuses a triangle that names a vertex twice ("cannot store the mesh").
-      if (p[0] == p[i] || p[i] == p[i + 1] || p[0] == p[i + 1]) {
+      if (a == b || b == c || a == c) {
         throw WriteError(path + ": face " + std::to_string(f) +
                          " names a vertex twice (a degenerate triangle), which 3MF refuses: "
                          "repair sets such faces aside or splits them");
       }
-      triangles.push_back({{p[0], p[i], p[i + 1]}});
+      triangles.push_back({{a, b, c}});
     }
   }
   Released model, object, item, writer;

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The STL writer: binary (default) or ascii triangles; polygons are fanned from their first
-// corner, each facet gets its unit normal (0 0 0 for a zero-area one). STL has no shared vertices
-// and only 32-bit floats in binary: a reader welds by position again.
+// The STL writer: binary (default) or ascii triangles; polygons are cut into triangles by ear
+// clipping (triangulate_polygon()), each facet gets its unit normal (0 0 0 for a zero-area one).
+// STL has no shared vertices and only 32-bit floats in binary: a reader welds by position again.
 #include "io/formats.h"
 #include "io/text_output.h"
+#include "io/triangulate.h"
 
 #include "meshbridge/errors.h"
 
@@ -31,13 +32,20 @@ std::uint64_t triangle_count(const Soup& soup) {
   return triangles;
 }
 
-//! Calls `triangle(a, b, c)` for every triangle of the fans, in face order.
+//! Calls `triangle(a, b, c)` for every triangle of the polygons (triangulate_polygon()), in
+//! face order.
 template <class Triangle>
 void for_each_triangle(const Soup& soup, Triangle triangle) {
+  Triangulation t;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const PolygonView p = soup.polygon(f);
-    for (std::size_t i = 1; i + 1 < p.size(); ++i)
-      triangle(soup.positions[p[0]], soup.positions[p[i]], soup.positions[p[i + 1]]);
+    if (soup.arity(f) == 3) {
+      const PolygonView p = soup.polygon(f);
+      triangle(soup.positions[p[0]], soup.positions[p[1]], soup.positions[p[2]]);
+      continue;
+    }
+    triangulate_polygon(soup, f, t);
+    for (const auto& [a, b, c] : t.triangles)
+      triangle(soup.positions[a], soup.positions[b], soup.positions[c]);
   }
 }
 

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "io/triangulate.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace meshbridge::detail {
+
+namespace {
+
+//! Twice the signed area of (a, b, c) in the plane: > 0 when counter-clockwise.
+double cross(double au, double av, double bu, double bv, double cu, double cv) {
+  return (bu - au) * (cv - av) - (bv - av) * (cu - au);
+}
+
+}  // namespace
+
+void triangulate_polygon(const Soup& soup, std::size_t f, Triangulation& t) {
+  t.triangles.clear();
+  const PolygonView p = soup.polygon(f);
+  const std::size_t n = p.size();
+  const auto fan = [&](std::size_t first, std::size_t count) {  // the ring from `first` on
+    Index a = static_cast<Index>(first), b = t.next[a];
+    for (std::size_t k = 0; k + 2 < count; ++k) {
+      t.triangles.push_back({p[a], p[b], p[t.next[b]]});
+      b = t.next[b];
+    }
+  };
+  t.previous.resize(n);
+  t.next.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    t.previous[i] = static_cast<Index>((i + n - 1) % n);
+    t.next[i] = static_cast<Index>((i + 1) % n);
+  }
+  // Newell's normal; the plane of the two coordinates across its largest component, turned so
+  // that the polygon runs counter-clockwise there.
+  Point normal(0, 0, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& a = soup.positions[p[i]];
+    const Point& b = soup.positions[p[(i + 1) % n]];
+    normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+  int drop = 0;
+  for (int k = 1; k < 3; ++k) {
+    if (std::abs(normal[k]) > std::abs(normal[drop]))
+      drop = k;
+  }
+  if (n == 3 || n > 4096 || !(std::abs(normal[drop]) > 0) || !std::isfinite(normal[drop])) {
+    fan(0, n);
+    return;
+  }
+  int iu = (drop + 1) % 3, iv = (drop + 2) % 3;
+  if (normal[drop] < 0)
+    std::swap(iu, iv);
+  t.u.resize(n);
+  t.v.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    t.u[i] = soup.positions[p[i]][iu];
+    t.v[i] = soup.positions[p[i]][iv];
+  }
+  // An ear: a convex corner whose triangle holds no other corner of the ring (on its sides
+  // counts as inside, unless the corner is at one of its three points: a pinched polygon).
+  const auto is_ear = [&](Index b) {
+    const Index a = t.previous[b], c = t.next[b];
+    if (cross(t.u[a], t.v[a], t.u[b], t.v[b], t.u[c], t.v[c]) <= 0)
+      return false;
+    for (Index q = t.next[c]; q != a; q = t.next[q]) {
+      const bool at_corner = (t.u[q] == t.u[a] && t.v[q] == t.v[a]) ||
+                             (t.u[q] == t.u[b] && t.v[q] == t.v[b]) ||
+                             (t.u[q] == t.u[c] && t.v[q] == t.v[c]);
+      if (at_corner)
+        continue;
+      if (cross(t.u[a], t.v[a], t.u[b], t.v[b], t.u[q], t.v[q]) >= 0 &&
+          cross(t.u[b], t.v[b], t.u[c], t.v[c], t.u[q], t.v[q]) >= 0 &&
+          cross(t.u[c], t.v[c], t.u[a], t.v[a], t.u[q], t.v[q]) >= 0)
+        return false;
+    }
+    return true;
+  };
+  Index start = 0;
+  std::size_t left = n;
+  while (left > 3) {
+    Index b = start;
+    std::size_t tried = 0;
+    while (tried < left && !is_ear(b)) {
+      b = t.next[b];
+      ++tried;
+    }
+    if (tried == left) {  // no ear: not a simple polygon in this plane
+      fan(start, left);
+      return;
+    }
+    const Index a = t.previous[b], c = t.next[b];
+    t.triangles.push_back({p[a], p[b], p[c]});
+    t.next[a] = c;
+    t.previous[c] = a;
+    start = a;
+    --left;
+  }
+  t.triangles.push_back({p[t.previous[start]], p[start], p[t.next[start]]});
+}
+
+}  // namespace meshbridge::detail
