@@ -274,7 +274,7 @@ bad_input)
   expect_in "$work/err" "range.obj: line 4: face corner 3 refers to vertex 9, but the file has 3 vertices"
   printf 'v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n' >"$work/nan.obj"
   expect_exit 2 "$mb" check "$work/nan.obj"
-  expect_in "$work/err" "vertex 2 has a non-finite coordinate"
+  expect_in "$work/err" "line 3: vertex 3 has a non-finite coordinate"
   printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 1 2\nf 1 2 3\n' >"$work/repeat.obj"
   expect_exit 1 "$mb" check "$work/repeat.obj"
   expect_in "$work/err" "2 face records: 1 kept, 1 set aside (< 3 distinct corners)"

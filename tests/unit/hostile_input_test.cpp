@@ -289,12 +289,12 @@ TEST_F(HostileFile, obj_index_too_large_for_any_integer) {
 
 TEST_F(HostileFile, obj_nan_coordinate) {
   expect_error<InvalidSoupError>("nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n",
-                                 "vertex 1 has a non-finite coordinate");
+                                 "line 2: vertex 2 has a non-finite coordinate");
 }
 
 TEST_F(HostileFile, obj_infinite_and_overflowing_coordinates) {
   expect_error<InvalidSoupError>("inf.obj", "v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n",
-                                 "vertex 1 has a non-finite coordinate");
+                                 "line 2: vertex 2 has a non-finite coordinate");
   expect_error<ReadError>("overflow.obj", "v 0 0 0\nv 1 1e999 0\nv 0 1 0\nf 1 2 3\n",
                           "line 2: vertex 2: '1e999' is not a number a double can hold");
 }

@@ -168,6 +168,11 @@ class ObjReader {
       fail("vertex " + std::to_string(soup_.num_vertices() + 1) + " has " + std::to_string(n) +
            " coordinate(s), expected 3");
     }
+    if (!std::isfinite(values[0]) || !std::isfinite(values[1]) || !std::isfinite(values[2])) {
+      throw InvalidSoupError(file_.path() + ": line " + std::to_string(in_.line()) + ": vertex " +
+                             std::to_string(soup_.num_vertices() + 1) +
+                             " has a non-finite coordinate (nan or inf)");
+    }
     soup_.positions.push_back(Point(values[0], values[1], values[2]));
     if (attributes_ == nullptr)
       return;
