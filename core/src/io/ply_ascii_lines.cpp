@@ -12,26 +12,6 @@ namespace meshbridge::detail {
 
 namespace {
 
-bool is_blank(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
-
-//! The words of one line.
-std::vector<std::string_view> words_of(std::string_view line) {
-  std::vector<std::string_view> words;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && is_blank(line[i]))
-      ++i;
-    const std::size_t start = i;
-    while (i < line.size() && !is_blank(line[i]))
-      ++i;
-    if (i > start)
-      words.push_back(line.substr(start, i - start));
-  }
-  return words;
-}
-
 //! True if `word` is a whole value as the reader takes it: a number, and for `integer` (list
 //! counts, polygon corners) an integer ("1.5" and "nan" are not).
 bool is_value(bool integer, std::string_view word) {
@@ -102,7 +82,7 @@ std::optional<std::string> locate_ascii_ply_mismatch(std::string_view file,
     while (at < file.size()) {
       const std::size_t end = std::min(file.find('\n', at), file.size());
       const std::string_view line = file.substr(at, end - at);
-      const bool blank = std::all_of(line.begin(), line.end(), is_blank);
+      const bool blank = std::all_of(line.begin(), line.end(), is_ply_blank);
       at = end + 1;
       ++line_number;
       if (!blank)
@@ -118,7 +98,7 @@ std::optional<std::string> locate_ascii_ply_mismatch(std::string_view file,
                e.name + " " + std::to_string(i + 1) + " of " + std::to_string(e.count) +
                " (a truncated file or a false count)";
       }
-      const std::string fault = mismatch(e, words_of(*line));
+      const std::string fault = mismatch(e, ply_line_words(*line));
       if (!fault.empty()) {
         return "line " + std::to_string(line_number - 1) + ", " + e.name + " " +
                std::to_string(i + 1) + " of " + std::to_string(e.count) + ": " + fault +

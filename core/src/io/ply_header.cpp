@@ -27,27 +27,26 @@ bool parse_ply_scalar(std::string_view name, PlyScalar& type) {
   return false;
 }
 
-bool is_space(char c) {
+}  // namespace
+
+bool is_ply_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
 }
 
-//! The whitespace-separated words of one header line.
-std::vector<std::string_view> words_of(std::string_view line) {
+std::vector<std::string_view> ply_line_words(std::string_view line) {
   std::vector<std::string_view> words;
   std::size_t i = 0;
   while (i < line.size()) {
-    while (i < line.size() && is_space(line[i]))
+    while (i < line.size() && is_ply_blank(line[i]))
       ++i;
     const std::size_t start = i;
-    while (i < line.size() && !is_space(line[i]))
+    while (i < line.size() && !is_ply_blank(line[i]))
       ++i;
     if (i > start)
       words.push_back(line.substr(start, i - start));
   }
   return words;
 }
-
-}  // namespace
 
 std::size_t ply_scalar_size(PlyScalar type) {
   switch (type) {
@@ -122,7 +121,7 @@ PlyHeader parse_ply_header(std::string_view data, const std::string& path) {
   };
   std::string_view line;
   const bool has_line = next_line(line);
-  const std::vector<std::string_view> first = words_of(line);
+  const std::vector<std::string_view> first = ply_line_words(line);
   if (!has_line || first.size() != 1 || (first[0] != "ply" && first[0] != "PLY")) {
     std::string start(first.empty() ? std::string_view() : first[0].substr(0, 16));
     for (char& c : start)
@@ -134,7 +133,7 @@ PlyHeader parse_ply_header(std::string_view data, const std::string& path) {
       throw ReadError(where + "the PLY header has no end_header line (a truncated or " +
                       "malformed header)");
     }
-    const std::vector<std::string_view> w = words_of(line);
+    const std::vector<std::string_view> w = ply_line_words(line);
     const std::string at = where + "PLY header line " + std::to_string(line_number) + ": ";
     if (w.empty())
       continue;

@@ -18,6 +18,11 @@ enum class PlyScalar : std::uint8_t { i8, u8, i16, u16, i32, u32, f32, f64 };
 std::size_t ply_scalar_size(PlyScalar type);
 //! True for the six integer types.
 bool is_ply_integer(PlyScalar type);
+//! True for the blanks that separate the words of a PLY line (space, tab, '\r', '\f', '\v').
+bool is_ply_blank(char c);
+//! The blank-separated words of one line of a PLY header or ascii body.
+std::vector<std::string_view> ply_line_words(std::string_view line);
+
 //! The type's name as PLY writes it ("char", "uchar", ..., "double").
 const char* ply_scalar_name(PlyScalar type);
 
