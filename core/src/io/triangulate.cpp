@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/triangulate.h"
 
+#include "pipeline/grouping.h"
+
 #include <cmath>
 #include <cstdlib>
 
@@ -32,16 +34,9 @@ void triangulate_polygon(const Soup& soup, std::size_t f, Triangulation& t) {
     t.previous[i] = static_cast<Index>((i + n - 1) % n);
     t.next[i] = static_cast<Index>((i + 1) % n);
   }
-  // Newell's normal; the plane of the two coordinates across its largest component, turned so
-  // that the polygon runs counter-clockwise there.
-  Point normal(0, 0, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point& a = soup.positions[p[i]];
-    const Point& b = soup.positions[p[(i + 1) % n]];
-    normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
-    normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
-    normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
-  }
+  // The plane of the two coordinates across the largest component of the Newell normal, turned
+  // so that the polygon runs counter-clockwise there.
+  const Point normal = newell_normal(soup, f);
   int drop = 0;
   for (int k = 1; k < 3; ++k) {
     if (std::abs(normal[k]) > std::abs(normal[drop]))
