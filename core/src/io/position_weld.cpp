@@ -13,6 +13,7 @@
 
 #include <sys/mman.h>
 #include <algorithm>
+#include <cmath>
 #include <new>
 #include <utility>
 #include <vector>
@@ -280,6 +281,22 @@ void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, S
   reserve_huge(soup.face_begin, triangles + 1);
   for (std::size_t f = 0; f <= triangles; ++f)
     soup.face_begin.push_back(static_cast<Index>(3 * f));
+}
+
+void restore_negative_zeros(Soup& soup, const CornerFloats& corner_floats) {
+  std::vector<bool> seen(soup.num_vertices(), false);
+  float xyz[3];
+  for (std::size_t c = 0; c < soup.corner_vertices.size(); ++c) {
+    const Index v = soup.corner_vertices[c];
+    if (seen[v])
+      continue;
+    seen[v] = true;
+    corner_floats(c, xyz);
+    for (int k = 0; k < 3; ++k) {
+      if (xyz[k] == 0 && std::signbit(xyz[k]))
+        soup.positions[v][k] = -0.0;
+    }
+  }
 }
 
 }  // namespace meshbridge::detail

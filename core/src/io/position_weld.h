@@ -46,4 +46,13 @@ using CornerKeys = std::function<void(std::size_t first, std::size_t count, Floa
 void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, Soup& soup,
                            unsigned threads);
 
+//! Writes corner `c`'s three coordinates as the file has them to `xyz`.
+using CornerFloats = std::function<void(std::size_t c, float* xyz)>;
+
+//! After weld_triangle_corners(): gives every vertex the zero signs of its first corner in the
+//! file. The weld takes -0 and +0 as one position (they are equal) and keeps +0; this puts back
+//! a -0 the file wrote first, so that a file read and written back keeps its bytes. One pass
+//! over the corners; call it only when the file has a -0.
+void restore_negative_zeros(Soup& soup, const CornerFloats& corner_floats);
+
 }  // namespace meshbridge::detail

@@ -74,9 +74,11 @@ BinaryFacetNotes read_binary(const MappedFile& file, std::uint32_t triangles, So
   info.declared_faces = triangles;
   info.declared_vertices = 3 * std::size_t(triangles);
   std::atomic<std::size_t> attribute_words{0}, normals_reversed{0};
-  const auto keys = [&file, bytes, &attribute_words, &normals_reversed](
+  std::atomic<bool> negative_zero{false};
+  const auto keys = [&file, bytes, &attribute_words, &normals_reversed, &negative_zero](
                         std::size_t first, std::size_t count, FloatKey* out) {
     std::size_t used = 0, reversed = 0;
+    bool minus_zero = false;
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = first + i;
       const unsigned char* p = bytes + 50 * (c / 3) + 12 + 12 * (c % 3);  // after the normal
@@ -96,9 +98,13 @@ BinaryFacetNotes read_binary(const MappedFile& file, std::uint32_t triangles, So
                                ", corner " + std::to_string(c % 3 + 1) +
                                " has a non-finite coordinate");
       }
-      for (int k = 0; k < 3; ++k)
+      for (int k = 0; k < 3; ++k) {
+        minus_zero |= bits[k] == 0x80000000u;
         out[i][k] = bits[k] == 0x80000000u ? 0 : bits[k];  // -0 is +0 (float_key)
+      }
     }
+    if (minus_zero)
+      negative_zero.store(true, std::memory_order_relaxed);
     if (used > 0)
       attribute_words += used;
     if (reversed > 0)
@@ -118,6 +124,12 @@ BinaryFacetNotes read_binary(const MappedFile& file, std::uint32_t triangles, So
   };
   file.prefault_between(file.data(), file.data() + std::min(file.size(), 2 * kWindow));
   weld_triangle_corners(3 * std::size_t(triangles), keys, soup, reading_threads());
+  if (negative_zero.load()) {
+    restore_negative_zeros(soup, [bytes](std::size_t c, float* xyz) {
+      for (int k = 0; k < 3; ++k)
+        xyz[k] = little_endian_float(bytes + 50 * (c / 3) + 12 + 12 * (c % 3) + 4 * k);
+    });
+  }
   return {attribute_words.load(), normals_reversed.load()};
 }
 
@@ -215,6 +227,12 @@ AsciiNotes read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
       out[c - first] = float_key(corners[3 * c], corners[3 * c + 1], corners[3 * c + 2]);
   };
   weld_triangle_corners(3 * triangles, keys, soup, reading_threads());
+  if (std::any_of(corners.begin(), corners.end(),
+                  [](float x) { return x == 0 && std::signbit(x); })) {
+    restore_negative_zeros(soup, [&corners](std::size_t c, float* xyz) {
+      std::copy_n(corners.data() + 3 * c, 3, xyz);
+    });
+  }
   return {named_solids, normals_reversed};
 }
 
