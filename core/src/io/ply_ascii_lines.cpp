@@ -2,6 +2,7 @@
 #include "io/ply_ascii_lines.h"
 
 #include "io/parse_numbers.h"
+#include "io/ply_sources.h"
 #include "meshbridge/counted.h"
 
 #include <algorithm>
@@ -12,17 +13,29 @@ namespace meshbridge::detail {
 
 namespace {
 
-//! True if `word` is a whole value as the reader takes it: a number, and for `integer` (list
-//! counts, polygon corners) an integer ("1.5" and "nan" are not).
-bool is_value(bool integer, std::string_view word) {
+//! How `word` fails to be a value of `type` as the reader takes it (parse_ply_value), or empty:
+//! "not a number", "not a whole number", "outside the range of uchar (0 to 255)", ...
+std::string value_fault(PlyScalar type, std::string_view word) {
   const char* first = word.data();
   const char* last = first + word.size();
-  if (integer) {
-    std::int64_t value = 0;
-    return parse_integer(first, last, value) == last;
-  }
   double value = 0;
-  return parse_double(first, last, value) == last;
+  if (parse_ply_value(first, last, type, value) == last)
+    return {};
+  if (is_ply_integer(type)) {
+    std::int64_t whole = 0;
+    if (parse_integer(first, last, whole) != last) {
+      return parse_double(first, last, value) == last
+                 ? "not a whole number (" + std::string(ply_scalar_name(type)) + ")"
+                 : "not a number";
+    }
+    std::int64_t lowest = 0, highest = 0;
+    ply_integer_range(type, lowest, highest);
+    return "outside the range of " + std::string(ply_scalar_name(type)) + " (" +
+           std::to_string(lowest) + " to " + std::to_string(highest) + ")";
+  }
+  if (parse_double(first, last, value) != last)
+    return "not a number";
+  return "outside the range of " + std::string(ply_scalar_name(type));
 }
 
 std::string property_names(const PlyElement& e) {
@@ -39,29 +52,30 @@ std::string mismatch(const PlyElement& e, const std::vector<std::string_view>& w
     if (w == words.size())
       return "the line ends before property '" + p.name + "'";
     if (!p.is_list) {
-      if (!is_value(false, words[w]))
-        return "property '" + p.name + "' is '" + std::string(words[w]) + "', not a number";
+      const std::string fault = value_fault(p.type, words[w]);
+      if (!fault.empty())
+        return "property '" + p.name + "' is '" + std::string(words[w]) + "', " + fault;
       ++w;
       continue;
     }
     std::int64_t n = 0;
     const std::string_view count = words[w];
-    if (parse_integer(count.data(), count.data() + count.size(), n) !=
-            count.data() + count.size() ||
-        n < 0) {
-      return "the count of list '" + p.name + "' is '" + std::string(count) +
-             "', not a whole number";
+    if (const std::string fault = value_fault(p.count_type, count); !fault.empty()) {
+      return "the count of list '" + p.name + "' is '" + std::string(count) + "', " + fault;
     }
+    parse_integer(count.data(), count.data() + count.size(), n);
+    if (n < 0)
+      return "the count of list '" + p.name + "' is '" + std::string(count) + "', negative";
     ++w;
     if (words.size() - w < static_cast<std::uint64_t>(n)) {
       return "list '" + p.name + "' counts " + std::to_string(n) + " entries, but the line holds " +
              std::to_string(words.size() - w);
     }
-    const bool corners = p.name == "vertex_indices" || p.name == "vertex_index";
     for (std::int64_t k = 0; k < n; ++k, ++w) {
-      if (corners && !is_value(true, words[w]))
+      if (const std::string fault = value_fault(p.type, words[w]); !fault.empty()) {
         return "entry " + std::to_string(k + 1) + " of list '" + p.name + "' is '" +
-               std::string(words[w]) + "', not a vertex index";
+               std::string(words[w]) + "', " + fault;
+      }
     }
   }
   if (w < words.size()) {

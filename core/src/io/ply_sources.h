@@ -11,6 +11,70 @@
 
 namespace meshbridge::detail {
 
+// --- ascii values ---------------------------------------------------------------------------
+
+//! The range of an integer PLY type (int8 -128..127 ... uint32 0..4294967295).
+inline void ply_integer_range(PlyScalar type, std::int64_t& lowest, std::int64_t& highest) {
+  switch (type) {
+    case PlyScalar::i8:
+      lowest = -128, highest = 127;
+      return;
+    case PlyScalar::u8:
+      lowest = 0, highest = 255;
+      return;
+    case PlyScalar::i16:
+      lowest = -32768, highest = 32767;
+      return;
+    case PlyScalar::u16:
+      lowest = 0, highest = 65535;
+      return;
+    case PlyScalar::i32:
+      lowest = -2147483648LL, highest = 2147483647;
+      return;
+    default:  // u32 (the float types have no integer range: callers ask for integers only)
+      lowest = 0, highest = 4294967295LL;
+      return;
+  }
+}
+
+//! Parses the ascii value at [first, last) as an integer of `type` (an integer type): a whole
+//! number within the type's range, as the binary encoding could store it. Returns the end of the
+//! number, or nullptr ("1.5", "300" for uchar, "-1" for uint).
+inline const char* parse_ply_integer(const char* first, const char* last, PlyScalar type,
+                                     std::int64_t& value) {
+  const char* end = parse_integer(first, last, value);
+  std::int64_t lowest = 0, highest = 0;
+  ply_integer_range(type, lowest, highest);
+  return end != nullptr && value >= lowest && value <= highest ? end : nullptr;
+}
+
+//! Parses the ascii value at [first, last) as a value of `type`: for an integer type as
+//! parse_ply_integer; `float` a number within float's range (or nan, inf: a binary float holds
+//! them too), rounded to float as the binary encoding would store it (so ascii and binary PLY of
+//! one mesh read the same); `double` any number. Returns the end of the value, or nullptr ("x",
+//! "1e40" for float). A non-finite coordinate is the soup's to refuse (validate_soup).
+inline const char* parse_ply_value(const char* first, const char* last, PlyScalar type,
+                                   double& value) {
+  if (is_ply_integer(type)) {
+    std::int64_t whole = 0;
+    const char* end = parse_ply_integer(first, last, type, whole);
+    if (end != nullptr)
+      value = static_cast<double>(whole);
+    return end;
+  }
+  double number = 0;
+  const char* end = parse_double(first, last, number);
+  if (end == nullptr)
+    return nullptr;
+  if (type == PlyScalar::f32 && number - number == 0) {  // finite (inf - inf, nan - nan: nan)
+    if (number > 3.4028234663852886e38 || number < -3.4028234663852886e38)
+      return nullptr;
+    number = static_cast<float>(number);
+  }
+  value = number;
+  return end;
+}
+
 // --- binary values --------------------------------------------------------------------------
 
 template <class T>
@@ -120,33 +184,33 @@ class AsciiSource {
  public:
   AsciiSource(const char* first, const char* last) : p_(first), end_(last) {}
   std::size_t remaining() const { return static_cast<std::size_t>(end_ - p_); }
-  //! A value declared `float` is rounded to float, as the binary encoding of the same file
-  //! would store it (so ascii and binary PLY of one mesh read the same).
+  //! A value of the declared type (parse_ply_value: a float rounded to float, an integer type
+  //! within its range); false for anything else.
   bool real(PlyScalar type, double& value) {
     skip_space();
-    const char* e = parse_double(p_, end_, value);
+    const char* e = parse_ply_value(p_, end_, type, value);
     if (e == nullptr || (e != end_ && !is_space(*e)))
       return false;
-    if (type == PlyScalar::f32)
-      value = static_cast<float>(value);
     p_ = e;
     return true;
   }
-  bool integer(PlyScalar, std::int64_t& value) {
+  //! A list count, list entry or edge vertex: a whole number within the declared type's range.
+  bool integer(PlyScalar type, std::int64_t& value) {
     skip_space();
-    const char* e = parse_integer(p_, end_, value);
+    const char* e = is_ply_integer(type) ? parse_ply_integer(p_, end_, type, value)
+                                         : parse_integer(p_, end_, value);
     if (e == nullptr || (e != end_ && !is_space(*e)))
       return false;
     p_ = e;
     return true;
   }
-  bool skip(PlyScalar, std::uint64_t count = 1) {
+  //! Skips `count` values of `type`, each checked as real() checks it (a property MeshBridge
+  //! does not keep still holds a value of its type, so every reader of the file agrees on it).
+  bool skip(PlyScalar type, std::uint64_t count = 1) {
+    double value = 0;
     for (std::uint64_t i = 0; i < count; ++i) {
-      skip_space();
-      if (p_ == end_)
+      if (!real(type, value))
         return false;
-      while (p_ != end_ && !is_space(*p_))
-        ++p_;
     }
     return true;
   }
