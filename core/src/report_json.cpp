@@ -28,6 +28,7 @@ Json read_json(const ReadInfo& info) {
               {"lone_points", info.lone_points},
               {"strip_joins", info.strip_joins},
               {"unknown_records", info.unknown_records},
+              {"empty_records", info.empty_records},
               {"color_map_indices", info.color_map_indices}};
 }
 

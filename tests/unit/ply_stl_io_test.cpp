@@ -25,6 +25,7 @@
 
 #include <dirent.h>
 #include <unistd.h>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -280,6 +281,52 @@ TEST_F(PlyStlIo, a_binary_stl_of_double_positions_reads_and_writes_back_to_the_s
   }
 }
 
+TEST_F(PlyStlIo, stl_keeps_negative_zeros_so_a_round_trip_keeps_every_byte) {
+  const auto bytes = [](const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+  };
+  // Two cubes with a corner at the origin, every 0 written as -0 (as mirrored CAD parts are).
+  Soup cube = models::two_cubes_sharing_edge();
+  std::size_t negative = 0;
+  for (Point& p : cube.positions) {
+    for (int k = 0; k < 3; ++k) {
+      if (p[k] == 0) {
+        p[k] = -0.0;
+        ++negative;
+      }
+    }
+  }
+  ASSERT_GT(negative, 0u);
+  for (bool binary : {true, false}) {
+    SCOPED_TRACE(binary ? "binary" : "ascii");
+    WriteOptions options;
+    options.binary = binary;
+    const std::string file = path(binary ? "minus_zero_bin.stl" : "minus_zero_ascii.stl");
+    write_mesh(file, as_mesh(cube), nullptr, options);
+    const Soup back = read_soup(file);
+    std::size_t back_negative = 0;
+    for (const Point& p : back.positions)
+      for (int k = 0; k < 3; ++k)
+        back_negative += p[k] == 0 && std::signbit(p[k]);
+    EXPECT_EQ(back_negative, negative);
+    write_mesh(path("again.stl"), as_mesh(back), nullptr, options);
+    EXPECT_EQ(bytes(file), bytes(path("again.stl")));
+  }
+  // -0 and +0 are one position: welded, the vertex keeps the sign its first corner had.
+  Soup mixed;
+  for (const Point& p :
+       {Point(-0.0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0.0, 0, 0), Point(0, 0, 1)})
+    mixed.add_vertex(p);
+  mixed.add_polygon({0, 1, 2});
+  mixed.add_polygon({3, 2, 4});
+  write_mesh(path("mixed.stl"), as_mesh(mixed));
+  const Soup welded = read_soup(path("mixed.stl"));
+  ASSERT_EQ(welded.num_vertices(), 4u);
+  EXPECT_TRUE(std::signbit(welded.positions[0][0]));
+  EXPECT_EQ(welded.corner_vertices[3], 0u);
+}
+
 TEST_F(PlyStlIo, coordinates_beyond_32_bit_floats_are_refused_by_stl_and_3mf_not_written_inf) {
   Soup soup;
   soup.positions = {Point(0, 0, 0), Point(1e300, 0, 0), Point(0, 1, 0)};
@@ -365,6 +412,30 @@ TEST_F(PlyStlIo, non_convex_polygons_are_cut_into_triangles_inside_them_for_stl)
 
 // --- what OpenMesh's readers lose ------------------------------------------------------------
 
+TEST_F(PlyStlIo, ply_strip_runs_of_fewer_than_3_vertices_are_counted_not_lost) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 7\nproperty float x\nproperty float y\n"
+      "property float z\nelement tristrips 4\nproperty list int int vertex_indices\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n5 0 0\n6 0 0\n5 1 0\n";
+  // Runs: (4 5) and (6) make no triangle; (0 1 2) one; a strip of restarts only; an empty strip.
+  ReadInfo info;
+  const Soup soup =
+      read_soup(write("short_runs.ply", header + "7 4 5 -1 0 1 2 -1\n1 6\n2 -1 -1\n0\n"), &info);
+  EXPECT_EQ(soup.num_faces(), 1u);
+  EXPECT_EQ(info.declared_faces, 1u);
+  EXPECT_EQ(info.empty_records, 4u);
+  EXPECT_TRUE(info.changed_anything());
+  // A file whose strips make no triangle at all: the error counts them.
+  try {
+    read_soup(write("no_triangle.ply", header + "2 0 1\n1 6\n0\n0\n"));
+    FAIL() << "no error";
+  } catch (const ReadError& error) {
+    EXPECT_NE(std::string(error.what()).find("7 vertices, 4 records holding no face"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 TEST_F(PlyStlIo, ply_tristrips_with_restarts_alternate_winding_and_skip_joins) {
   // Run 1: 0 1 2 3 -> (0 1 2), (2 1 3); run 2: 4 5 6 6 -> (4 5 6), (6 5 6) a join, no face.
   const std::string header =
@@ -409,6 +480,7 @@ TEST_F(PlyStlIo, ply_tristrips_with_restarts_alternate_winding_and_skip_joins) {
   ReadInfo joined_info;
   const Soup joined_soup = read_soup(joined, &joined_info);
   EXPECT_EQ(joined_info.strip_joins + joined_info.declared_faces, 7u);  // 9 indices, 7 triangles
+  EXPECT_EQ(joined_info.empty_records, 0u);
   EXPECT_EQ(joined_info.faces_set_aside, 0u);
   for (std::size_t f = 0; f < joined_soup.num_faces(); ++f) {
     const PolygonView p = joined_soup.polygon(f);

@@ -179,6 +179,20 @@ TEST_F(TextFormats, obj_lines_and_points_are_counted_not_dropped) {
   EXPECT_EQ(info.lone_points, 4u);     // 2 + 1 + a one-point line
   EXPECT_TRUE(info.changed_anything());
   EXPECT_NE(describe_reading(info).find("4 dangling edges, 4 lone points"), std::string::npos);
+  EXPECT_EQ(info.empty_records, 0u);
+}
+
+TEST_F(TextFormats, obj_lines_and_points_without_an_index_are_counted_as_empty_records) {
+  ReadInfo info;
+  const Soup soup = read_soup(
+      write("empty_lp.obj", std::string(kTetrahedronVertices) + "f 1 2 3\nl\np \nl 1 2\n"), &info);
+  EXPECT_EQ(soup.num_faces(), 1u);
+  EXPECT_EQ(info.empty_records, 2u);
+  EXPECT_EQ(info.dangling_edges, 1u);
+  EXPECT_EQ(info.lone_points, 0u);
+  EXPECT_TRUE(info.changed_anything());
+  EXPECT_NE(describe_reading(info).find("2 records holding no face skipped"), std::string::npos)
+      << describe_reading(info);
 }
 
 TEST_F(TextFormats, obj_index_forms_negative_indices_colours_and_groups) {

@@ -310,7 +310,18 @@ TEST_F(ReaderStrictness, ascii_ply_errors_name_the_line_that_does_not_match_the_
                        "line 11, vertex 2 of 3: property 'z' is 'x', not a number"));
   EXPECT_TRUE(contains(error_with("frac.ply", "0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n"),
                        "line 13, face 1 of 1: entry 2 of list 'vertex_indices' is '1.5', not a "
-                       "vertex index"));
+                       "whole number (int)"));
+  // Values hold their declared type, as the binary encoding would have to: a float within
+  // float's range and finite, a uchar count 0 to 255.
+  EXPECT_TRUE(
+      contains(error_with("huge.ply", "0 0 0\n1 0 1e40\n0 1 0\n3 0 1 2\n"),
+               "line 11, vertex 2 of 3: property 'z' is '1e40', outside the range of float"));
+  // nan is a float (a binary file may hold it): read, and refused as a coordinate.
+  EXPECT_THROW(read_soup(write("nan.ply", header + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n")),
+               InvalidSoupError);
+  EXPECT_TRUE(contains(error_with("count.ply", "0 0 0\n1 0 0\n0 1 0\n256 0 1 2\n"),
+                       "line 13, face 1 of 1: the count of list 'vertex_indices' is '256', "
+                       "outside the range of uchar (0 to 255)"));
   // Blank lines and CRLF line ends count as lines.
   EXPECT_TRUE(contains(error_with("crlf.ply", "0 0 0\r\n\r\n1 0 0\r\n0 1\r\n3 0 1 2\r\n"),
                        "line 13, vertex 3 of 3: the line ends before property 'z'"));
@@ -322,6 +333,52 @@ TEST_F(ReaderStrictness, ascii_ply_errors_name_the_line_that_does_not_match_the_
   // Values wrapped over lines are still read (the reader takes words; only errors look at lines).
   EXPECT_EQ(read_soup(write("wrapped.ply", header + "0 0\n0\n1 0 0 0 1 0\n3 0 1 2\n")).num_faces(),
             1u);
+}
+
+TEST_F(ReaderStrictness, a_file_under_another_formats_name_is_named_as_what_it_looks_like) {
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  EXPECT_TRUE(contains(error_of("ply.obj", ply),
+                       "no polygons in the file (0 vertices); it begins with 'ply': a PLY file "
+                       "under another name?"));
+  std::string stl(84, '\0');
+  stl[80] = 1;
+  stl += std::string(50, '\0');
+  EXPECT_TRUE(contains(error_of("stl.obj", stl),
+                       "its size is that of a binary STL of 1 triangle: an STL file under another "
+                       "name?"));
+  EXPECT_TRUE(contains(error_of("off.obj", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+                       "it begins with 'OFF': an OFF file under another name?"));
+  EXPECT_TRUE(contains(error_of("solid.obj", "solid x\nendsolid x\n"),
+                       "it begins with 'solid': an ASCII STL file under another name?"));
+  EXPECT_TRUE(contains(error_of("zip.obj", std::string("PK\3\4\0\0\0", 7)),
+                       "it holds binary data (a NUL byte at offset 4)"));
+}
+
+TEST_F(ReaderStrictness, ascii_ply_values_outside_their_declared_type_are_named_by_line) {
+  // A colour declared uchar that says 300, a coordinate declared int that says 0.5: no binary
+  // file could hold them, and reading them anyhow (wrapped, clamped, rounded) would change them.
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty float y\n"
+      "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+      "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
+  const std::string good = "0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n";
+  MeshAttributes attributes;
+  EXPECT_EQ(read_soup(write("typed.ply", header + good), nullptr, &attributes).num_faces(), 1u);
+  EXPECT_EQ(attributes.vertex_colors[1], (Rgba{0, 255, 0, 255}));
+  EXPECT_TRUE(contains(error_of("red.ply", header + "0 0 0 255 0 0\n1 0 0 300 255 0\n0 1 0 0 0 "
+                                                    "255\n3 0 1 2\n"),
+                       "red.ply: ascii PLY: line 14, vertex 2 of 3: property 'red' is '300', "
+                       "outside the range of uchar (0 to 255)"));
+  EXPECT_TRUE(contains(error_of("int.ply", header + "0.5 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 "
+                                                    "255\n3 0 1 2\n"),
+                       "line 13, vertex 1 of 3: property 'x' is '0.5', not a whole number (int)"));
+  EXPECT_TRUE(contains(error_of("uint.ply", header + "0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 "
+                                                     "255\n3 0 -1 2\n"),
+                       "line 16, face 1 of 1: entry 2 of list 'vertex_indices' is '-1', outside "
+                       "the range of uint (0 to 4294967295)"));
 }
 
 TEST_F(ReaderStrictness, obj_l_and_p_and_ply_edges_past_the_last_vertex_are_errors) {

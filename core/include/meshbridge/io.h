@@ -47,6 +47,10 @@ struct ReadInfo {
   //! triangles (a b c c d ...); they are the encoding, not faces: not in the soup, not in
   //! `declared_faces`, and not a change (changed_anything() ignores them).
   std::size_t strip_joins = 0;
+  //! Records that hold no face, edge or point: an OBJ `l` or `p` line without an index, a PLY
+  //! `tristrips` run (a strip, or its part between -1 restarts) of 1 or 2 vertices, which makes
+  //! no triangle. Not in the soup; counted so that they do not vanish without a word.
+  std::size_t empty_records = 0;
   //! OBJ lines whose keyword is no OBJ record (e.g. "F 1 2 3", "vx 1 2"), skipped: counted so
   //! that a misspelt face is not lost without a word (the CLI warns). Records of the OBJ format
   //! MeshBridge has no use for (vt, vn, s, mtllib, curves...) are not counted.
@@ -61,7 +65,7 @@ struct ReadInfo {
   //! True if some record was not kept as one simple polygon.
   bool changed_anything() const {
     return faces_split + faces_set_aside + dangling_edges + lone_points + faces_dropped_by_reader +
-               unknown_records + color_map_indices >
+               unknown_records + color_map_indices + empty_records >
            0;
   }
 };

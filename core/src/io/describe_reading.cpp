@@ -40,6 +40,11 @@ std::string describe_reading(const ReadInfo& info) {
       text += counted(info.lone_points, "lone point");
     text += " (not part of the surface, not written back)";
   }
+  if (info.empty_records > 0) {
+    text += "; " + counted(info.empty_records, "record") +
+            " holding no face skipped (an OBJ l or p without an index, a PLY strip run of fewer "
+            "than 3 vertices)";
+  }
   if (info.unknown_records > 0)
     text += "; " + counted(info.unknown_records, "line") + " with an unknown keyword skipped";
   if (info.color_map_indices > 0) {

@@ -331,7 +331,9 @@ class ObjReader {
 
   void line_record() {
     read_corners("line");
-    if (corners_.size() >= 2)
+    if (corners_.empty())
+      ++info_.empty_records;
+    else if (corners_.size() >= 2)
       info_.dangling_edges += corners_.size() - 1;
     else
       info_.lone_points += corners_.size();
@@ -340,6 +342,8 @@ class ObjReader {
   void point_record() {
     read_corners("point");
     info_.lone_points += corners_.size();
+    if (corners_.empty())
+      ++info_.empty_records;
   }
 
   // "keyword rest of the line" as written (an o/g/usemtl group name, an mtllib file list).
@@ -516,6 +520,7 @@ bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attr
   info.dangling_edges += part.info.dangling_edges;
   info.lone_points += part.info.lone_points;
   info.unknown_records += part.info.unknown_records;
+  info.empty_records += part.info.empty_records;
   part = ObjPart();  // its memory goes back before the next part is appended
   return true;
 }

@@ -518,15 +518,20 @@ class PlyReader {
   //! Strip record i from corners_: -1 restarts; triangle k of a run is (a, b, c) for even k and
   //! (b, a, c) for odd k, so all share the strip's orientation (as MeshLab reads them).
   //! Triangles that repeat a vertex only link runs (a b c c d ...): counted as strip joins, not
-  //! faces (MeshLab drops them too).
+  //! faces (MeshLab drops them too). A run of 1 or 2 vertices, or a strip with no vertex at all,
+  //! makes no triangle: counted in `empty_records`.
   void add_strip(std::uint64_t i) {
     std::size_t run = 0;
     Index a = 0, b = 0;
+    bool any_vertex = false;
     for (std::int64_t c : corners_) {
       if (c == -1) {
+        if (run == 1 || run == 2)
+          ++info_.empty_records;
         run = 0;
         continue;
       }
+      any_vertex = true;
       const Index v = vertex_index("tristrips", i, c);
       if (run >= 2 && (a == b || b == v || a == v)) {
         ++info_.strip_joins;
@@ -539,6 +544,8 @@ class PlyReader {
       b = v;
       ++run;
     }
+    if (run == 1 || run == 2 || !any_vertex)  // a short last run, or a strip of restarts only
+      ++info_.empty_records;
   }
 
   const MappedFile& file_;
