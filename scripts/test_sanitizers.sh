@@ -14,7 +14,10 @@ bash scripts/install_deps.sh
 
 build=build/asan
 flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMESHBRIDGE_BUILD_TESTS=ON \
+# -O1 -g1 (line tables: enough for the sanitizers' stack traces): the build takes about half the
+# time of -O2 -g (12 min there on 2 cores), and ASan recommends -O1 anyway.
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+  -DMESHBRIDGE_BUILD_TESTS=ON \
   -DMESHBRIDGE_BUILD_CLI=ON -DMESHBRIDGE_BUILD_PLUGIN=OFF -DMESHBRIDGE_BUILD_BENCH=OFF \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
