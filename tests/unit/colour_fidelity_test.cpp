@@ -286,6 +286,13 @@ TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
   ASSERT_EQ(obj.size(), 1u);
   EXPECT_EQ(obj[0].what, "OBJ vertex w other than 1");
   EXPECT_EQ(obj[0].count, 1u);
+  // OBJ: colour values outside their range, clamped (a 0-255 colour above 255, a negative one).
+  const auto clamped =
+      not_kept_of("clamp.obj", "v 0 0 0 300 0 0\nv 1 0 0 0.5 -0.25 1\nv 0 1 0 0 0 1\nf 1 2 3\n");
+  ASSERT_EQ(clamped.size(), 1u);
+  EXPECT_EQ(clamped[0].what,
+            "OBJ vertex colour values outside 0-1 (or 0-255) or not finite, clamped to the range");
+  EXPECT_EQ(clamped[0].count, 2u);
   // Binary STL: triangles whose attribute word is not 0.
   std::string stl(80, ' ');
   const std::uint32_t two = 2;
@@ -350,11 +357,19 @@ TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
   binary_ply += '\3';
   binary_ply.append(reinterpret_cast<const char*>(face), sizeof face);
   EXPECT_TRUE(not_kept_of("exact.ply", binary_ply).empty());
-  const auto tail = not_kept_of("tail.ply", binary_ply + '\3' + std::string(12, '\0'));
-  ASSERT_EQ(tail.size(), 1u);
-  EXPECT_EQ(tail[0].what,
-            "data after the last declared binary PLY element (padding, or a false count)");
-  EXPECT_EQ(tail[0].count, 13u);
+  ReadInfo exact, tail;
+  read_soup(write("exact.ply", binary_ply), &exact);
+  EXPECT_EQ(exact.trailing_bytes, 0u);
+  EXPECT_FALSE(exact.changed_anything());
+  // Counted in the reading itself (check reads no attributes and still warns).
+  read_soup(write("tail.ply", binary_ply + '\3' + std::string(12, '\0')), &tail);
+  EXPECT_EQ(tail.trailing_bytes, 13u);
+  EXPECT_TRUE(tail.changed_anything());
+  EXPECT_NE(describe_reading(tail).find("13 bytes after the last declared binary PLY element not "
+                                        "read (padding, or a false count)"),
+            std::string::npos)
+      << describe_reading(tail);
+  EXPECT_TRUE(not_kept_of("tail.ply", binary_ply + '\3' + std::string(12, '\0')).empty());
   // Named for every output, even the format the file came in.
   MeshAttributes a;
   a.not_kept = ply;

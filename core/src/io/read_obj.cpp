@@ -135,6 +135,11 @@ class ObjReader {
       attributes_->texture_coordinates = texture_coordinates_;
       if (w_not_one_ > 0)
         add_not_kept(*attributes_, {"OBJ vertex w other than 1", w_not_one_, "vertex"});
+      if (colours_clamped_ > 0) {
+        add_not_kept(*attributes_, {"OBJ vertex colour values outside 0-1 (or 0-255) or not "
+                                    "finite, clamped to the range",
+                                    colours_clamped_, "vertex"});
+      }
       if (values_no_colour_ > 0) {
         add_not_kept(*attributes_,
                      {"OBJ numbers after a vertex that are no w or colour (5, or more "
@@ -181,6 +186,9 @@ class ObjReader {
     Rgba color;
     if (n >= 6) {
       const bool bytes = *std::max_element(values + 3, values + n) > 1;
+      const double top = bytes ? 255 : 1;
+      colours_clamped_ +=
+          std::any_of(values + 3, values + n, [top](double v) { return !(v >= 0 && v <= top); });
       color = Rgba{to_byte(values[3], bytes), to_byte(values[4], bytes), to_byte(values[5], bytes),
                    n == 7 ? to_byte(values[6], bytes) : std::uint8_t(255)};
     }
@@ -376,6 +384,7 @@ class ObjReader {
   const ObjIndexOutOfRange* locate_ = nullptr;              // see locate()
   bool alpha_given_ = false;                                // some 'v' line has r g b a
   std::size_t w_not_one_ = 0, values_no_colour_ = 0;        // see vertex()
+  std::size_t colours_clamped_ = 0;                         // see vertex()
   static constexpr std::ptrdiff_t kReleaseEvery = 8 << 20;  // bytes of the map kept behind
   const char* released_;
 };
