@@ -29,6 +29,7 @@ Json read_json(const ReadInfo& info) {
               {"strip_joins", info.strip_joins},
               {"unknown_records", info.unknown_records},
               {"empty_records", info.empty_records},
+              {"trailing_bytes", info.trailing_bytes},
               {"color_map_indices", info.color_map_indices}};
 }
 

@@ -137,6 +137,20 @@ check_json)
   expect_exit 0 "$mb" check "$models/icosphere.obj" --json
   [ "$(json_field "$work/out" watertight)" = true ] || fail "icosphere watertight"
   [ "$(json_field "$work/out" has_defects)" = false ] || fail "icosphere has_defects"
+  # What reading passed over is a warning of check too, and counted in its "read" object:
+  # bytes after a binary PLY's last element, an OBJ l/p without an index.
+  { printf 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n'
+    printf 'property float y\nproperty float z\nelement face 1\n'
+    printf 'property list uchar int vertex_indices\nend_header\n'
+    /usr/bin/python3 -c 'import struct,sys; sys.stdout.buffer.write(struct.pack("<9fB3i", 0,0,0, 1,0,0, 0,1,0, 3, 0,1,2) + bytes(13))'
+  } >"$work/tail.ply"
+  expect_exit 1 "$mb" check "$work/tail.ply" --json
+  expect_in "$work/err" "meshbridge: warning: $work/tail.ply: 1 face record: all kept; 13 bytes after the last declared binary PLY element not read (padding, or a false count)"
+  [ "$(json_field "$work/out" read.trailing_bytes)" = 13 ] || fail "read.trailing_bytes"
+  printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl\np\n' >"$work/empty_lp.obj"
+  expect_exit 1 "$mb" check "$work/empty_lp.obj" --json
+  expect_in "$work/err" "2 records holding no face skipped"
+  [ "$(json_field "$work/out" read.empty_records)" = 2 ] || fail "read.empty_records"
   ;;
 compare_twocubes)
   expect_exit 0 "$mb" compare "$models/twocubes.obj"

@@ -81,7 +81,8 @@ Reading read_with(unsigned threads, const std::string& path) {
       x.faces_set_aside != y.faces_set_aside ||
       x.faces_without_corners != y.faces_without_corners || x.dangling_edges != y.dangling_edges ||
       x.lone_points != y.lone_points || x.unknown_records != y.unknown_records ||
-      x.color_map_indices != y.color_map_indices || x.empty_records != y.empty_records)
+      x.color_map_indices != y.color_map_indices || x.empty_records != y.empty_records ||
+      x.trailing_bytes != y.trailing_bytes)
     return ::testing::AssertionFailure() << "counts differ";
   const MeshAttributes &s = a.attributes, &t = b.attributes;
   if (!(s.vertex_colors == t.vertex_colors) || !(s.face_colors == t.face_colors) ||

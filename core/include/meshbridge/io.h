@@ -51,6 +51,10 @@ struct ReadInfo {
   //! `tristrips` run (a strip, or its part between -1 restarts) of 1 or 2 vertices, which makes
   //! no triangle. Not in the soup; counted so that they do not vanish without a word.
   std::size_t empty_records = 0;
+  //! Bytes after the last element a binary PLY header declares: padding, or items that a false
+  //! count leaves out (faces among them would be lost). Not read; counted so that they are not
+  //! passed over without a word. (An ascii PLY with values after its last element is an error.)
+  std::size_t trailing_bytes = 0;
   //! OBJ lines whose keyword is no OBJ record (e.g. "F 1 2 3", "vx 1 2"), skipped: counted so
   //! that a misspelt face is not lost without a word (the CLI warns). Records of the OBJ format
   //! MeshBridge has no use for (vt, vn, s, mtllib, curves...) are not counted.
@@ -65,7 +69,7 @@ struct ReadInfo {
   //! True if some record was not kept as one simple polygon.
   bool changed_anything() const {
     return faces_split + faces_set_aside + dangling_edges + lone_points + faces_dropped_by_reader +
-               unknown_records + color_map_indices + empty_records >
+               unknown_records + color_map_indices + empty_records + trailing_bytes >
            0;
   }
 };

@@ -45,6 +45,10 @@ std::string describe_reading(const ReadInfo& info) {
             " holding no face skipped (an OBJ l or p without an index, a PLY strip run of fewer "
             "than 3 vertices)";
   }
+  if (info.trailing_bytes > 0) {
+    text += "; " + counted(info.trailing_bytes, "byte") +
+            " after the last declared binary PLY element not read (padding, or a false count)";
+  }
   if (info.unknown_records > 0)
     text += "; " + counted(info.unknown_records, "line") + " with an unknown keyword skipped";
   if (info.color_map_indices > 0) {

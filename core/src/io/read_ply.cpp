@@ -144,11 +144,7 @@ class PlyReader {
       BinarySource source(body, file_.end(), header_.format == Format::binary_big_endian);
       read_elements(source);
       // Bytes past the declared elements: padding, or items a false count leaves out.
-      if (attributes_ != nullptr && source.remaining() > 0) {
-        attributes_->not_kept.push_back(
-            {"data after the last declared binary PLY element (padding, or a false count)",
-             source.remaining(), "byte"});
-      }
+      info_.trailing_bytes = source.remaining();
     }
     if (attributes_ != nullptr && !attributes_->face_colors.empty())  // strip triangles: none
       pad_missing_colors(attributes_->face_colors, attributes_->face_color_missing,
