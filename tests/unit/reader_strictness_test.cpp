@@ -33,6 +33,13 @@ class ReaderStrictness : public test_support::ScratchFolderTest {
   }
 };
 
+//! Success if `text` holds `part`; the message shows `text` otherwise.
+::testing::AssertionResult contains(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "'" << part << "' not in: " << text;
+}
+
 const char* kTetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
 const char* kOffTetrahedron = "4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
 
@@ -106,14 +113,14 @@ TEST_F(ReaderStrictness, ascii_stl_is_read_as_its_grammar) {
     return "facet normal 0 0 1\n " + loop + "\n" + corners + " endloop\nendfacet\n";
   };
   const std::string triangle = "vertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n";
-  // "outerloop", a missing endsolid and two solids all read.
+  // "outerloop" and two solids read.
   ReadInfo info;
-  EXPECT_EQ(
-      read_soup(write("variants.stl", "solid a\n" + facet("outerloop", triangle) +
-                                          "endsolid a\nsolid b\n" + facet("outer loop", triangle)),
-                &info)
-          .num_faces(),
-      2u);
+  EXPECT_EQ(read_soup(write("variants.stl", "solid a\n" + facet("outerloop", triangle) +
+                                                "endsolid a\nsolid b\n" +
+                                                facet("outer loop", triangle) + "endsolid b\n"),
+                      &info)
+                .num_faces(),
+            2u);
   EXPECT_EQ(info.declared_faces, 2u);
   // A facet with four corners is not cut to a triangle.
   EXPECT_NE(error_of("quad.stl", "solid q\n" + facet("outer loop", triangle + "vertex 0 1 0\n"))
@@ -124,11 +131,33 @@ TEST_F(ReaderStrictness, ascii_stl_is_read_as_its_grammar) {
                 .find("line 3: 'lop' after 'outer' (expected 'outer loop')"),
             std::string::npos);
   EXPECT_NE(error_of("junk.stl", "solid t\n" + facet("outer loop", triangle) + "endsolid t\nxyz\n")
-                .find("line 10: 'xyz' where a facet, 'solid' or 'endsolid' was expected"),
+                .find("line 10: 'xyz' where 'solid' or the end of the file was expected"),
+            std::string::npos);
+  EXPECT_NE(error_of("junk2.stl", "solid t\n" + facet("outer loop", triangle) + "xyz\n")
+                .find("line 9: 'xyz' where a facet, 'solid' or 'endsolid' was expected"),
             std::string::npos);
   EXPECT_NE(error_of("cut.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n")
                 .find("the file ends inside facet 1 (truncated)"),
             std::string::npos);
+  // A file cut short between facets, or a facet without its endloop or endfacet, is not read as
+  // a whole one.
+  const std::string two =
+      "solid t\n" + facet("outer loop", triangle) + facet("outer loop", triangle);
+  EXPECT_TRUE(contains(error_of("no_endsolid.stl", two),
+                       "no_endsolid.stl: ASCII STL line 16: the file ends inside the solid of "
+                       "line 1, without 'endsolid' (a truncated file?)"));
+  EXPECT_TRUE(contains(error_of("cut_after_endloop.stl", two.substr(0, two.rfind("endfacet"))),
+                       "line 15: the end of the file where facet 2 (line 9) needs 'endfacet' (a "
+                       "truncated file?)"));
+  std::string no_endloop = two + "endsolid t\n";
+  no_endloop.erase(no_endloop.find(" endloop\n"), 9);
+  EXPECT_TRUE(contains(error_of("no_endloop.stl", no_endloop),
+                       "line 7: 'endfacet' where facet 1 (line 2) needs 'endloop'"));
+  EXPECT_TRUE(contains(error_of("two_solids.stl", "solid a\n" + facet("outer loop", triangle) +
+                                                      "solid b\nendsolid b\n"),
+                       "line 9: 'solid' inside the solid of line 1 (its 'endsolid' is missing)"));
+  EXPECT_TRUE(contains(error_of("end_only.stl", "solid a\nendsolid a\nendsolid a\n"),
+                       "line 3: 'endsolid' without a 'solid' before it"));
 }
 
 TEST_F(ReaderStrictness, binary_stl_with_a_solid_header_and_a_wrong_size_is_named_binary) {
@@ -197,7 +226,7 @@ TEST_F(ReaderStrictness, a_utf8_byte_order_mark_is_skipped_in_text_formats) {
   EXPECT_EQ(read_soup(write("bom.obj", bom + kTetrahedron + "f 1 2 3\n")).num_faces(), 1u);
   EXPECT_EQ(
       read_soup(write("bom.stl", bom + "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
-                                       "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"))
+                                       "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n"))
           .num_faces(),
       1u);
 }
@@ -278,13 +307,6 @@ TEST_F(ReaderStrictness, cr_line_ends_alone_are_named) {
   // CRLF is read as it is.
   EXPECT_EQ(error_of("dos.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n"),
             "read without error");
-}
-
-//! Success if `text` holds `part`; the message shows `text` otherwise.
-::testing::AssertionResult contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos)
-    return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << part << "' not in: " << text;
 }
 
 TEST_F(ReaderStrictness, ascii_ply_errors_name_the_line_that_does_not_match_the_header) {

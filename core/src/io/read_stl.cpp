@@ -135,9 +135,10 @@ BinaryFacetNotes read_binary(const MappedFile& file, std::uint32_t triangles, So
 
 // ASCII STL, read as the grammar it is: `solid NAME`, then facets (`facet normal x y z`,
 // `outer loop`, three `vertex x y z`, `endloop`, `endfacet`), then `endsolid NAME`; several
-// solids may follow each other. Keywords in any case; `outerloop` is taken for `outer loop`, and
-// `endloop`/`endfacet`/`endsolid` may be missing. Anything else is an error naming its line, so
-// that no facet is dropped or cut to a triangle without a word.
+// solids may follow each other. Keywords in any case; `outerloop` is taken for `outer loop`.
+// Anything else is an error naming its line, so that no facet is dropped or cut to a triangle
+// without a word; a missing `endloop`, `endfacet` or `endsolid` too, since a file cut short (a
+// copy that stopped) would otherwise read as a whole one.
 //! What an ASCII STL reader reads past: solid names, facet normals against the winding.
 struct AsciiNotes {
   std::size_t named_solids = 0;
@@ -162,13 +163,29 @@ AsciiNotes read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
                         : "'" + std::string(word.substr(0, 40)) + "'";
   };
   std::string_view word = next_word();
+  std::size_t open_solid = 0;  // the line of the `solid` not yet ended, or 0
   while (!word.empty()) {
-    if (equals_ignoring_case(word, "solid") || equals_ignoring_case(word, "endsolid")) {
-      named_solids += equals_ignoring_case(word, "solid") && !in.at_line_end();
+    if (equals_ignoring_case(word, "solid")) {
+      if (open_solid != 0) {
+        fail(in.line(), "'solid' inside the solid of line " + std::to_string(open_solid) +
+                            " (its 'endsolid' is missing)");
+      }
+      open_solid = in.line();
+      named_solids += !in.at_line_end();
       in.next_line();  // the solid's name may be any words, "outer" included
       word = next_word();
       continue;
     }
+    if (equals_ignoring_case(word, "endsolid")) {
+      if (open_solid == 0)
+        fail(in.line(), "'endsolid' without a 'solid' before it");
+      open_solid = 0;
+      in.next_line();
+      word = next_word();
+      continue;
+    }
+    if (open_solid == 0)
+      fail(in.line(), quoted(word) + " where 'solid' or the end of the file was expected");
     if (!equals_ignoring_case(word, "facet"))
       fail(in.line(), quoted(word) + " where a facet, 'solid' or 'endsolid' was expected");
     const std::size_t facet_line = in.line();
@@ -212,13 +229,21 @@ AsciiNotes read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
       fail(facet_line, "facet " + std::to_string(triangles + 1) + " has " + std::to_string(n) +
                            " vertices; an STL facet is a triangle (3)");
     }
-    if (equals_ignoring_case(word, "endloop"))
+    for (const char* end : {"endloop", "endfacet"}) {
+      if (!equals_ignoring_case(word, end)) {
+        fail(in.line(), quoted(word) + " where facet " + std::to_string(triangles + 1) + " (line " +
+                            std::to_string(facet_line) + ") needs '" + end + "'" +
+                            (word.empty() ? " (a truncated file?)" : ""));
+      }
       word = next_word();
-    if (equals_ignoring_case(word, "endfacet"))
-      word = next_word();
+    }
     const float* a = corners.data() + corners.size() - 9;
     normals_reversed += normal_against_winding(normal, a, a + 3, a + 6);
     ++triangles;
+  }
+  if (open_solid != 0) {
+    fail(in.line(), "the file ends inside the solid of line " + std::to_string(open_solid) +
+                        ", without 'endsolid' (a truncated file?)");
   }
   info.declared_faces = triangles;
   info.declared_vertices = 3 * triangles;
