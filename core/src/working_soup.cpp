@@ -19,43 +19,6 @@ bool has_repeated_vertex(PolygonView polygon) {
   return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
 }
 
-namespace {
-
-// Splits one degenerate polygon into simple loops of >= 3 corners.
-// `corners` holds input corner ids; returns the loops as lists of input corner ids.
-std::vector<std::vector<Index>> simple_loops(const Soup& input, std::vector<Index> corners) {
-  const auto vertex = [&](Index c) { return input.corner_vertices[c]; };
-  // Collapse consecutive repeats, cyclically.
-  std::vector<Index> collapsed;
-  for (Index c : corners) {
-    if (collapsed.empty() || vertex(collapsed.back()) != vertex(c))
-      collapsed.push_back(c);
-  }
-  while (collapsed.size() > 1 && vertex(collapsed.back()) == vertex(collapsed.front())) {
-    collapsed.pop_back();
-  }
-  // Cut out a loop each time a vertex comes back.
-  std::vector<std::vector<Index>> loops;
-  std::vector<Index> stack;
-  for (Index c : collapsed) {
-    auto again =
-        std::find_if(stack.begin(), stack.end(), [&](Index s) { return vertex(s) == vertex(c); });
-    if (again != stack.end()) {
-      std::vector<Index> loop(again, stack.end());
-      if (loop.size() >= 3)
-        loops.push_back(std::move(loop));
-      stack.erase(again + 1, stack.end());
-      continue;  // keep the earlier corner of the revisited vertex
-    }
-    stack.push_back(c);
-  }
-  if (stack.size() >= 3)
-    loops.push_back(std::move(stack));
-  return loops;
-}
-
-}  // namespace
-
 WorkingSoup::WorkingSoup(const Soup& input) : input_(input) {
   for (std::size_t f = 0; f < input.num_faces(); ++f) {
     if (has_repeated_vertex(input.polygon(f)))
@@ -79,7 +42,7 @@ WorkingSoup::WorkingSoup(const Soup& input) : input_(input) {
       std::vector<Index> corners(last - first);
       for (Index c = first; c < last; ++c)
         corners[c - first] = c;
-      loops = simple_loops(input, std::move(corners));
+      loops = simple_loops(std::move(corners), [&](Index c) { return input.corner_vertices[c]; });
       if (loops.empty()) {
         excluded_.push_back(static_cast<Index>(f));
         continue;

@@ -4,6 +4,7 @@
 
 #include "meshbridge/soup.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace meshbridge::detail {
@@ -42,5 +43,38 @@ class WorkingSoup {
 
 //! True if the polygon repeats a vertex index.
 bool has_repeated_vertex(PolygonView polygon);
+
+//! Splits a polygon that repeats a vertex into simple loops of >= 3 corners: consecutive repeats
+//! collapse (cyclically), then a loop is cut out each time a vertex comes back, the earlier corner
+//! of that vertex staying. `ids` are the polygon's corners in order (corner ids, or vertex indices
+//! themselves), `vertex(id)` their vertex; returns the loops as lists of ids (none if no loop of 3
+//! distinct corners is left). The one rule for repair (WorkingSoup) and the writers of triangles.
+template <class VertexOf>
+std::vector<std::vector<Index>> simple_loops(std::vector<Index> ids, VertexOf vertex) {
+  std::vector<Index> collapsed;
+  for (Index c : ids) {
+    if (collapsed.empty() || vertex(collapsed.back()) != vertex(c))
+      collapsed.push_back(c);
+  }
+  while (collapsed.size() > 1 && vertex(collapsed.back()) == vertex(collapsed.front()))
+    collapsed.pop_back();
+  std::vector<std::vector<Index>> loops;
+  std::vector<Index> stack;
+  for (Index c : collapsed) {
+    auto again =
+        std::find_if(stack.begin(), stack.end(), [&](Index s) { return vertex(s) == vertex(c); });
+    if (again != stack.end()) {
+      std::vector<Index> loop(again, stack.end());
+      if (loop.size() >= 3)
+        loops.push_back(std::move(loop));
+      stack.erase(again + 1, stack.end());
+      continue;  // keep the earlier corner of the revisited vertex
+    }
+    stack.push_back(c);
+  }
+  if (stack.size() >= 3)
+    loops.push_back(std::move(stack));
+  return loops;
+}
 
 }  // namespace meshbridge::detail

@@ -396,18 +396,40 @@ TEST_F(PlyStlIo, non_convex_polygons_are_cut_into_triangles_inside_them_for_stl)
   }
   EXPECT_NEAR(l_area, 3.0, 1e-6);
   EXPECT_NEAR(comb_area, 11.0, 1e-5);
-  // A pinched polygon (a vertex twice) still gives n - 2 triangles.
+  // A pinched polygon (a vertex twice) is split as repair splits it: two triangles, not a fan of
+  // four with two degenerate ones (a write of an unrepaired soup, as Python's write does).
   Soup pinched;
   for (const auto& [x, y] :
        std::vector<std::pair<double, double>>{{0, 0}, {1, 0}, {1, 1}, {-1, 0}, {-1, -1}})
     pinched.add_vertex(Point(x, y, 0));
   pinched.add_polygon({0, 1, 2, 0, 3, 4});
-  WriteOptions ascii;
-  ascii.binary = false;
-  write_mesh(path("pinched.stl"), as_mesh(pinched), nullptr, ascii);
-  ReadInfo info;
-  EXPECT_EQ(read_soup(path("pinched.stl"), &info).num_faces(), 4u);
-  EXPECT_EQ(info.declared_faces, 4u);
+  pinched.add_polygon({1, 2, 2, 3});  // a consecutive repeat: one triangle
+  const RepairResult split = repair(pinched);
+  for (bool binary : {true, false}) {
+    WriteOptions options;
+    options.binary = binary;
+    write_mesh(path("pinched.stl"), as_mesh(pinched), nullptr, options);
+    ReadInfo info;
+    const Soup back = read_soup(path("pinched.stl"), &info);
+    EXPECT_EQ(back.num_faces(), 3u);
+    EXPECT_EQ(info.declared_faces, 3u);
+    EXPECT_EQ(info.faces_set_aside, 0u);
+    EXPECT_EQ(back.num_faces(), split.mesh.soup.num_faces());
+  }
+  EXPECT_EQ(describe_written(path("pinched.stl"), pinched, MeshAttributes()).triangles, 3u);
+  write_mesh(path("pinched.3mf"), as_mesh(pinched));  // (lib3mf refuses degenerate triangles)
+  EXPECT_EQ(read_soup(path("pinched.3mf")).num_faces(), 3u);
+  // Nothing left of a record but repeats ("1 2 1 2"): written as it is, a facet set aside on
+  // reading, not lost.
+  Soup flat;
+  for (const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)})
+    flat.add_vertex(p);
+  flat.add_polygon({0, 1, 2});
+  flat.add_polygon({0, 1, 0, 1});
+  write_mesh(path("flat.stl"), as_mesh(flat));
+  ReadInfo flat_info;
+  EXPECT_EQ(read_soup(path("flat.stl"), &flat_info).num_faces(), 3u);
+  EXPECT_EQ(flat_info.faces_set_aside, 2u);
 }
 
 // --- what OpenMesh's readers lose ------------------------------------------------------------

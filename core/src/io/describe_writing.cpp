@@ -3,6 +3,7 @@
 // attribute is lost without a word.
 
 #include "io/formats.h"
+#include "io/triangulate.h"
 #include "meshbridge/counted.h"
 #include "meshbridge/io.h"
 
@@ -154,9 +155,8 @@ WrittenOutput describe_written(const std::string& path, const Soup& soup,
   }
   if (format == detail::Format::stl || format == detail::Format::threemf) {
     for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-      const std::size_t n = soup.arity(f);
-      written.triangles += n - 2;
-      written.polygons_fanned += n > 3 ? 1 : 0;
+      written.triangles += detail::polygon_triangle_count(soup.polygon(f));
+      written.polygons_fanned += soup.arity(f) > 3 ? 1 : 0;
     }
     std::size_t rounded = 0;  // vertices with a coordinate that is not exactly a float
     for (const Point& p : soup.positions) {

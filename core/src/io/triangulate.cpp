@@ -2,6 +2,7 @@
 #include "io/triangulate.h"
 
 #include "pipeline/grouping.h"
+#include "working_soup.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -15,11 +16,8 @@ double cross(double au, double av, double bu, double bv, double cu, double cv) {
   return (bu - au) * (cv - av) - (bv - av) * (cu - au);
 }
 
-}  // namespace
-
-void triangulate_polygon(const Soup& soup, std::size_t f, Triangulation& t) {
-  t.triangles.clear();
-  const PolygonView p = soup.polygon(f);
+//! Appends the triangles of the ring `p` (>= 3 corners) to `t.triangles`.
+void triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t) {
   const std::size_t n = p.size();
   const auto fan = [&](std::size_t first, std::size_t count) {  // the ring from `first` on
     Index a = static_cast<Index>(first), b = t.next[a];
@@ -36,7 +34,7 @@ void triangulate_polygon(const Soup& soup, std::size_t f, Triangulation& t) {
   }
   // The plane of the two coordinates across the largest component of the Newell normal, turned
   // so that the polygon runs counter-clockwise there.
-  const Point normal = newell_normal(soup, f);
+  const Point normal = newell_normal(soup, p);
   int drop = 0;
   for (int k = 1; k < 3; ++k) {
     if (std::abs(normal[k]) > std::abs(normal[drop]))
@@ -95,6 +93,41 @@ void triangulate_polygon(const Soup& soup, std::size_t f, Triangulation& t) {
     --left;
   }
   t.triangles.push_back({p[t.previous[start]], p[start], p[t.next[start]]});
+}
+
+}  // namespace
+
+void triangulate_polygon(const Soup& soup, std::size_t f, Triangulation& t) {
+  t.triangles.clear();
+  const PolygonView p = soup.polygon(f);
+  if (p.size() <= 3 || !has_repeated_vertex(p)) {
+    triangulate_ring(soup, p, t);
+    return;
+  }
+  const auto loops =
+      simple_loops(std::vector<Index>(p.begin(), p.end()), [](Index v) { return v; });
+  if (loops.empty()) {
+    triangulate_ring(soup, p, t);
+    return;
+  }
+  for (const std::vector<Index>& loop : loops) {
+    t.ring = loop;
+    triangulate_ring(soup, PolygonView{t.ring.data(), t.ring.data() + t.ring.size()}, t);
+  }
+}
+
+std::size_t polygon_triangle_count(PolygonView polygon) {
+  const std::size_t n = polygon.size();
+  if (n <= 3 || !has_repeated_vertex(polygon))
+    return n >= 3 ? n - 2 : 0;
+  const auto loops =
+      simple_loops(std::vector<Index>(polygon.begin(), polygon.end()), [](Index v) { return v; });
+  if (loops.empty())
+    return n - 2;
+  std::size_t triangles = 0;
+  for (const std::vector<Index>& loop : loops)
+    triangles += loop.size() - 2;
+  return triangles;
 }
 
 }  // namespace meshbridge::detail

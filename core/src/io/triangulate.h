@@ -17,14 +17,22 @@ struct Triangulation {
   std::vector<std::array<Index, 3>> triangles;  //!< the result: corners as vertex indices
   std::vector<double> u, v;                     // (scratch) the corners in the polygon's plane
   std::vector<Index> previous, next;            // (scratch) the ring of corners left
+  std::vector<Index> ring;                      // (scratch) one simple loop of a pinched polygon
 };
 
-//! The n - 2 triangles of polygon `f` of `soup` (n >= 3 corners), each running the polygon's
-//! way round, into `t.triangles`: a triangle as it is; larger polygons by ear clipping
-//! (Meisters 1975; O(n^2)) in the plane of their Newell normal, cutting off at each step the
-//! first convex corner whose triangle holds no other corner of the ring. A polygon with no such
-//! corner left (self-intersecting, pinched, or flat to a line), a zero normal, or more than
-//! 4096 corners has the rest fanned from its first remaining corner, as before.
+//! The triangles of polygon `f` of `soup` (n >= 3 corners), each running the polygon's way
+//! round, into `t.triangles`: a triangle as it is; larger polygons by ear clipping (Meisters 1975;
+//! O(n^2)) in the plane of their Newell normal, cutting off at each step the first convex corner
+//! whose triangle holds no other corner of the ring: n - 2 triangles. A polygon of more than 3
+//! corners that repeats a vertex (pinched, "1 2 3 1 4 5") is first split into simple loops as
+//! repair splits it (simple_loops()), each cut on its own, so it gets the triangles repair would
+//! give it (polygon_triangle_count()); if no loop is left, it is fanned as it is (its degenerate
+//! triangles keep the record). A ring with no ear left (self-intersecting, or flat to a line), a
+//! zero normal, or more than 4096 corners has the rest fanned from its first remaining corner.
 void triangulate_polygon(const Soup& soup, std::size_t f, Triangulation& t);
+
+//! How many triangles triangulate_polygon() gives polygon `polygon`: n - 2, or for a pinched
+//! polygon of more than 3 corners the sum over its simple loops.
+std::size_t polygon_triangle_count(PolygonView polygon);
 
 }  // namespace meshbridge::detail

@@ -36,7 +36,10 @@ std::vector<Index> boundary_sides(const EdgeBridges& bridges) {
 }
 
 Point newell_normal(const Soup& soup, std::size_t f) {
-  const PolygonView polygon = soup.polygon(f);
+  return newell_normal(soup, soup.polygon(f));
+}
+
+Point newell_normal(const Soup& soup, PolygonView polygon) {
   Point n(0, 0, 0);
   const std::size_t k = polygon.size();
   for (std::size_t i = 0; i < k; ++i) {
