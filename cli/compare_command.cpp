@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
+
 #include "paths.h"
 
 #include "meshbridge/bridged_mesh.h"
+#include "meshbridge/counted.h"
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
 #include "meshbridge/report_json.h"
@@ -67,8 +69,8 @@ int run_compare(const CompareArguments& arguments) {
     std::cout << compare_report_json(path, soup.num_vertices(), info.declared_faces, s, b) << "\n";
     return kOk;
   }
-  std::cout << path << ": " << soup.num_vertices() << " vertices, " << info.declared_faces
-            << " faces in the file\n";
+  std::cout << path << ": " << counted(soup.num_vertices(), "vertex") << ", "
+            << counted(info.declared_faces, "face") << " in the file\n";
   std::cout << std::left << std::setw(18) << "" << std::right << std::setw(16) << "OpenMesh stock"
             << std::setw(16) << "MeshBridge"
             << "\n";

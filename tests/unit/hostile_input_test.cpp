@@ -575,18 +575,26 @@ TEST_F(HostileFile, ply_header_without_end_or_with_unknown_format) {
 // vertex dimension, so a vertex element without properties made it add 10^8 vertices out of no
 // bytes at all (a 1.5 GiB allocation). Both encodings now get the same clear error.
 TEST_F(HostileFile, ply_vertex_element_without_coordinates) {
-  expect_error<ReadError>("no_properties_binary.ply",
-                          "ply\nformat binary_little_endian 1.0\nelement vertex 100000000\n"
-                          "end_header\n",
-                          "the PLY vertex element has 0 coordinate properties (x, y, z), not 3");
-  expect_error<ReadError>("no_properties_ascii.ply",
-                          "ply\nformat ascii 1.0\nelement vertex 100000000\nelement face 0\n"
-                          "end_header\n",
-                          "the PLY vertex element has 0 coordinate properties (x, y, z), not 3");
-  expect_error<ReadError>("only_x_binary.ply",
-                          "ply\nformat binary_big_endian 1.0\nelement vertex 2000000000\n"
-                          "property float x\nend_header\n",
-                          "the PLY vertex element has 1 coordinate properties (x, y, z), not 3");
+  expect_error<ReadError>(
+      "no_properties_binary.ply",
+      "ply\nformat binary_little_endian 1.0\nelement vertex 100000000\n"
+      "end_header\n",
+      "the PLY vertex element has no 'x', 'y', 'z' property (a vertex needs x, y and z)");
+  expect_error<ReadError>(
+      "no_properties_ascii.ply",
+      "ply\nformat ascii 1.0\nelement vertex 100000000\nelement face 0\n"
+      "end_header\n",
+      "the PLY vertex element has no 'x', 'y', 'z' property (a vertex needs x, y and z)");
+  expect_error<ReadError>(
+      "only_x_binary.ply",
+      "ply\nformat binary_big_endian 1.0\nelement vertex 2000000000\n"
+      "property float x\nend_header\n",
+      "the PLY vertex element has no 'y', 'z' property (a vertex needs x, y and z)");
+  expect_error<ReadError>("twice_x.ply",
+                          "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                          "property float x\nproperty float y\nproperty float z\nend_header\n"
+                          "0 0 0 0\n",
+                          "PLY header line 5: PLY element 'vertex' has property 'x' twice");
 }
 
 TEST_F(HostileFile, binary_stl_reads_a_tetrahedron_welded) {

@@ -379,6 +379,26 @@ TEST_F(ReaderStrictness, a_file_under_another_formats_name_is_named_as_what_it_l
                        "it holds binary data (a NUL byte at offset 4)"));
 }
 
+TEST_F(ReaderStrictness, an_off_non_finite_coordinate_and_a_false_binary_ply_count_are_named) {
+  try {
+    read_soup(write("nan.off", "OFF\n# a comment\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"));
+    FAIL() << "no error";
+  } catch (const InvalidSoupError& error) {
+    EXPECT_TRUE(contains(error.what(),
+                         "nan.off: OFF vertex 2 of 3 (line 5) has a non-finite "
+                         "coordinate (nan or inf)"));
+  }
+  // A binary PLY whose vertex count is 1 too low reads its faces from the last vertex's bytes.
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 0\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  ply += std::string(4 * 12, '\0');
+  EXPECT_TRUE(contains(error_of("lie.ply", ply),
+                       "no polygons in the file (3 vertices); 12 bytes follow the last declared "
+                       "element: a false count in the header?"));
+}
+
 TEST_F(ReaderStrictness, ascii_ply_values_outside_their_declared_type_are_named_by_line) {
   // A colour declared uchar that says 300, a coordinate declared int that says 0.5: no binary
   // file could hold them, and reading them anyhow (wrapped, clamped, rounded) would change them.

@@ -196,7 +196,12 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
              ? ", " + counted(counts.empty_records, "record") + " holding no face, such as a " +
                    "strip run of fewer than 3 vertices"
              : std::string()) +
-        ")" + other_format_hint(file, format));
+        ")" +
+        (counts.trailing_bytes > 0
+             ? "; " + counted(counts.trailing_bytes, "byte") +
+                   " follow the last declared element: a false count in the header?"
+             : std::string()) +
+        other_format_hint(file, format));
   }
   try {
     detail::account_faces(soup, counts);  // validates the soup on the way

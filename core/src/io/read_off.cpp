@@ -202,6 +202,11 @@ class OffReader {
                              : at_line() + ", found '" + clip(in_.word()) + "'"));
         }
       }
+      if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
+        throw InvalidSoupError(file_.path() + ": OFF vertex " + std::to_string(v + 1) + " of " +
+                               std::to_string(nv) + at_line() +
+                               " has a non-finite coordinate (nan or inf)");
+      }
       soup_.positions.push_back(Point(xyz[0], xyz[1], xyz[2]));
       if (h.colors && (want_colors || !in_.at_line_end())) {  // (colour-map indices are counted)
         numbers_to_line_end(rest, integral);

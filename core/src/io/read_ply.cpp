@@ -173,17 +173,22 @@ class PlyReader {
   void check_elements() {
     // The vertex element first: without x, y and z nothing else matters.
     int coordinates = 0;
-    for (const PlyElement& e : header_.elements) {
-      if (e.name != "vertex")
-        continue;
-      for (const PlyProperty& p : e.properties) {
-        const Role r = role_of(e, p);
-        coordinates += r == Role::x || r == Role::y || r == Role::z;
+    std::string missing;
+    for (const char* axis : {"x", "y", "z"}) {
+      int found = 0;
+      for (const PlyElement& e : header_.elements) {
+        if (e.name != "vertex")
+          continue;
+        for (const PlyProperty& p : e.properties)
+          found += p.name == axis;
       }
+      coordinates += found > 0;  // (the header refuses a property declared twice)
+      if (found == 0)
+        missing += std::string(missing.empty() ? "" : ", ") + "'" + axis + "'";
     }
     if (coordinates != 3) {
-      throw ReadError(where() + "the PLY vertex element has " + std::to_string(coordinates) +
-                      " coordinate properties (x, y, z), not 3");
+      throw ReadError(where() + "the PLY vertex element has no " + missing +
+                      " property (a vertex needs x, y and z)");
     }
     for (const PlyElement& e : header_.elements) {
       if (e.count > 0 && e.properties.empty()) {
