@@ -32,6 +32,7 @@ int run_check(const CheckArguments& arguments) {
   check_readable_file(path);
   const CloseGapsOptions weld = parse_weld(arguments.weld);
   ReadInfo info;
+  MeshAttributes attributes;  // for the faults among what the reader reads past
   DefectReport report;
   CloseGapsReport gaps;
   std::string weld_hint;  // what a wider weld would close, when boundary edges are left
@@ -39,7 +40,7 @@ int run_check(const CheckArguments& arguments) {
     ProgressDisplay progress(path, progress_wanted(arguments.progress), progress_wanted(false),
                              check_plan());
     progress.stage(Stage::read, 0);
-    const Soup soup = read_soup(path, &info);
+    const Soup soup = read_soup(path, &info, &attributes);
     progress.stage(Stage::detect, 0);
     report = detect_defects(soup);
     count_records_without_corners(info, report);  // face records with no corner: set aside too
@@ -50,6 +51,7 @@ int run_check(const CheckArguments& arguments) {
     }
   }
   warn_about_reader(path, info);
+  warn_about_file_faults(path, attributes);
   if (arguments.json) {
     ReportJsonOptions json;
     json.elements = arguments.elements;

@@ -29,6 +29,10 @@ class UsageError : public std::runtime_error {
 //! Tells on stderr, in one line (describe_reading), about every record of the file that is not
 //! kept as one simple polygon: split, set aside, dangling edges, lone points. Silent otherwise.
 void warn_about_reader(const std::string& path, const ReadInfo& info);
+//! Tells on stderr, one line each, about the faults of the file among what the reader read past
+//! (NotKept::fault: an index naming no record, numbers that are no colour...), for `check`, which
+//! writes nothing and so never names them as left out of an output.
+void warn_about_file_faults(const std::string& path, const MeshAttributes& attributes);
 
 void add_check_command(CLI::App& app, int& exit_code);
 void add_compare_command(CLI::App& app, int& exit_code);

@@ -151,6 +151,15 @@ check_json)
   expect_exit 1 "$mb" check "$work/empty_lp.obj" --json
   expect_in "$work/err" "2 records holding no face skipped"
   [ "$(json_field "$work/out" read.empty_records)" = 2 ] || fail "read.empty_records"
+  # Faults among what the reader reads past: check names them as repair does.
+  printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/9 2/1 3/1\n' >"$work/bad_vt.obj"
+  expect_exit 1 "$mb" check "$work/bad_vt.obj"
+  expect_in "$work/err" "meshbridge: warning: $work/bad_vt.obj: OBJ texture coordinate (vt) or normal (vn) indices the file has no record for, on 3 corners"
+  printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0 255 9\n' >"$work/junk.off"
+  expect_exit 1 "$mb" check "$work/junk.off"
+  expect_in "$work/err" "OFF values after a face's corners that are no colour (not 1, 3 or 4 numbers), on 1 face line"
+  expect_exit 0 "$mb" check "$models/icosphere.obj"
+  [ ! -s "$work/err" ] || fail "warnings on a clean file: $(cat "$work/err")"
   ;;
 compare_twocubes)
   expect_exit 0 "$mb" compare "$models/twocubes.obj"

@@ -112,6 +112,11 @@ struct NotKept {
   std::string what;       //!< what it is, with the format's own names
   std::size_t count = 0;  //!< on how many elements or records
   std::string noun;       //!< of what ("vertex", "face", "line", "item"), for counted()
+  //! True when the file is at fault there, not merely holding what MeshBridge has no use for: an
+  //! index naming no record, numbers that are no colour, a colour out of range, a stored normal
+  //! against the winding. `meshbridge check` warns about these (it writes nothing, so it does
+  //! not name the rest).
+  bool fault = false;
 };
 
 //! What a file carries besides positions and polygons, where MeshBridge keeps it.

@@ -138,13 +138,13 @@ class ObjReader {
       if (colours_clamped_ > 0) {
         add_not_kept(*attributes_, {"OBJ vertex colour values outside 0-1 (or 0-255) or not "
                                     "finite, clamped to the range",
-                                    colours_clamped_, "vertex"});
+                                    colours_clamped_, "vertex", true});
       }
       if (values_no_colour_ > 0) {
         add_not_kept(*attributes_,
                      {"OBJ numbers after a vertex that are no w or colour (5, or more "
                       "than 7)",
-                      values_no_colour_, "vertex"});
+                      values_no_colour_, "vertex", true});
       }
       attributes_->normals = normals_;
       if (!attributes_->vertex_colors.empty())
@@ -661,7 +661,7 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
                                     .count_attribute_index_faults(totals);
     add_not_kept(*attributes,
                  {"OBJ texture coordinate (vt) or normal (vn) indices the file has no record for",
-                  corners, "corner"});
+                  corners, "corner", true});
   }
 }
 

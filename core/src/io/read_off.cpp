@@ -348,13 +348,13 @@ class OffReader {
       not_kept.push_back(
           {std::string("OFF values after a vertex that are no colour (") +
                (h.colors ? "not 1, 3 or 4 numbers" : "plain OFF: colours need COFF") + ")",
-           vertex_values_no_colour_, "vertex line"});
+           vertex_values_no_colour_, "vertex line", true});
     }
     if (face_values_no_colour_ > 0) {
       not_kept.push_back(
           {"OFF values after a face's corners that are no colour (not 1, 3 or 4 "
            "numbers)",
-           face_values_no_colour_, "face line"});
+           face_values_no_colour_, "face line", true});
     }
     if (binary_face_colours_ > 0) {
       not_kept.push_back(

@@ -266,7 +266,7 @@ NotKept reversed_normals(std::size_t facets) {
   return {
       "STL facet normals against the winding of their corners (written ones follow the "
       "winding)",
-      facets, "facet"};
+      facets, "facet", true};
 }
 
 }  // namespace
