@@ -45,7 +45,10 @@ struct DefectReport {
   std::vector<VertexPair> inconsistent_edges;    //!< 2-sided edges whose sides run the same way
   std::size_t num_nonorientable_components = 0;  //!< components that no flipping makes consistent
   std::size_t num_components = 0;                //!< connected through every contender
-  long long euler_characteristic = 0;            //!< V - E + F over the used vertices
+  //! V - E + F over the used vertices, with F the faces detection works on: a pinched polygon
+  //! counts as its simple loops (as repair splits it), one with < 3 distinct corners not at all.
+  //! So F may differ from num_faces, which counts the file's polygons.
+  long long euler_characteristic = 0;
   bool watertight = false;  //!< closed 2-manifold: no boundary, singular or inconsistent element
   //! Face records of the file with no corner at all, so in no soup (set by
   //! count_records_without_corners(), 0 for a soup alone): counted in the reports' `faces` and
