@@ -129,9 +129,8 @@ double apply_separate(const std::string& text, IndexedMesh& mesh, std::size_t ve
   if (vertices_split == 0 || (!automatic && distance == 0))
     return 0;
   if (is_stl_path(out)) {
-    const double smallest = smallest_stl_separation(mesh);
-    if (automatic) {
-      distance = smallest;
+    if (automatic) {  // one that a re-read's default gap closing does not undo either
+      distance = stl_separation_surviving_weld(mesh);
     } else {
       IndexedMesh trial = mesh;
       separate_split_vertices(trial, distance);
@@ -139,7 +138,7 @@ double apply_separate(const std::string& text, IndexedMesh& mesh, std::size_t ve
         std::ostringstream message;
         message << "--separate " << text << " is too small for float32 (STL) at this model's "
                 << "coordinates: the copies would weld again; the smallest EPS that works is "
-                << smallest << " (or use --separate auto)";
+                << smallest_stl_separation(mesh) << " (or use --separate auto)";
         throw UsageError(message.str());
       }
     }

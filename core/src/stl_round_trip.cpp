@@ -3,6 +3,7 @@
 
 #include "io/triangulate.h"
 
+#include "meshbridge/close_gaps.h"
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/separate_copies.h"
 
@@ -56,9 +57,14 @@ std::size_t singular_elements_after_stl_round_trip(const Soup& soup) {
   return report.singular_edges.size() + report.num_singular_vertices();
 }
 
-double smallest_stl_separation(const IndexedMesh& mesh) {
+namespace {
+
+//! The first u * 2^k (see smallest_stl_separation()) after which `survives(moved soup)` holds; 0
+//! when `mesh` has no split vertex.
+template <class Survives>
+double smallest_separation(const IndexedMesh& mesh, const char* caller, Survives survives) {
   if (mesh.vertex_origin.size() != mesh.soup.num_vertices()) {
-    throw std::invalid_argument("smallest_stl_separation: vertex_origin has " +
+    throw std::invalid_argument(std::string(caller) + ": vertex_origin has " +
                                 std::to_string(mesh.vertex_origin.size()) + " entries for " +
                                 std::to_string(mesh.soup.num_vertices()) + " vertices");
   }
@@ -82,12 +88,48 @@ double smallest_stl_separation(const IndexedMesh& mesh) {
     const double distance = std::ldexp(ulp, k);
     IndexedMesh moved = mesh;
     separate_split_vertices(moved, distance);
-    if (singular_elements_after_stl_round_trip(moved.soup) == 0)
+    if (survives(moved.soup))
       return distance;
   }
   throw std::invalid_argument(
       "no separation distance makes this mesh survive STL: float32 coordinates merge vertices "
       "that are not copies of one split vertex; write OBJ, OFF, PLY or 3MF instead");
+}
+
+}  // namespace
+
+double smallest_stl_separation(const IndexedMesh& mesh) {
+  return smallest_separation(mesh, "smallest_stl_separation", [](const Soup& moved) {
+    return singular_elements_after_stl_round_trip(moved) == 0;
+  });
+}
+
+double stl_separation_surviving_weld(const IndexedMesh& mesh, const CloseGapsOptions& weld) {
+  // Copies of one split vertex, as lists of vertices (groups of 2 or more).
+  std::map<Index, std::vector<Index>> groups;
+  for (std::size_t v = 0; v < mesh.vertex_origin.size(); ++v)
+    groups[mesh.vertex_origin[v]].push_back(static_cast<Index>(v));
+  const auto as_float = [](const Point& p) {
+    return Point(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]));
+  };
+  return smallest_separation(mesh, "stl_separation_surviving_weld", [&](const Soup& moved) {
+    if (singular_elements_after_stl_round_trip(moved) != 0)
+      return false;
+    // Gap closing welds vertices closer than its tolerance: no two copies may be that close once
+    // rounded to the floats of the file.
+    const double tolerance = weld.tolerance < 0 ? default_weld_tolerance(moved) : weld.tolerance;
+    for (const auto& [origin, copies] : groups) {
+      for (std::size_t i = 0; i < copies.size(); ++i) {
+        for (std::size_t j = i + 1; j < copies.size(); ++j) {
+          const Point d =
+              as_float(moved.positions[copies[i]]) - as_float(moved.positions[copies[j]]);
+          if (d.norm() <= tolerance)
+            return false;
+        }
+      }
+    }
+    return true;
+  });
 }
 
 }  // namespace meshbridge

@@ -259,6 +259,13 @@ stl_warning)
   expect_in "$work/out" "watertight yes"
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/a.stl" --separate auto
   expect_in "$work/out" "as re-read from $work/a.stl: singular edges 0, singular vertices 0"
+  # Repairing that STL again changes no byte: the default gap closing does not weld the copies.
+  for model in bowtie book_of_three moebius; do
+    expect_exit 0 "$mb" repair "$models/$model.obj" "$work/$model-1.stl" --separate auto
+    expect_exit 0 "$mb" repair "$work/$model-1.stl" "$work/$model-2.stl" --separate auto
+    expect_in "$work/out" "gaps (tolerance"
+    cmp -s "$work/$model-1.stl" "$work/$model-2.stl" || fail "$model: a repaired STL repaired again changed"
+  done
   expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/t.stl" --separate 1e-9
   expect_in "$work/err" "the smallest EPS that works is"
   # The JSON report says what the STL file re-reads as, next to the repair's own counts.

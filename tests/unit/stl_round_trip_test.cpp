@@ -2,6 +2,8 @@
 // What a repaired mesh becomes through STL, and the smallest separation that survives float32.
 
 #include "meshbridge/stl_round_trip.h"
+#include "meshbridge/close_gaps.h"
+#include "meshbridge/detect_defects.h"
 #include "meshbridge/models/canonical_models.h"
 #include "meshbridge/repair.h"
 #include "meshbridge/separate_copies.h"
@@ -65,6 +67,27 @@ TEST(StlRoundTrip, copies_at_the_origin_move_by_the_models_float_spacing_not_a_d
   IndexedMesh separated = r.mesh;
   separate_split_vertices(separated, smallest);
   EXPECT_EQ(singular_elements_after_stl_round_trip(separated.soup), 0u);
+}
+
+TEST(StlRoundTrip, the_separation_for_a_reread_keeps_copies_beyond_the_default_weld) {
+  // The bowtie's copies of its pinch vertex are boundary vertices: one float spacing apart, the
+  // default gap closing of a repair that reads the STL back would weld them into the pinch again.
+  const RepairResult r = repair(models::bowtie());
+  ASSERT_GT(r.report.vertices_split, 0u);
+  const double smallest = smallest_stl_separation(r.mesh);
+  const double for_reread = stl_separation_surviving_weld(r.mesh);
+  EXPECT_GT(for_reread, smallest);
+  for (const auto& [distance, welds] : {std::pair{smallest, true}, std::pair{for_reread, false}}) {
+    IndexedMesh separated = r.mesh;
+    separate_split_vertices(separated, distance);
+    const ClosedGaps reread = close_gaps(stl_round_trip(separated.soup));
+    EXPECT_EQ(reread.report.vertices_welded > 0, welds) << distance;
+    EXPECT_EQ(detect_defects(reread.soup).num_singular_vertices() > 0, welds) << distance;
+  }
+  // An explicit tolerance is honoured: 0 (gap closing off) needs no more than STL itself.
+  CloseGapsOptions off;
+  off.tolerance = 0;
+  EXPECT_EQ(stl_separation_surviving_weld(r.mesh, off), smallest);
 }
 
 TEST(StlRoundTrip, nothing_split_needs_no_separation) {

@@ -3,6 +3,7 @@
 //! \file stl_round_trip.h
 //! What a mesh becomes when written as STL and read back: the truth every STL route reports.
 
+#include "meshbridge/close_gaps.h"
 #include "meshbridge/indexed_mesh.h"
 
 #include <cstddef>
@@ -28,5 +29,14 @@ std::size_t singular_elements_after_stl_round_trip(const Soup& soup);
 //! \throw std::invalid_argument when no such distance exists (float32 merges vertices that are
 //!        not copies of one split vertex, or the copies cannot be separated)
 double smallest_stl_separation(const IndexedMesh& mesh);
+
+//! As smallest_stl_separation(), the first `u * 2^k` after which the mesh also survives the gap
+//! closing `weld` (default: the automatic tolerance, default_weld_tolerance() of the moved mesh)
+//! of a repair or check that re-reads the STL: no two copies of one split vertex are within the
+//! tolerance of each other at float32 precision, so that gap closing cannot weld them back. What
+//! `meshbridge repair --separate auto` uses, so that repairing its STL output again changes
+//! nothing. Each step costs one STL round trip and detection of the mesh.
+//! \pre, \throw as smallest_stl_separation()
+double stl_separation_surviving_weld(const IndexedMesh& mesh, const CloseGapsOptions& weld = {});
 
 }  // namespace meshbridge
