@@ -5,6 +5,7 @@
 #include "io/parse_numbers.h"
 #include "io/ply_header.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -15,26 +16,12 @@ namespace meshbridge::detail {
 
 //! The range of an integer PLY type (int8 -128..127 ... uint32 0..4294967295).
 inline void ply_integer_range(PlyScalar type, std::int64_t& lowest, std::int64_t& highest) {
-  switch (type) {
-    case PlyScalar::i8:
-      lowest = -128, highest = 127;
-      return;
-    case PlyScalar::u8:
-      lowest = 0, highest = 255;
-      return;
-    case PlyScalar::i16:
-      lowest = -32768, highest = 32767;
-      return;
-    case PlyScalar::u16:
-      lowest = 0, highest = 65535;
-      return;
-    case PlyScalar::i32:
-      lowest = -2147483648LL, highest = 2147483647;
-      return;
-    default:  // u32 (the float types have no integer range: callers ask for integers only)
-      lowest = 0, highest = 4294967295LL;
-      return;
-  }
+  // In the order of PlyScalar: i8, u8, i16, u16, i32, u32 (the float types are never asked).
+  static constexpr std::int64_t kLowest[] = {-128, 0, -32768, 0, -2147483648LL, 0};
+  static constexpr std::int64_t kHighest[] = {127, 255, 32767, 65535, 2147483647, 4294967295LL};
+  const int t = std::min(static_cast<int>(type), 5);
+  lowest = kLowest[t];
+  highest = kHighest[t];
 }
 
 //! Parses the ascii value at [first, last) as an integer of `type` (an integer type): a whole
