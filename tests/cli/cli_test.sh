@@ -158,6 +158,21 @@ check_json)
   printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0 255 9\n' >"$work/junk.off"
   expect_exit 1 "$mb" check "$work/junk.off"
   expect_in "$work/err" "OFF values after a face's corners that are no colour (not 1, 3 or 4 numbers), on 1 face line"
+  # Words that are no number after an OFF vertex or face, and colours clamped into range: warned
+  # by check, and by repair, which writes the clamped colour.
+  printf 'COFF
+3 1 0
+0 0 0 300 0 0
+1 0 0 abc
+0 1 0
+3 0 1 2 hello
+' >"$work/words.off"
+  expect_exit 1 "$mb" check "$work/words.off"
+  expect_in "$work/err" "meshbridge: warning: $work/words.off: OFF words after a vertex's numbers that are no number (read past), on 1 vertex line"
+  expect_in "$work/err" "OFF words after a face's numbers that are no number (read past), on 1 face line"
+  expect_in "$work/err" "OFF vertex colour values outside 0-1 (or 0-255) or not finite, clamped to the range, on 1 vertex"
+  expect_exit 0 "$mb" repair "$work/words.off" "$work/words_out.off"
+  expect_in "$work/err" "clamped to the range, on 1 vertex: written clamped"
   expect_exit 0 "$mb" check "$models/icosphere.obj"
   [ ! -s "$work/err" ] || fail "warnings on a clean file: $(cat "$work/err")"
   ;;

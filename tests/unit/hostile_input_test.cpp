@@ -512,10 +512,10 @@ TEST_F(HostileFile, ply_negative_and_out_of_range_indices) {
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
       "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
   expect_error<ReadError>("negative_index.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 -5\n",
-                          "face 1 refers to vertex index -5");
+                          "PLY face 1 (line 13) refers to vertex index -5");
   expect_error<ReadError>("range.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
-                          "face 1, corner 3 refers to vertex index 3, but the file has 3 vertices "
-                          "(counting from 0)");
+                          "PLY face 1 (line 13) refers to vertex index 3, but the file has 3 "
+                          "vertices (indices count from 0)");
 }
 
 TEST_F(HostileFile, binary_ply_negative_index_is_named_as_written) {

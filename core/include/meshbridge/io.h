@@ -117,6 +117,9 @@ struct NotKept {
   //! against the winding. `meshbridge check` warns about these (it writes nothing, so it does
   //! not name the rest).
   bool fault = false;
+  //! True when the values are kept, but clamped into their range (a colour channel of 300): the
+  //! writers write the clamped values.
+  bool clamped = false;
 };
 
 //! What a file carries besides positions and polygons, where MeshBridge keeps it.

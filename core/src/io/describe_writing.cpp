@@ -71,9 +71,11 @@ std::vector<std::string> describe_unwritten(const std::string& path,
       what += counted(attributes.normals, "normal") + " (vn)";
     lost.push_back(what + " not written: MeshBridge writes neither");
   }
-  for (const NotKept& n : attributes.not_kept)
-    lost.push_back(n.what + ", on " + counted(n.count, n.noun) +
-                   ": not written (MeshBridge reads past them)");
+  for (const NotKept& n : attributes.not_kept) {
+    lost.push_back(
+        n.what + ", on " + counted(n.count, n.noun) +
+        (n.clamped ? ": written clamped" : ": not written (MeshBridge reads past them)"));
+  }
   const bool vertex_colors = !attributes.vertex_colors.empty();
   const bool face_colors = !attributes.face_colors.empty();
   // MeshBridge's 3MF writer writes the core specification only (no materials extension).

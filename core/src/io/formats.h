@@ -22,6 +22,7 @@
 //     most what the remaining bytes can hold. Never read outside [file.data(), file.end()).
 //   - Indices may be out of range or coordinates non-finite: store them as they are (index
 //     kNoIndex for negative ones that do not resolve); the dispatcher's account_faces names them.
+//     A reader that can name them better (ascii PLY: by line) throws itself.
 //
 // WRITERS  `void write_FMT(AtomicOutput& out, const IndexedMesh& mesh,
 //                           const MeshAttributes* attributes, const WriteOptions& options)`
@@ -40,12 +41,20 @@
 #include "meshbridge/io.h"
 #include "meshbridge/soup.h"
 
+#include <string>
+#include <string_view>
+
 namespace meshbridge::detail {
 
 //! The file formats, by extension.
 enum class Format { unknown, obj, off, ply, stl, threemf };
 //! The format of `path` by its extension (any case; unknown without one).
 Format format_of(const std::string& path);
+//! For a file (its whole bytes) that the reader of `format` cannot read or finds no polygon in:
+//! what it looks like instead, as "; it begins with 'ply': a PLY file under another name?" (other
+//! formats' first words, a zip archive's magic bytes, a binary STL's size, NUL bytes in text),
+//! or empty.
+std::string other_format_hint(std::string_view file, Format format);
 
 void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 //! A face corner of an OBJ soup whose vertex is past the file's last vertex (found after the

@@ -12,7 +12,6 @@
 #include "meshbridge/errors.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -109,38 +108,6 @@ void name_index_out_of_range(const detail::MappedFile& file, Format format, cons
   }
 }
 
-// For a file in which the reader of `format` found no polygon: what it looks like instead, as
-// "; it begins with 'ply': a PLY file under another name?", or empty.
-std::string other_format_hint(const detail::MappedFile& file, Format format) {
-  const std::string_view head(file.data(), std::min<std::size_t>(file.size(), 4096));
-  const auto begins = [&head](std::string_view word) {
-    return head.substr(0, word.size()) == word &&
-           (head.size() == word.size() ||
-            std::isspace(static_cast<unsigned char>(head[word.size()])));
-  };
-  const std::uint64_t stl_triangles =
-      file.size() >= 84 ? std::uint64_t(static_cast<unsigned char>(file.data()[80])) |
-                              std::uint64_t(static_cast<unsigned char>(file.data()[81])) << 8 |
-                              std::uint64_t(static_cast<unsigned char>(file.data()[82])) << 16 |
-                              std::uint64_t(static_cast<unsigned char>(file.data()[83])) << 24
-                        : 0;
-  if (format != Format::ply && begins("ply"))
-    return "; it begins with 'ply': a PLY file under another name?";
-  if (format != Format::off && (begins("OFF") || begins("COFF") || begins("NOFF")))
-    return "; it begins with '" + std::string(head.substr(0, head.find_first_of(" \t\r\n"))) +
-           "': an OFF file under another name?";
-  if (format != Format::stl && file.size() >= 84 && 84 + 50 * stl_triangles == file.size())
-    return "; its size is that of a binary STL of " + counted(stl_triangles, "triangle") +
-           ": an STL file under another name?";
-  if (format != Format::stl && begins("solid"))
-    return "; it begins with 'solid': an ASCII STL file under another name?";
-  const std::size_t nul = head.find('\0');
-  if (nul != std::string_view::npos && (format == Format::obj || format == Format::off))
-    return "; it holds binary data (a NUL byte at offset " + std::to_string(nul) +
-           "), which a text file never does";
-  return {};
-}
-
 }  // namespace
 
 bool is_supported_mesh_file(const std::string& path) {
@@ -201,7 +168,7 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
              ? "; " + counted(counts.trailing_bytes, "byte") +
                    " follow the last declared element: a false count in the header?"
              : std::string()) +
-        other_format_hint(file, format));
+        detail::other_format_hint(file.view(), format));
   }
   try {
     detail::account_faces(soup, counts);  // validates the soup on the way

@@ -85,43 +85,76 @@ std::string mismatch(const PlyElement& e, const std::vector<std::string_view>& w
   return {};
 }
 
-}  // namespace
+//! The non-blank lines of an ascii PLY body, in order, with their numbers.
+class BodyLines {
+ public:
+  BodyLines(std::string_view file, const PlyHeader& header)
+      : file_(file),
+        at_(header.body),
+        line_number_(1 + static_cast<std::size_t>(
+                             std::count(file.begin(), file.begin() + header.body, '\n'))) {}
 
-std::optional<std::string> locate_ascii_ply_mismatch(std::string_view file,
-                                                     const PlyHeader& header) {
-  std::size_t line_number =
-      1 + static_cast<std::size_t>(std::count(file.begin(), file.begin() + header.body, '\n'));
-  std::size_t at = header.body;
-  const auto next_line = [&]() -> std::optional<std::string_view> {
-    while (at < file.size()) {
-      const std::size_t end = std::min(file.find('\n', at), file.size());
-      const std::string_view line = file.substr(at, end - at);
+  //! The next non-blank line, or nothing at the end of the file.
+  std::optional<std::string_view> next() {
+    while (at_ < file_.size()) {
+      const std::size_t end = std::min(file_.find('\n', at_), file_.size());
+      const std::string_view line = file_.substr(at_, end - at_);
       const bool blank = std::all_of(line.begin(), line.end(), is_ply_blank);
-      at = end + 1;
-      ++line_number;
+      at_ = end + 1;
+      ++line_number_;
       if (!blank)
         return line;
     }
     return std::nullopt;
-  };
+  }
+  //! The number of the line next() returned last.
+  std::size_t last() const { return line_number_ - 1; }
+
+ private:
+  std::string_view file_;
+  std::size_t at_;
+  std::size_t line_number_;
+};
+
+}  // namespace
+
+std::size_t ascii_ply_item_line(std::string_view file, const PlyHeader& header, std::size_t element,
+                                std::uint64_t item) {
+  BodyLines lines(file, header);
+  for (std::size_t k = 0; k < element && k < header.elements.size(); ++k) {
+    for (std::uint64_t i = 0; i < header.elements[k].count; ++i) {
+      if (!lines.next())
+        return 0;
+    }
+  }
+  for (std::uint64_t i = 0; i <= item; ++i) {
+    if (!lines.next())
+      return 0;
+  }
+  return lines.last();
+}
+
+std::optional<std::string> locate_ascii_ply_mismatch(std::string_view file,
+                                                     const PlyHeader& header) {
+  BodyLines lines(file, header);
   for (const PlyElement& e : header.elements) {
     for (std::uint64_t i = 0; i < e.count; ++i) {
-      const std::optional<std::string_view> line = next_line();
+      const std::optional<std::string_view> line = lines.next();
       if (!line) {
-        return "the file ends after line " + std::to_string(line_number - 1) + ", before " +
-               e.name + " " + std::to_string(i + 1) + " of " + std::to_string(e.count) +
+        return "the file ends after line " + std::to_string(lines.last()) + ", before " + e.name +
+               " " + std::to_string(i + 1) + " of " + std::to_string(e.count) +
                " (a truncated file or a false count)";
       }
       const std::string fault = mismatch(e, ply_line_words(*line));
       if (!fault.empty()) {
-        return "line " + std::to_string(line_number - 1) + ", " + e.name + " " +
+        return "line " + std::to_string(lines.last()) + ", " + e.name + " " +
                std::to_string(i + 1) + " of " + std::to_string(e.count) + ": " + fault +
                " (a malformed line, or a false element count before it)";
       }
     }
   }
-  if (const std::optional<std::string_view> line = next_line()) {
-    return "line " + std::to_string(line_number - 1) + ": values after the last declared item (" +
+  if (const std::optional<std::string_view> line = lines.next()) {
+    return "line " + std::to_string(lines.last()) + ": values after the last declared item (" +
            (header.elements.empty() ? std::string("no element")
                                     : header.elements.back().name + " " +
                                           std::to_string(header.elements.back().count)) +

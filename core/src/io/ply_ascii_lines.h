@@ -22,4 +22,10 @@ namespace meshbridge::detail {
 std::optional<std::string> locate_ascii_ply_mismatch(std::string_view file,
                                                      const PlyHeader& header);
 
+//! The line (counted from 1) of item `item` of element `element` (an index into
+//! header.elements) in the ascii PLY body of `file`, one item per non-blank line as above; 0 if
+//! the file ends before it.
+std::size_t ascii_ply_item_line(std::string_view file, const PlyHeader& header, std::size_t element,
+                                std::uint64_t item);
+
 }  // namespace meshbridge::detail

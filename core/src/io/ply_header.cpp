@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/ply_header.h"
 
+#include "io/formats.h"
+
 #include "meshbridge/errors.h"
 
 #include <charconv>
@@ -126,7 +128,8 @@ PlyHeader parse_ply_header(std::string_view data, const std::string& path) {
     std::string start(first.empty() ? std::string_view() : first[0].substr(0, 16));
     for (char& c : start)
       c = c >= 32 && c < 127 ? c : '?';
-    throw ReadError(where + "not a PLY file: it starts with '" + start + "', not 'ply'");
+    throw ReadError(where + "not a PLY file: it starts with '" + start + "', not 'ply'" +
+                    other_format_hint(data, Format::ply));
   }
   while (true) {
     if (!next_line(line)) {

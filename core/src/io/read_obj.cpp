@@ -138,7 +138,7 @@ class ObjReader {
       if (colours_clamped_ > 0) {
         add_not_kept(*attributes_, {"OBJ vertex colour values outside 0-1 (or 0-255) or not "
                                     "finite, clamped to the range",
-                                    colours_clamped_, "vertex", true});
+                                    colours_clamped_, "vertex", true, true});
       }
       if (values_no_colour_ > 0) {
         add_not_kept(*attributes_,

@@ -39,13 +39,22 @@ std::uint8_t color_byte(double value, bool unit_range) {
   return static_cast<std::uint8_t>(std::lround(std::clamp(scaled, 0.0, 255.0)));
 }
 
+//! True if a colour channel lies outside 0..1 (`unit_range`) or 0..255, or is not finite:
+//! color_byte() clamps it.
+bool clamped(double value, bool unit_range) {
+  return !(value >= 0 && value <= (unit_range ? 1.0 : 255.0));
+}
+
 // A colour from the numbers left on a vertex or face line: 3 or 4 values, integers 0..255 or
 // floats 0..1 (a single value is a colour-map index, which MeshBridge counts but does not keep:
 // Geomview's colour map is a file of its own).
-bool to_color(const std::vector<double>& values, bool all_integers, Rgba& color) {
+bool to_color(const std::vector<double>& values, bool all_integers, Rgba& color,
+              std::size_t& clamped_colors) {
   if (values.size() != 3 && values.size() != 4)
     return false;
   const bool unit = !all_integers;
+  clamped_colors += std::any_of(values.begin(), values.end(),
+                                [unit](double value) { return clamped(value, unit); });
   color =
       Rgba{color_byte(values[0], unit), color_byte(values[1], unit), color_byte(values[2], unit),
            values.size() == 4 ? color_byte(values[3], unit) : std::uint8_t(255)};
@@ -114,7 +123,8 @@ class OffReader {
       n_dimensional = true, ++i;
     if (word.substr(i) != "OFF") {
       fail("not an OFF file: it starts with '" + clip(word) +
-           "', not a header such as OFF, COFF, NOFF, STOFF or nOFF");
+           "', not a header such as OFF, COFF, NOFF, STOFF or nOFF" +
+           other_format_hint(file_.view(), Format::off));
     }
     if (four) {
       fail("'" + clip(word) +
@@ -199,7 +209,8 @@ class OffReader {
           fail("OFF vertex " + std::to_string(v + 1) + " of " + std::to_string(nv) +
                ": expected 3 numbers" +
                (in_.at_end() ? ", but the file ends (a truncated file or a false count)"
-                             : at_line() + ", found '" + clip(in_.word()) + "'"));
+                             : at_line() + ", found '" + clip(in_.word()) +
+                                   "', which is no number a double can hold"));
         }
       }
       if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
@@ -209,7 +220,7 @@ class OffReader {
       }
       soup_.positions.push_back(Point(xyz[0], xyz[1], xyz[2]));
       if (h.colors && (want_colors || !in_.at_line_end())) {  // (colour-map indices are counted)
-        numbers_to_line_end(rest, integral);
+        vertex_words_ += !numbers_to_line_end(rest, integral);
         // Rest of the line: [nx ny nz] colour [s t].
         const std::size_t skip_front = h.normals ? 3 : 0, skip_back = h.texcoords ? 2 : 0;
         Rgba color;
@@ -219,7 +230,7 @@ class OffReader {
           const std::vector<double> values(rest.begin() + skip_front, rest.begin() + last);
           const bool integers = std::all_of(integral.begin() + skip_front, integral.begin() + last,
                                             [](char i) { return i; });
-          given = to_color(values, integers, color);
+          given = to_color(values, integers, color, vertex_colors_clamped_);
           vertex_alpha_given_ = vertex_alpha_given_ || (given && values.size() == 4);
           if (given && want_colors)
             note_color(values, integers, ColorOf::vertex, static_cast<Index>(v));
@@ -234,7 +245,7 @@ class OffReader {
         }
       } else if (!h.colors && want_colors && !in_.at_line_end()) {
         // Plain OFF: values past x y z [normal] [s t] (a colour needs the C keyword).
-        numbers_to_line_end(rest, integral);
+        vertex_words_ += !numbers_to_line_end(rest, integral);
         if (rest.size() > (h.normals ? 3u : 0u) + (h.texcoords ? 2u : 0u))
           ++vertex_values_no_colour_;
       }
@@ -275,11 +286,11 @@ class OffReader {
       }
       add_face(corners);
       if (!corners.empty() && (want_colors || !in_.at_line_end())) {
-        numbers_to_line_end(rest, integral);
+        face_words_ += !numbers_to_line_end(rest, integral);
         const bool integers =
             std::all_of(integral.begin(), integral.end(), [](char i) { return i; });
         Rgba color;
-        const bool given = to_color(rest, integers, color);
+        const bool given = to_color(rest, integers, color, face_colors_clamped_);
         face_alpha_given_ = face_alpha_given_ || (given && rest.size() == 4);
         if (want_colors) {
           push_color(attributes_->face_colors, attributes_->face_color_missing,
@@ -320,20 +331,22 @@ class OffReader {
     }
   }
 
-  // The numbers left on the current line (stops at the first word that is none), and for each
-  // whether it is written as an integer.
-  void numbers_to_line_end(std::vector<double>& values, std::vector<char>& integral) {
+  // The numbers left on the current line, and for each whether it is written as an integer.
+  // Stops at the first word that is no number and returns false then (the caller counts the
+  // line: its words are read past, see note_not_kept).
+  bool numbers_to_line_end(std::vector<double>& values, std::vector<char>& integral) {
     values.clear();
     integral.clear();
     while (!in_.at_line_end()) {
       const char* start = in_.position();
       double x = 0;
       if (!in_.number(x))
-        break;
+        return false;
       const std::string_view text(start, static_cast<std::size_t>(in_.position() - start));
       integral.push_back(text.find_first_of(".eEnN") == std::string_view::npos);
       values.push_back(x);
     }
+    return true;
   }
 
   // What the file holds that is read past (with attributes only): normals, texture coordinates,
@@ -355,6 +368,26 @@ class OffReader {
           {"OFF values after a face's corners that are no colour (not 1, 3 or 4 "
            "numbers)",
            face_values_no_colour_, "face line", true});
+    }
+    if (vertex_words_ > 0) {
+      not_kept.push_back({"OFF words after a vertex's numbers that are no number (read past)",
+                          vertex_words_, "vertex line", true});
+    }
+    if (face_words_ > 0) {
+      not_kept.push_back({"OFF words after a face's numbers that are no number (read past)",
+                          face_words_, "face line", true});
+    }
+    if (vertex_colors_clamped_ > 0) {
+      not_kept.push_back(
+          {"OFF vertex colour values outside 0-1 (or 0-255) or not finite, "
+           "clamped to the range",
+           vertex_colors_clamped_, "vertex", true, true});
+    }
+    if (face_colors_clamped_ > 0) {
+      not_kept.push_back(
+          {"OFF face colour values outside 0-1 (or 0-255) or not finite, "
+           "clamped to the range",
+           face_colors_clamped_, "face", true, true});
     }
     if (binary_face_colours_ > 0) {
       not_kept.push_back(
@@ -478,6 +511,7 @@ class OffReader {
       soup_.positions.push_back(Point(values[0], values[1], values[2]));
       if (colors) {
         const float* c = values + 3 + (h.normals ? 3 : 0);
+        vertex_colors_clamped_ += clamped(c[0], true) || clamped(c[1], true) || clamped(c[2], true);
         attributes_->vertex_colors.push_back(
             Rgba{color_byte(c[0], true), color_byte(c[1], true), color_byte(c[2], true), 255});
       }
@@ -526,8 +560,10 @@ class OffReader {
   bool unit_colors_seen_ = false;  //!< some colour was written as floats (0..1)
   bool vertex_alpha_given_ = false, face_alpha_given_ = false;  //!< some colour had 4 values
   std::size_t vertex_values_no_colour_ = 0, face_values_no_colour_ = 0;  //!< see note_not_kept
-  std::size_t binary_face_colours_ = 0;  //!< Geomview binary faces with a colour
-  std::vector<std::pair<ColorOf, Index>> ambiguous_colors_;  //!< integer colours all <= 1
+  std::size_t binary_face_colours_ = 0;            //!< Geomview binary faces with a colour
+  std::size_t vertex_words_ = 0, face_words_ = 0;  //!< lines with a word that is no number
+  std::size_t vertex_colors_clamped_ = 0, face_colors_clamped_ = 0;  //!< see clamped()
+  std::vector<std::pair<ColorOf, Index>> ambiguous_colors_;          //!< integer colours all <= 1
 };
 
 }  // namespace

@@ -85,6 +85,11 @@ std::uint8_t channel(double value, PlyScalar type) {
   return value >= 255 ? 255 : static_cast<std::uint8_t>(std::lround(value));
 }
 
+//! True if channel() clamps `value`: outside 0..255 (integer types) or 0..1 (reals), or nan.
+bool clamps(double value, PlyScalar type) {
+  return !(value >= 0 && value <= (is_ply_integer(type) ? 255.0 : 1.0));
+}
+
 void set_channel(Rgba& color, Role r, std::uint8_t value) {
   switch (r) {
     case Role::red:
@@ -118,6 +123,7 @@ class PlyReader {
   void read() {
     header_ = parse_ply_header(file_.view(), file_.path());
     check_elements();
+    vertices_ = vertex_count();
     if (attributes_ != nullptr && header_.comments > 0)
       attributes_->not_kept.push_back({"PLY comment and obj_info lines", header_.comments, "line"});
     const char* body = file_.data() + header_.body;
@@ -145,6 +151,16 @@ class PlyReader {
       read_elements(source);
       // Bytes past the declared elements: padding, or items a false count leaves out.
       info_.trailing_bytes = source.remaining();
+    }
+    check_finite();
+    for (const int of : {0, 1}) {
+      if (colors_clamped_[of] > 0) {
+        const char* noun = of == 0 ? "vertex" : "face";
+        attributes_->not_kept.push_back({std::string("PLY ") + noun +
+                                             " colour values outside 0-255 (integers) or 0-1 "
+                                             "(reals) or not finite, clamped to the range",
+                                         colors_clamped_[of], noun, true, true});
+      }
     }
     if (attributes_ != nullptr && !attributes_->face_colors.empty())  // strip triangles: none
       pad_missing_colors(attributes_->face_colors, attributes_->face_color_missing,
@@ -328,6 +344,7 @@ class PlyReader {
     }
     for (std::size_t i = 0; i < n; ++i) {
       Point& point = soup_.positions[i];
+      bool clamped = false;
       for (std::size_t k = 0; k < roles.size(); ++k) {
         const PlyProperty& p = e.properties[k];
         const Role r = roles[k];
@@ -347,7 +364,9 @@ class PlyReader {
           point[2] = value;
         else
           set_channel(attributes_->vertex_colors[i], r, channel(value, p.type));
+        clamped = clamped || (is_color(r) && clamps(value, p.type));
       }
+      colors_clamped_[0] += clamped;
     }
   }
 
@@ -400,6 +419,7 @@ class PlyReader {
     Rgba color;
     for (std::uint64_t i = 0; i < e.count; ++i) {
       color = Rgba();
+      bool clamped = false;
       for (std::size_t k = 0; k < roles.size(); ++k) {
         const PlyProperty& p = e.properties[k];
         const Role r = roles[k];
@@ -409,20 +429,22 @@ class PlyReader {
           std::int64_t v = 0;
           if (!source.integer(p.type, v))
             throw unreadable(e, i, p);
-          if (v < 0 || static_cast<std::uint64_t>(v) >= vertex_count()) {
-            throw ReadError(where() + item(e, i) + ": property '" + p.name + "' is vertex index " +
-                            std::to_string(v) + ", but the file has " +
-                            counted(vertex_count(), "vertex") + " (indices count from 0)");
+          if (v < 0 || static_cast<std::uint64_t>(v) >= vertices_) {
+            throw ReadError(where() + item(e, i) + line_of(e.name, i) + ": property '" + p.name +
+                            "' is vertex index " + std::to_string(v) + ", but the file has " +
+                            counted(vertices_, "vertex") + " (indices count from 0)");
           }
         } else if (is_color(r) && colors) {
           double value = 0;
           if (!source.real(p.type, value))
             throw unreadable(e, i, p);
           set_channel(color, r, channel(value, p.type));
+          clamped = clamped || clamps(value, p.type);
         } else if (!skip_property(p, source)) {
           throw unreadable(e, i, p);
         }
       }
+      colors_clamped_[1] += clamped;
       if (faces) {
         if (add_face(i) && colors) {
           push_color(attributes_->face_colors, attributes_->face_color_missing,
@@ -494,11 +516,39 @@ class PlyReader {
   }
 
   Index vertex_index(const char* what, std::uint64_t i, std::int64_t c) const {
-    if (c < 0 || c >= std::int64_t(kNoIndex)) {
-      throw ReadError(where() + what + " " + std::to_string(i + 1) + " refers to vertex index " +
-                      std::to_string(c));
+    if (c < 0 || std::uint64_t(c) >= vertices_) {
+      throw ReadError(where() + "PLY " + what + " " + std::to_string(i + 1) + line_of(what, i) +
+                      " refers to vertex index " + std::to_string(c) + ", but the file has " +
+                      counted(vertices_, "vertex") + " (indices count from 0)");
     }
     return static_cast<Index>(c);
+  }
+
+  //! " (line N)" for item i of element `name` in an ascii PLY file, else empty. Walks the body
+  //! again: only for an error message.
+  std::string line_of(std::string_view name, std::uint64_t i) const {
+    if (header_.format != Format::ascii)
+      return {};
+    for (std::size_t k = 0; k < header_.elements.size(); ++k) {
+      if (header_.elements[k].name == name) {
+        const std::size_t line = ascii_ply_item_line(file_.view(), header_, k, i);
+        return line == 0 ? std::string() : " (line " + std::to_string(line) + ")";
+      }
+    }
+    return {};
+  }
+
+  //! Refuses a vertex with a coordinate that is nan or infinite, naming it as the file does.
+  void check_finite() const {
+    for (std::size_t v = 0; v < soup_.positions.size(); ++v) {
+      const Point& p = soup_.positions[v];
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+        throw InvalidSoupError(where() + "PLY vertex " + std::to_string(v + 1) + " of " +
+                               std::to_string(soup_.positions.size()) + " (index " +
+                               std::to_string(v) + ")" + line_of("vertex", v) +
+                               " has a non-finite coordinate (nan or inf)");
+      }
+    }
   }
 
   //! Appends face record i from corners_ (formats.h: 1 or 2 corners repeat the last one up to a
@@ -554,6 +604,8 @@ class PlyReader {
   Soup& soup_;
   MeshAttributes* attributes_;
   PlyHeader header_;
+  std::uint64_t vertices_ = 0;              //!< the vertex count the header declares
+  std::size_t colors_clamped_[2] = {0, 0};  //!< vertices, faces with a channel clamps() clamps
   std::vector<std::int64_t> corners_;
 };
 

@@ -158,6 +158,13 @@ AsciiNotes read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
   const auto fail = [&](std::size_t line, const std::string& what) {
     throw ReadError(file.path() + ": ASCII STL line " + std::to_string(line) + ": " + what);
   };
+  // True if nothing but blank lines follows the cursor: a file cut off there.
+  const auto ends_here = [&in] {
+    TextScanner rest = in;
+    while (!rest.at_end() && rest.at_line_end())
+      rest.next_line();
+    return rest.at_end();
+  };
   const auto quoted = [](std::string_view word) {
     return word.empty() ? std::string("the end of the file")
                         : "'" + std::string(word.substr(0, 40)) + "'";
@@ -217,14 +224,17 @@ AsciiNotes read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
                       std::isfinite(float(y)) && std::isfinite(float(z));
       if (!ok) {
         fail(line, "facet " + std::to_string(triangles + 1) + ", corner " + std::to_string(n + 1) +
-                       " is not 'vertex x y z' with three finite numbers (32-bit floats)");
+                       " is not 'vertex x y z' with three finite numbers (32-bit floats)" +
+                       (ends_here() ? "; the file ends there (truncated)" : ""));
       }
       if (n < 3)  // STL coordinates are 32-bit floats (binary STL stores nothing else)
         corners.insert(corners.end(), {float(x), float(y), float(z)});
     }
-    if (n < 3 && word.empty())
-      fail(in.line(),
-           "the file ends inside facet " + std::to_string(triangles + 1) + " (truncated)");
+    if (n < 3 && (word.empty() || ends_here())) {
+      fail(in.line(), "the file ends inside facet " + std::to_string(triangles + 1) + " after " +
+                          std::to_string(n) + " of its 3 vertices" +
+                          (word.empty() ? "" : ", at " + quoted(word)) + " (truncated)");
+    }
     if (n != 3) {
       fail(facet_line, "facet " + std::to_string(triangles + 1) + " has " + std::to_string(n) +
                            " vertices; an STL facet is a triangle (3)");
@@ -233,7 +243,7 @@ AsciiNotes read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
       if (!equals_ignoring_case(word, end)) {
         fail(in.line(), quoted(word) + " where facet " + std::to_string(triangles + 1) + " (line " +
                             std::to_string(facet_line) + ") needs '" + end + "'" +
-                            (word.empty() ? " (a truncated file?)" : ""));
+                            (word.empty() || ends_here() ? " (a truncated file?)" : ""));
       }
       word = next_word();
     }
@@ -297,15 +307,15 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   const bool has_nul = std::memchr(file.data(), '\0', std::min<std::size_t>(size, 4096)) != nullptr;
   const bool solid = equals_ignoring_case(probe.word(), "solid");
   if (has_nul || !solid) {
-    throw ReadError(file.path() +
-                    (solid ? ": binary data after a header that begins with 'solid', but not a "
-                             "whole binary STL: a binary STL "
-                           : ": neither ASCII STL (no 'solid') nor binary STL: a binary STL ") +
-                    (size >= 84
-                         ? "whose header counts " + std::to_string(triangles) + " triangles has " +
-                               std::to_string(84 + 50 * std::uint64_t(triangles)) + " bytes"
-                         : std::string("has at least 84 bytes")) +
-                    ", this file has " + std::to_string(size));
+    throw ReadError(
+        file.path() +
+        (solid ? ": binary data after a header that begins with 'solid', but not a "
+                 "whole binary STL: a binary STL "
+               : ": neither ASCII STL (no 'solid') nor binary STL: a binary STL ") +
+        (size >= 84 ? "whose header counts " + std::to_string(triangles) + " triangles has " +
+                          std::to_string(84 + 50 * std::uint64_t(triangles)) + " bytes"
+                    : std::string("has at least 84 bytes")) +
+        ", this file has " + std::to_string(size) + other_format_hint(file.view(), Format::stl));
   }
   const AsciiNotes notes = read_ascii(file, soup, info);
   if (attributes != nullptr && notes.named_solids > 0)

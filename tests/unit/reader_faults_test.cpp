@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What a second first-time user's files showed the readers passing over without a word: OFF
+// words that are no number after a vertex or a face, colour values clamped into range (OFF,
+// PLY), a PLY coordinate that is nan or a PLY index out of range named without its line, an
+// ASCII STL cut off inside a facet named as a facet with too few vertices, and an OFF or 3MF file
+// under an OBJ name called "no polygons" without saying what it looks like. Each is now a counted
+// fault (NotKept::fault) or an error that names the line.
+
+#include "meshbridge/errors.h"
+#include "meshbridge/io.h"
+
+#include "scratch_folder.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace meshbridge {
+namespace {
+
+class ReaderFaults : public test_support::ScratchFolderTest {
+ protected:
+  ReaderFaults() : ScratchFolderTest("faults") {}
+  //! The error message reading `bytes` as `name` gives, or "read without error".
+  std::string error_of(const std::string& name, const std::string& bytes) const {
+    try {
+      read_soup(write(name, bytes));
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "read without error";
+  }
+  //! The NotKept entry whose text holds `part`, or nullptr.
+  static const NotKept* entry(const MeshAttributes& attributes, const std::string& part) {
+    for (const NotKept& n : attributes.not_kept) {
+      if (n.what.find(part) != std::string::npos)
+        return &n;
+    }
+    return nullptr;
+  }
+};
+
+::testing::AssertionResult contains(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "'" << part << "' not in: " << text;
+}
+
+const char* kOffVertices = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+
+TEST_F(ReaderFaults, off_words_that_are_no_number_are_counted_per_line) {
+  for (const char* header : {"OFF\n", "COFF\n"}) {
+    MeshAttributes attributes;
+    ReadInfo info;
+    const Soup soup =
+        read_soup(write("words.off", std::string(header) + "4 3 0\n0 0 0 abc\n1 0 0\n0 1 0 x y\n"
+                                                           "0 0 1\n3 0 1 2 hello\n3 0 1 3 # fine\n"
+                                                           "3 0 2 3 7 world\n"),
+                  &info, &attributes);
+    EXPECT_EQ(soup.num_faces(), 3u);
+    EXPECT_EQ(info.faces_kept, 3u);
+    const NotKept* vertices = entry(attributes, "after a vertex's numbers that are no number");
+    const NotKept* faces = entry(attributes, "after a face's numbers that are no number");
+    ASSERT_NE(vertices, nullptr) << header;
+    ASSERT_NE(faces, nullptr) << header;
+    EXPECT_EQ(vertices->count, 2u);  // "abc", "x y": one line each
+    EXPECT_EQ(faces->count, 2u);     // a comment is no fault
+    EXPECT_TRUE(vertices->fault);
+    EXPECT_TRUE(faces->fault);
+    EXPECT_FALSE(faces->clamped);
+  }
+  // A clean file has no such entry.
+  MeshAttributes clean;
+  read_soup(write("clean.off", std::string("OFF\n4 2 0\n") + kOffVertices + "3 0 1 2\n3 0 1 3\n"),
+            nullptr, &clean);
+  EXPECT_TRUE(clean.not_kept.empty());
+}
+
+TEST_F(ReaderFaults, off_colours_out_of_range_are_clamped_and_counted) {
+  MeshAttributes attributes;
+  read_soup(write("colours.off",
+                  "COFF\n4 3 0\n0 0 0 300 0 0\n1 0 0 -5 0 0\n0 1 0 nan 0 0\n"
+                  "0 0 1 0 128 0\n3 0 1 2 1.5 0.2 0.2\n3 0 1 3 255 0 0\n"
+                  "3 0 2 3 0.5 0.5 0.5\n"),
+            nullptr, &attributes);
+  ASSERT_EQ(attributes.vertex_colors.size(), 4u);
+  EXPECT_EQ(attributes.vertex_colors[0], (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(attributes.vertex_colors[1], (Rgba{0, 0, 0, 255}));
+  EXPECT_EQ(attributes.vertex_colors[2], (Rgba{0, 0, 0, 255}));
+  EXPECT_EQ(attributes.vertex_colors[3], (Rgba{0, 128, 0, 255}));
+  EXPECT_EQ(attributes.face_colors[0], (Rgba{255, 51, 51, 255}));
+  const NotKept* vertices = entry(attributes, "OFF vertex colour values outside");
+  const NotKept* faces = entry(attributes, "OFF face colour values outside");
+  ASSERT_NE(vertices, nullptr);
+  ASSERT_NE(faces, nullptr);
+  EXPECT_EQ(vertices->count, 3u);
+  EXPECT_EQ(faces->count, 1u);
+  EXPECT_TRUE(vertices->fault && vertices->clamped);
+  // What a writer says of them: written, as clamped.
+  const std::vector<std::string> notes = describe_unwritten("out.ply", attributes);
+  bool said = false;
+  for (const std::string& note : notes)
+    said = said || contains(note, "clamped to the range, on 3 vertices: written clamped");
+  EXPECT_TRUE(said);
+}
+
+TEST_F(ReaderFaults, ply_colours_out_of_range_are_clamped_and_counted) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty int red\nproperty int green\nproperty float blue\n"
+      "element face 2\nproperty list uchar int vertex_indices\nproperty float red\n"
+      "property float green\nproperty float blue\nend_header\n";
+  MeshAttributes attributes;
+  read_soup(write("colours.ply", header + "0 0 0 300 0 0.5\n1 0 0 0 0 2\n0 1 0 0 0 1\n"
+                                          "3 0 1 2 1 1 1\n3 0 2 1 -0.5 0 0\n"),
+            nullptr, &attributes);
+  EXPECT_EQ(attributes.vertex_colors[0].r, 255);
+  EXPECT_EQ(attributes.vertex_colors[1].b, 255);
+  const NotKept* vertices = entry(attributes, "PLY vertex colour values outside");
+  const NotKept* faces = entry(attributes, "PLY face colour values outside");
+  ASSERT_NE(vertices, nullptr);
+  ASSERT_NE(faces, nullptr);
+  EXPECT_EQ(vertices->count, 2u);
+  EXPECT_EQ(faces->count, 1u);
+}
+
+TEST_F(ReaderFaults, ply_non_finite_coordinates_and_bad_indices_name_their_line) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  EXPECT_TRUE(contains(error_of("nan.ply", header + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"),
+                       "nan.ply: PLY vertex 2 of 3 (index 1) (line 11) has a non-finite "
+                       "coordinate (nan or inf)"));
+  EXPECT_TRUE(contains(error_of("inf.ply", header + "0 0 0\n1 0 0\n\n0 -inf 0\n3 0 1 2\n3 0 2 1\n"),
+                       "PLY vertex 3 of 3 (index 2) (line 13) has a non-finite coordinate"));
+  // A blank line between items is skipped in the count of lines, as the reader skips it.
+  EXPECT_TRUE(contains(error_of("neg.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n\n3 0 -5 1\n"),
+                       "neg.ply: PLY face 2 (line 15) refers to vertex index -5, but the file has "
+                       "3 vertices (indices count from 0)"));
+  EXPECT_TRUE(contains(error_of("big.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 9 1\n"),
+                       "PLY face 2 (line 14) refers to vertex index 9, but the file has 3"));
+  // Binary: no line to name, the item still.
+  std::string binary =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 0\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  const float xyz[3] = {0, std::numeric_limits<float>::infinity(), 0};
+  binary.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  EXPECT_TRUE(contains(error_of("inf_binary.ply", binary),
+                       "PLY vertex 1 of 1 (index 0) has a non-finite coordinate"));
+}
+
+TEST_F(ReaderFaults, ascii_stl_cut_off_inside_a_facet_says_so) {
+  const std::string first =
+      "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+      "endloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n";
+  EXPECT_TRUE(contains(error_of("in_a_keyword.stl", first + "vert"),
+                       "ASCII STL line 12: the file ends inside facet 2 after 1 of its 3 "
+                       "vertices, at 'vert' (truncated)"));
+  EXPECT_TRUE(contains(error_of("after_two.stl", first + "vertex 1 0 0\n\n"),
+                       "the file ends inside facet 2 after 2 of its 3 vertices (truncated)"));
+  EXPECT_TRUE(contains(error_of("in_a_vertex.stl", first + "vertex 1 0"),
+                       "line 12: facet 2, corner 2 is not 'vertex x y z' with three finite "
+                       "numbers (32-bit floats); the file ends there (truncated)"));
+  EXPECT_TRUE(contains(error_of("in_endloop.stl", first + "vertex 1 0 0\nvertex 0 1 0\nendlo"),
+                       "'endlo' where facet 2 (line 9) needs 'endloop' (a truncated file?)"));
+  // Not cut off: a facet with 2 vertices and more after it is still named as such.
+  EXPECT_TRUE(contains(error_of("two.stl", first + "vertex 1 0 0\nendloop\nendfacet\nendsolid\n"),
+                       "facet 2 has 2 vertices; an STL facet is a triangle (3)"));
+}
+
+TEST_F(ReaderFaults, off_and_3mf_under_an_obj_name_are_named_as_what_they_look_like) {
+  const std::string body = std::string("4 2 0\n") + kOffVertices + "3 0 1 2\n3 0 1 3\n";
+  EXPECT_TRUE(contains(error_of("counts.obj", body),
+                       "no polygons in the file (0 vertices); it begins with the counts '4 2 0': "
+                       "an OFF file under another name?"));
+  EXPECT_TRUE(contains(error_of("comment.obj", "# written by x\n\n  COFF  \n" + body),
+                       "it begins with 'COFF': an OFF file under another name?"));
+  EXPECT_TRUE(contains(error_of("bom.obj", "\xEF\xBB\xBFOFF\n" + body),
+                       "it begins with 'OFF': an OFF file under another name?"));
+  EXPECT_TRUE(contains(error_of("stoff.obj", "STCNOFF\n" + body),
+                       "it begins with 'STCNOFF': an OFF file under another name?"));
+  EXPECT_TRUE(contains(error_of("zip.obj", std::string("PK\3\4\24\0\0\0\10\0", 10)),
+                       "it begins with 'PK': a zip archive (a 3MF file under another name?)"));
+  // Where the reader refuses the file outright, the same hint ends its error.
+  EXPECT_TRUE(contains(error_of("zip.ply", std::string("PK\3\4\24\0\0\0\10\0", 10)),
+                       "not a PLY file: it starts with 'PK????????', not 'ply'; it begins with "
+                       "'PK': a zip archive (a 3MF file under another name?)"));
+  EXPECT_TRUE(
+      contains(error_of("ply.off", "ply\nformat ascii 1.0\nend_header\n"),
+               "not an OFF file: it starts with 'ply', not a header such as OFF, COFF, "
+               "NOFF, STOFF or nOFF; it begins with 'ply': a PLY file under another name?"));
+  EXPECT_TRUE(contains(error_of("off.stl", "OFF\n" + body),
+                       "neither ASCII STL (no 'solid') nor binary STL"));
+  EXPECT_TRUE(contains(error_of("off.stl", "OFF\n" + body),
+                       "; it begins with 'OFF': an OFF file under another name?"));
+  // Text that is neither: no guess.
+  EXPECT_TRUE(contains(error_of("words.obj", "hello world\n1 2 3 4\n"),
+                       "no polygons in the file (0 vertices)"));
+  EXPECT_FALSE(contains(error_of("words.obj", "hello world\n1 2 3 4\n"), "another name"));
+  EXPECT_FALSE(contains(error_of("four.obj", "1 2 3 4\n"), "another name"));
+  // An OFF number that no double holds says so.
+  EXPECT_TRUE(contains(error_of("huge.off", "OFF\n1 0 0\n1e400 0 0\n"),
+                       "found '1e400', which is no number a double can hold"));
+}
+
+}  // namespace
+}  // namespace meshbridge
