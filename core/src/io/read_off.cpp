@@ -2,6 +2,7 @@
 // OFF reader: header [ST][C][N][n]OFF [BINARY] (nOFF with dimension 3), '#' comments wherever a
 // word can start, vertex colours (COFF) and face colours kept, counts checked against the file.
 
+#include "io/read_off.h"
 #include "io/formats.h"
 #include "io/huge_pages.h"
 #include "io/text_scanner.h"
@@ -19,10 +20,6 @@ namespace meshbridge::detail {
 
 namespace {
 
-struct OffHeader {
-  bool texcoords = false, colors = false, normals = false, binary = false;
-};
-
 std::string clip(std::string_view text) {
   std::string out(text.substr(0, 40));
   for (char& c : out) {
@@ -30,19 +27,6 @@ std::string clip(std::string_view text) {
       c = '?';
   }
   return out;
-}
-
-std::uint8_t color_byte(double value, bool unit_range) {
-  if (!std::isfinite(value))
-    return 0;
-  const double scaled = unit_range ? value * 255.0 : value;
-  return static_cast<std::uint8_t>(std::lround(std::clamp(scaled, 0.0, 255.0)));
-}
-
-//! True if a colour channel lies outside 0..1 (`unit_range`) or 0..255, or is not finite:
-//! color_byte() clamps it.
-bool clamped(double value, bool unit_range) {
-  return !(value >= 0 && value <= (unit_range ? 1.0 : 255.0));
 }
 
 // A colour from the numbers left on a vertex or face line: 3 or 4 values, integers 0..255 or
@@ -54,10 +38,10 @@ bool to_color(const std::vector<double>& values, bool all_integers, Rgba& color,
     return false;
   const bool unit = !all_integers;
   clamped_colors += std::any_of(values.begin(), values.end(),
-                                [unit](double value) { return clamped(value, unit); });
-  color =
-      Rgba{color_byte(values[0], unit), color_byte(values[1], unit), color_byte(values[2], unit),
-           values.size() == 4 ? color_byte(values[3], unit) : std::uint8_t(255)};
+                                [unit](double value) { return off_color_clamped(value, unit); });
+  color = Rgba{off_color_byte(values[0], unit), off_color_byte(values[1], unit),
+               off_color_byte(values[2], unit),
+               values.size() == 4 ? off_color_byte(values[3], unit) : std::uint8_t(255)};
   return true;
 }
 
@@ -72,10 +56,16 @@ class OffReader {
 
   void read() {
     const OffHeader header = read_header();
-    if (header.binary)
-      read_binary(header);
-    else
+    if (header.binary) {
+      const OffBinaryNotes notes =
+          read_off_binary(file_, in_.position(), header, soup_, info_, attributes_);
+      binary_face_colours_ = notes.face_colours;
+      vertex_colors_clamped_ = notes.vertex_colors_clamped;
+      if (attributes_ != nullptr)
+        note_not_kept(header, info_.declared_vertices);
+    } else {
       read_ascii(header);
+    }
   }
 
  private:
@@ -284,7 +274,7 @@ class OffReader {
         }
         corners.push_back(static_cast<Index>(index));
       }
-      add_face(corners);
+      add_off_face(corners, soup_, info_);
       if (!corners.empty() && (want_colors || !in_.at_line_end())) {
         face_words_ += !numbers_to_line_end(rest, integral);
         const bool integers =
@@ -404,153 +394,6 @@ class OffReader {
       ambiguous_colors_.emplace_back(of, i);
   }
 
-  void add_face(std::vector<Index>& corners) {
-    if (corners.empty()) {
-      ++info_.faces_without_corners;
-      return;
-    }
-    while (corners.size() < 3)
-      corners.push_back(corners.back());
-    soup_.add_polygon(corners);
-  }
-
-  // --- binary (little-endian, as OpenMesh reads and writes it) --------------------------------
-
-  // Binary OFF comes in two layouts: OpenMesh's (little-endian, as x86 writes it, and nothing
-  // after a face's indices) and Geomview's specification (big-endian 32-bit words, each face
-  // followed by a colour count and that many floats). The layout that accounts for every byte of
-  // the file is read; when none does, OpenMesh's is read and names what is wrong.
-  struct BinaryLayout {
-    bool big_endian = false;
-    bool color_counts = false;
-  };
-  static std::uint32_t load(const char* p, bool big_endian) {
-    std::uint32_t w = 0;
-    std::memcpy(&w, p, 4);
-    return big_endian ? __builtin_bswap32(w) : w;
-  }
-  static std::uint64_t vertex_floats(const OffHeader& h) {
-    return 3 + (h.normals ? 3 : 0) + (h.colors ? 3 : 0) + (h.texcoords ? 2 : 0);
-  }
-  // True if the body from `p` is exactly the counts, vertices and faces of `layout`.
-  bool fits(const OffHeader& h, const char* p, BinaryLayout layout) const {
-    const char* end = file_.end();
-    if (end - p < 12)
-      return false;
-    const std::uint64_t nv = load(p, layout.big_endian), nf = load(p + 4, layout.big_endian);
-    p += 12;
-    if (nv * vertex_floats(h) * 4 > std::uint64_t(end - p))
-      return false;
-    p += nv * vertex_floats(h) * 4;
-    for (std::uint64_t f = 0; f < nf; ++f) {
-      if (end - p < 4)
-        return false;
-      const std::uint64_t n = load(p, layout.big_endian);
-      if (n == 0 || (n + 1) * 4 > std::uint64_t(end - p))
-        return false;
-      p += (n + 1) * 4;
-      if (layout.color_counts) {
-        if (end - p < 4)
-          return false;
-        const std::uint64_t colors = load(p, layout.big_endian);
-        if (colors > 4 || (colors + 1) * 4 > std::uint64_t(end - p))
-          return false;
-        p += (colors + 1) * 4;
-      }
-    }
-    return p == end;
-  }
-
-  void read_binary(const OffHeader& h) {
-    const char* p = in_.position();
-    BinaryLayout layout;  // OpenMesh's, unless only another one fits the file
-    for (const BinaryLayout candidate : {BinaryLayout{false, false}, BinaryLayout{true, true},
-                                         BinaryLayout{false, true}, BinaryLayout{true, false}}) {
-      if (fits(h, p, candidate)) {
-        layout = candidate;
-        break;
-      }
-    }
-    const char* end = file_.end();
-    const auto left = [&] { return static_cast<std::uint64_t>(end - p); };
-    const auto word = [&] {
-      const std::uint32_t w = load(p, layout.big_endian);
-      p += 4;
-      return w;
-    };
-    const auto real = [&] {
-      const std::uint32_t w = word();
-      float x = 0;
-      std::memcpy(&x, &w, 4);
-      return x;
-    };
-    if (left() < 12)
-      fail("binary OFF ends before its vertex, face and edge counts");
-    const std::uint32_t nv = word(), nf = word();
-    word();
-    const std::uint64_t floats = vertex_floats(h);
-    if (std::uint64_t(nv) * floats * 4 > left()) {
-      fail("binary OFF declares " + std::to_string(nv) + " vertices (" +
-           std::to_string(std::uint64_t(nv) * floats * 4) + " bytes) but only " +
-           std::to_string(left()) + " bytes follow its header (a truncated file or a false count)");
-    }
-    if (std::uint64_t(nf) * 4 > left() - std::uint64_t(nv) * floats * 4) {
-      fail("binary OFF declares " + std::to_string(nf) + " faces but only " +
-           std::to_string(left() - std::uint64_t(nv) * floats * 4) + " bytes follow its vertices");
-    }
-    info_.declared_vertices = nv;
-    info_.declared_faces = nf;
-    reserve_huge(soup_, nv, nf, 3 * std::size_t(nf));
-    const bool colors = attributes_ != nullptr && h.colors;
-    if (colors)
-      attributes_->vertex_color_channels = kRgbChannels;  // 3 floats
-    for (std::uint32_t v = 0; v < nv; ++v) {
-      float values[11];
-      for (std::uint64_t i = 0; i < floats; ++i)
-        values[i] = real();
-      soup_.positions.push_back(Point(values[0], values[1], values[2]));
-      if (colors) {
-        const float* c = values + 3 + (h.normals ? 3 : 0);
-        vertex_colors_clamped_ += clamped(c[0], true) || clamped(c[1], true) || clamped(c[2], true);
-        attributes_->vertex_colors.push_back(
-            Rgba{color_byte(c[0], true), color_byte(c[1], true), color_byte(c[2], true), 255});
-      }
-    }
-    std::vector<Index> corners;
-    for (std::uint32_t f = 0; f < nf; ++f) {
-      if (left() < 4) {
-        fail("binary OFF ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
-      }
-      const std::uint32_t n = word();
-      if (std::uint64_t(n) * 4 > left()) {
-        fail("binary OFF face " + std::to_string(f + 1) + " claims " + std::to_string(n) +
-             " corners, more than the rest of the file holds");
-      }
-      corners.clear();
-      for (std::uint32_t c = 0; c < n; ++c) {
-        const std::int32_t index = static_cast<std::int32_t>(word());
-        if (index < 0 || std::uint32_t(index) >= nv) {
-          fail("binary OFF face " + std::to_string(f + 1) + " refers to vertex index " +
-               std::to_string(index) + ", but the file has " + counted(nv, "vertex") +
-               " (OFF counts from 0)");
-        }
-        corners.push_back(static_cast<Index>(index));
-      }
-      add_face(corners);
-      if (layout.color_counts) {  // checked by fits(): a count of at most 4, then the floats
-        const std::uint32_t colour_values = word();
-        binary_face_colours_ += colour_values > 0 ? 1 : 0;
-        p += 4 * std::uint64_t(colour_values);
-      }
-    }
-    if (p != end) {
-      fail("binary OFF: " + std::to_string(left()) +
-           " bytes follow its last face (neither OpenMesh's layout nor Geomview's fits the file)");
-    }
-    if (attributes_ != nullptr)
-      note_not_kept(h, nv);
-  }
-
   const MappedFile& file_;
   Soup& soup_;
   ReadInfo& info_;
@@ -562,11 +405,21 @@ class OffReader {
   std::size_t vertex_values_no_colour_ = 0, face_values_no_colour_ = 0;  //!< see note_not_kept
   std::size_t binary_face_colours_ = 0;            //!< Geomview binary faces with a colour
   std::size_t vertex_words_ = 0, face_words_ = 0;  //!< lines with a word that is no number
-  std::size_t vertex_colors_clamped_ = 0, face_colors_clamped_ = 0;  //!< see clamped()
+  std::size_t vertex_colors_clamped_ = 0, face_colors_clamped_ = 0;  //!< see off_color_clamped()
   std::vector<std::pair<ColorOf, Index>> ambiguous_colors_;          //!< integer colours all <= 1
 };
 
 }  // namespace
+
+void add_off_face(std::vector<Index>& corners, Soup& soup, ReadInfo& info) {
+  if (corners.empty()) {
+    ++info.faces_without_corners;
+    return;
+  }
+  while (corners.size() < 3)
+    corners.push_back(corners.back());
+  soup.add_polygon(corners);
+}
 
 void read_off(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
   OffReader(file, soup, info, attributes).read();
