@@ -8,6 +8,7 @@
 #include "io/ply_ascii_lines.h"
 #include "io/ply_binary_blocks.h"
 #include "io/ply_header.h"
+#include "io/ply_roles.h"
 #include "io/ply_sources.h"
 
 #include "meshbridge/counted.h"
@@ -24,88 +25,7 @@ namespace meshbridge::detail {
 namespace {
 
 using Format = PlyHeader::Format;
-
-enum class Role : std::uint8_t {
-  skip,
-  x,
-  y,
-  z,
-  red,
-  green,
-  blue,
-  alpha,
-  indices,
-  vertex1,
-  vertex2
-};
-
-Role role_of(const PlyElement& e, const PlyProperty& p) {
-  const std::string& n = p.name;
-  if (p.is_list) {
-    const bool polygons = e.name == "face" || e.name == "tristrips";
-    return polygons && (n == "vertex_indices" || n == "vertex_index") ? Role::indices : Role::skip;
-  }
-  if (e.name == "vertex") {
-    if (n == "x")
-      return Role::x;
-    if (n == "y")
-      return Role::y;
-    if (n == "z")
-      return Role::z;
-  }
-  if (e.name == "vertex" || e.name == "face") {
-    if (n == "red" || n == "diffuse_red")
-      return Role::red;
-    if (n == "green" || n == "diffuse_green")
-      return Role::green;
-    if (n == "blue" || n == "diffuse_blue")
-      return Role::blue;
-    if (n == "alpha")
-      return Role::alpha;
-  }
-  if (e.name == "edge") {
-    if (n == "vertex1")
-      return Role::vertex1;
-    if (n == "vertex2")
-      return Role::vertex2;
-  }
-  return Role::skip;
-}
-
-bool is_color(Role r) {
-  return r == Role::red || r == Role::green || r == Role::blue || r == Role::alpha;
-}
-
-//! A colour channel as 0..255: integer types as they are (clamped), reals in [0, 1] scaled.
-std::uint8_t channel(double value, PlyScalar type) {
-  if (!is_ply_integer(type))
-    value *= 255.0;
-  if (!(value > 0))
-    return 0;
-  return value >= 255 ? 255 : static_cast<std::uint8_t>(std::lround(value));
-}
-
-//! True if channel() clamps `value`: outside 0..255 (integer types) or 0..1 (reals), or nan.
-bool clamps(double value, PlyScalar type) {
-  return !(value >= 0 && value <= (is_ply_integer(type) ? 255.0 : 1.0));
-}
-
-void set_channel(Rgba& color, Role r, std::uint8_t value) {
-  switch (r) {
-    case Role::red:
-      color.r = value;
-      break;
-    case Role::green:
-      color.g = value;
-      break;
-    case Role::blue:
-      color.b = value;
-      break;
-    default:
-      color.a = value;
-      break;
-  }
-}
+using Role = PlyRole;
 
 std::string plural(const PlyElement& e) {
   if (e.name == "vertex")
@@ -122,7 +42,7 @@ class PlyReader {
 
   void read() {
     header_ = parse_ply_header(file_.view(), file_.path());
-    check_elements();
+    check_ply_elements(header_, file_.path());
     vertices_ = vertex_count();
     if (attributes_ != nullptr && header_.comments > 0)
       attributes_->not_kept.push_back({"PLY comment and obj_info lines", header_.comments, "line"});
@@ -186,54 +106,6 @@ class PlyReader {
                      "such as 'nan' or '1.5' where an integer belongs)");
   }
 
-  void check_elements() {
-    // The vertex element first: without x, y and z nothing else matters.
-    int coordinates = 0;
-    std::string missing;
-    for (const char* axis : {"x", "y", "z"}) {
-      int found = 0;
-      for (const PlyElement& e : header_.elements) {
-        if (e.name != "vertex")
-          continue;
-        for (const PlyProperty& p : e.properties)
-          found += p.name == axis;
-      }
-      coordinates += found > 0;  // (the header refuses a property declared twice)
-      if (found == 0)
-        missing += std::string(missing.empty() ? "" : ", ") + "'" + axis + "'";
-    }
-    if (coordinates != 3) {
-      throw ReadError(where() + "the PLY vertex element has no " + missing +
-                      " property (a vertex needs x, y and z)");
-    }
-    for (const PlyElement& e : header_.elements) {
-      if (e.count > 0 && e.properties.empty()) {
-        throw ReadError(where() + "PLY element '" + e.name + "' declares " +
-                        std::to_string(e.count) + " items without any property");
-      }
-      if ((e.name != "face" && e.name != "tristrips") || e.count == 0)
-        continue;
-      bool has_indices = false;
-      for (const PlyProperty& p : e.properties) {
-        if (role_of(e, p) != Role::indices)
-          continue;
-        if (has_indices) {
-          throw ReadError(where() + "PLY element '" + e.name +
-                          "' has both 'vertex_indices' and 'vertex_index'");
-        }
-        has_indices = true;
-        if (!is_ply_integer(p.type)) {
-          throw ReadError(where() + "PLY " + e.name + " property '" + p.name + "' is a list of '" +
-                          ply_scalar_name(p.type) + "', not of integers");
-        }
-      }
-      if (!has_indices) {
-        throw ReadError(where() + "PLY element '" + e.name +
-                        "' has no 'vertex_indices' (or 'vertex_index') list");
-      }
-    }
-  }
-
   template <class Source>
   void read_elements(Source& source) {
     for (const PlyElement& e : header_.elements) {
@@ -256,7 +128,7 @@ class PlyReader {
       }
       std::vector<Role> roles;
       for (const PlyProperty& p : e.properties)
-        roles.push_back(role_of(e, p));
+        roles.push_back(ply_role(e, p));
       if (attributes_ != nullptr && e.count > 0)
         note_not_kept(e, roles);
       if (e.name == "vertex")
@@ -294,20 +166,7 @@ class PlyReader {
   }
 
   bool wants_colors(const std::vector<Role>& roles) const {
-    return attributes_ != nullptr && channels_of(roles) != 0;
-  }
-
-  //! The colour channels among an element's properties (ColorChannel bits).
-  static std::uint8_t channels_of(const std::vector<Role>& roles) {
-    std::uint8_t channels = 0;
-    for (Role r : roles) {
-      channels |= r == Role::red     ? kRedChannel
-                  : r == Role::green ? kGreenChannel
-                  : r == Role::blue  ? kBlueChannel
-                  : r == Role::alpha ? kAlphaChannel
-                                     : 0;
-    }
-    return channels;
+    return attributes_ != nullptr && ply_color_channels(roles) != 0;
   }
 
   template <class Source>
@@ -330,7 +189,7 @@ class PlyReader {
     const bool colors = wants_colors(roles);
     if (colors) {
       attributes_->vertex_colors.resize(n);
-      attributes_->vertex_color_channels = channels_of(roles);
+      attributes_->vertex_color_channels = ply_color_channels(roles);
     }
     for (std::size_t k = 0; k < roles.size(); ++k) {
       if (roles[k] == Role::x || roles[k] == Role::y || roles[k] == Role::z) {
@@ -363,8 +222,8 @@ class PlyReader {
         else if (r == Role::z)
           point[2] = value;
         else
-          set_channel(attributes_->vertex_colors[i], r, channel(value, p.type));
-        clamped = clamped || (is_color(r) && clamps(value, p.type));
+          set_color_channel(attributes_->vertex_colors[i], r, ply_channel(value, p.type));
+        clamped = clamped || (is_color(r) && ply_channel_clamps(value, p.type));
       }
       colors_clamped_[0] += clamped;
     }
@@ -409,7 +268,7 @@ class PlyReader {
       reserve_huge(soup_.corner_vertices, soup_.corner_vertices.size() + 3 * e.count);
       if (colors) {
         attributes_->face_colors.reserve(e.count);
-        attributes_->face_color_channels = channels_of(roles);
+        attributes_->face_color_channels = ply_color_channels(roles);
       }
     }
     if constexpr (std::is_same_v<Source, BinarySource>) {
@@ -438,8 +297,8 @@ class PlyReader {
           double value = 0;
           if (!source.real(p.type, value))
             throw unreadable(e, i, p);
-          set_channel(color, r, channel(value, p.type));
-          clamped = clamped || clamps(value, p.type);
+          set_color_channel(color, r, ply_channel(value, p.type));
+          clamped = clamped || ply_channel_clamps(value, p.type);
         } else if (!skip_property(p, source)) {
           throw unreadable(e, i, p);
         }
@@ -605,7 +464,7 @@ class PlyReader {
   MeshAttributes* attributes_;
   PlyHeader header_;
   std::uint64_t vertices_ = 0;              //!< the vertex count the header declares
-  std::size_t colors_clamped_[2] = {0, 0};  //!< vertices, faces with a channel clamps() clamps
+  std::size_t colors_clamped_[2] = {0, 0};  //!< vertices, faces with a channel ply_channel_clamps()
   std::vector<std::int64_t> corners_;
 };
 
