@@ -5,6 +5,7 @@
 
 #include "io/formats.h"
 #include "io/huge_pages.h"
+#include "io/obj_parts.h"
 #include "io/parallel_parts.h"
 #include "io/text_scanner.h"
 #include "meshbridge/counted.h"
@@ -20,39 +21,6 @@
 namespace meshbridge::detail {
 
 namespace {
-
-//! Adds `n` to the attributes' list, or its count to an entry about the same thing (parts).
-void add_not_kept(MeshAttributes& attributes, const NotKept& n) {
-  for (NotKept& known : attributes.not_kept) {
-    if (known.what == n.what) {
-      known.count += n.count;
-      return;
-    }
-  }
-  attributes.not_kept.push_back(n);
-}
-
-//! Where a part of the file (after the first) refers to vertices relative to its own start.
-struct RelativeCorners {
-  //! (soup corner, vertices read in the part before it + its negative index) of every face
-  //! corner given as a negative index: its vertex is (vertices before the part) + that offset.
-  std::vector<std::pair<std::size_t, std::int64_t>> corners;
-  std::int64_t lowest = 0;  //!< lowest offset of any relative index (faces, l, p), or 0
-};
-
-//! The texture coordinate (vt, slot 0) and normal (vn, slot 1) indices of the corners a reader
-//! met, to tell whether some name a record the file does not have (which is then counted by
-//! reading the file again: see count_attribute_index_faults).
-struct AttributeIndices {
-  std::int64_t highest[2] = {0, 0};  //!< highest positive index (1-based)
-  //! Lowest (records of the kind read before, in this reader + negative index): below 0 where a
-  //! relative index reaches before the reader's first record.
-  std::int64_t lowest[2] = {0, 0};
-  bool zero = false;  //!< some index is 0 (OBJ counts from 1, or from -1 back)
-  //! Highest positive vertex index of an `l` or `p` corner (faces are checked by
-  //! account_faces; these are counted, not kept, so they are checked here).
-  std::int64_t highest_element_vertex = 0;
-};
 
 //! Reads the lines [first, last) of an OBJ file (all of it, or one part when `relative` is
 //! given: then negative indices are recorded there, not resolved).
@@ -388,151 +356,6 @@ class ObjReader {
   static constexpr std::ptrdiff_t kReleaseEvery = 8 << 20;  // bytes of the map kept behind
   const char* released_;
 };
-
-// Counts 'v' and 'f' records (and the blanks of the 'f' lines, a bound on their corners) with
-// memchr, to reserve the soup (see estimate_records).
-struct RecordCounts {
-  std::size_t vertices = 0, faces = 0, corners = 0;
-};
-
-RecordCounts count_records(const char* p, const char* end) {
-  RecordCounts n;
-  while (p < end) {
-    const char* line_end = static_cast<const char*>(std::memchr(p, '\n', end - p));
-    if (line_end == nullptr)
-      line_end = end;
-    if (line_end - p >= 2 && (p[1] == ' ' || p[1] == '\t')) {
-      if (p[0] == 'v') {
-        ++n.vertices;
-      } else if (p[0] == 'f') {
-        ++n.faces;
-        n.corners += static_cast<std::size_t>(std::count(p + 1, line_end, ' '));
-      }
-    }
-    if (line_end == end)
-      break;
-    p = line_end + 1;
-  }
-  return n;
-}
-
-// The start of the line at or after `p` that does not continue the line before it (a line
-// before it ending in a backslash, '\r' aside).
-const char* line_start_after(const char* p, const char* first, const char* end) {
-  while (p < end && p > first && p[-1] != '\n')
-    ++p;
-  for (;;) {
-    const char* q = p - 1;  // the '\n' before p (or p is the start/end)
-    if (p >= end || p <= first)
-      return p;
-    while (q > first && q[-1] == '\r')
-      --q;
-    if (q == first || q[-1] != '\\')
-      return p;
-    const char* next = static_cast<const char*>(std::memchr(p, '\n', end - p));
-    p = next == nullptr ? end : next + 1;
-  }
-}
-
-// The record counts of [first, last), to reserve the soup once. A small range is counted; a
-// large one is counted in kSlices stretches spread evenly over it (about 2 MiB in all) and scaled
-// to its size with a margin, so the file is read once, not twice. (A file whose lines differ
-// much from one stretch to the next can still exceed the estimate: the arrays then grow.)
-RecordCounts estimate_records(const char* first, const char* last) {
-  constexpr std::size_t kCountBelow = std::size_t(8) << 20;
-  constexpr std::size_t kSlices = 32, kSlice = std::size_t(64) << 10;
-  const std::size_t size = static_cast<std::size_t>(last - first);
-  if (size <= kCountBelow)
-    return count_records(first, last);
-  RecordCounts sampled;
-  std::size_t sampled_bytes = 0;
-  for (std::size_t k = 0; k < kSlices; ++k) {
-    const char* a = line_start_after(first + size / kSlices * k, first, last);
-    const char* b = line_start_after(a + std::min<std::size_t>(kSlice, last - a), first, last);
-    const RecordCounts n = count_records(a, b);
-    sampled.vertices += n.vertices;
-    sampled.faces += n.faces;
-    sampled.corners += n.corners;
-    sampled_bytes += static_cast<std::size_t>(b - a);
-  }
-  const double scale = 1.2 * static_cast<double>(size) /
-                       static_cast<double>(std::max<std::size_t>(sampled_bytes, 1));
-  const auto scaled = [scale](std::size_t n) {
-    return static_cast<std::size_t>(scale * static_cast<double>(n)) + 64;
-  };
-  return {scaled(sampled.vertices), scaled(sampled.faces), scaled(sampled.corners)};
-}
-
-//! One part of the file read on its own thread (parts after the first).
-struct ObjPart {
-  const char* first = nullptr;
-  const char* last = nullptr;
-  RecordCounts counts;
-  Soup soup;
-  ReadInfo info;
-  MeshAttributes attributes;
-  RelativeCorners relative;
-  AttributeIndices attribute_indices;
-};
-
-//! Appends part `part` (read after `soup`'s vertices and faces) to `soup`, `info`, `attributes`.
-//! False if one of its negative indices points before the first vertex of the file.
-bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
-  const std::int64_t vertices_before = static_cast<std::int64_t>(soup.num_vertices());
-  if (vertices_before + part.relative.lowest < 0)
-    return false;
-  const Index corner_base = static_cast<Index>(soup.num_corners());
-  const Index face_base = static_cast<Index>(soup.num_faces());
-  for (const auto& [corner, offset] : part.relative.corners)
-    part.soup.corner_vertices[corner] = static_cast<Index>(vertices_before + offset);
-  if (attributes != nullptr) {
-    auto& colors = attributes->vertex_colors;
-    auto& missing = attributes->vertex_color_missing;
-    const auto& part_colors = part.attributes.vertex_colors;
-    const auto& part_missing = part.attributes.vertex_color_missing;
-    const std::size_t vertices_after = soup.num_vertices() + part.soup.num_vertices();
-    if (!colors.empty() || !part_colors.empty()) {
-      pad_missing_colors(colors, missing, soup.num_vertices());
-      if (!part_colors.empty()) {  // the part's colours cover all of its vertices
-        if (!missing.empty() || !part_missing.empty()) {
-          missing.resize(colors.size(), false);
-          if (part_missing.empty())
-            missing.resize(vertices_after, false);
-          else
-            missing.insert(missing.end(), part_missing.begin(), part_missing.end());
-        }
-        colors.insert(colors.end(), part_colors.begin(), part_colors.end());
-      }
-      pad_missing_colors(colors, missing, vertices_after);
-    }
-    attributes->vertex_color_channels |= part.attributes.vertex_color_channels;
-    attributes->texture_coordinates += part.attributes.texture_coordinates;
-    attributes->normals += part.attributes.normals;
-    for (std::string& library : part.attributes.material_libraries)
-      attributes->material_libraries.push_back(std::move(library));
-    for (const NotKept& n : part.attributes.not_kept)
-      add_not_kept(*attributes, n);
-    for (FaceGroup& group : part.attributes.face_groups) {
-      group.first_face += face_base;
-      attributes->face_groups.push_back(std::move(group));
-    }
-  }
-  soup.positions.insert(soup.positions.end(), part.soup.positions.begin(),
-                        part.soup.positions.end());
-  soup.corner_vertices.insert(soup.corner_vertices.end(), part.soup.corner_vertices.begin(),
-                              part.soup.corner_vertices.end());
-  for (std::size_t f = 1; f < part.soup.face_begin.size(); ++f)
-    soup.face_begin.push_back(corner_base + part.soup.face_begin[f]);
-  info.declared_vertices += part.info.declared_vertices;
-  info.declared_faces += part.info.declared_faces;
-  info.faces_without_corners += part.info.faces_without_corners;
-  info.dangling_edges += part.info.dangling_edges;
-  info.lone_points += part.info.lone_points;
-  info.unknown_records += part.info.unknown_records;
-  info.empty_records += part.info.empty_records;
-  part = ObjPart();  // its memory goes back before the next part is appended
-  return true;
-}
 
 //! Reads the file in `n` parts side by side: part 0 into `soup`, the others into their own soups
 //! appended in file order. False (outputs to be reset) if a part met an error or a negative
