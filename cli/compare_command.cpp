@@ -81,9 +81,14 @@ int run_compare(const CompareArguments& arguments) {
   row("vertices", s.vertices, b.vertices);
   row("faces kept", s.faces_kept, b.faces_kept);
   row("faces detached", s.faces_detached, b.faces_detached);
-  row("faces lost", s.faces_lost, b.faces_lost);
+  row("faces not loaded", s.faces_lost, b.faces_lost);
   row("boundary edges", s.boundary_edges, b.boundary_edges);
   row("components", s.components, b.components);
+  if (b.faces_lost > 0) {
+    std::cout << "(MeshBridge sets aside faces with fewer than 3 distinct corners and counts "
+                 "them, as the warning above says; OpenMesh's loader drops faces without a "
+                 "word)\n";
+  }
   return kOk;
 }
 

@@ -145,7 +145,7 @@ check_json)
     /usr/bin/python3 -c 'import struct,sys; sys.stdout.buffer.write(struct.pack("<9fB3i", 0,0,0, 1,0,0, 0,1,0, 3, 0,1,2) + bytes(13))'
   } >"$work/tail.ply"
   expect_exit 1 "$mb" check "$work/tail.ply" --json
-  expect_in "$work/err" "meshbridge: warning: $work/tail.ply: 1 face record: all kept; 13 bytes after the last declared binary PLY element not read (padding, or a false count)"
+  expect_in "$work/err" "meshbridge: warning: $work/tail.ply: 1 face record: all kept; 13 bytes after the end of the mesh not read (padding, or items a false count leaves out)"
   [ "$(json_field "$work/out" read.trailing_bytes)" = 13 ] || fail "read.trailing_bytes"
   printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl\np\n' >"$work/empty_lp.obj"
   expect_exit 1 "$mb" check "$work/empty_lp.obj" --json
@@ -187,6 +187,13 @@ compare_twocubes)
   [ "$(json_field "$work/out" bridged.vertices)" = 16 ] || fail "compare bridged vertices"
   [ "$(json_field "$work/out" stock.components)" = 10 ] || fail "compare stock components"
   [ "$(json_field "$work/out" faces)" = 24 ] || fail "compare faces"
+  # Records with fewer than 3 distinct corners: set aside by MeshBridge (and said so), dropped
+  # by OpenMesh; one row for both, not "lost" for MeshBridge.
+  printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 1 2\nf\n' >"$work/aside.obj"
+  expect_exit 0 "$mb" compare "$work/aside.obj"
+  grep -E '^faces not loaded +2 +2$' "$work/out" >/dev/null || fail "not loaded row: $(cat "$work/out")"
+  expect_in "$work/out" "MeshBridge sets aside faces with fewer than 3 distinct corners and counts them"
+  expect_in "$work/err" "2 set aside (< 3 distinct corners; 1 without any corner)"
   ;;
 repair_canonical)
   # model faces vertices-after components-after

@@ -252,8 +252,17 @@ TEST_F(ColourFidelity, obj_colours_written_0_to_255_are_read_as_such) {
   const auto& c = r.attributes.vertex_colors;
   ASSERT_EQ(c.size(), 4u);
   EXPECT_EQ(c[0], (Rgba{255, 128, 0, 255}));  // was clamped to yellow (255, 255, 0)
-  EXPECT_EQ(c[1], (Rgba{128, 64, 255, 255}));
-  EXPECT_EQ(c[3], (Rgba{255, 255, 255, 255}));  // all <= 1: the 0..1 scale
+  // One scale per file: in a file with a 0..255 colour, "1 1 1" is near black (it was white),
+  // and "0.5 0.25 1" rounds to 1 0 1.
+  EXPECT_EQ(c[1], (Rgba{1, 0, 1, 255}));
+  EXPECT_EQ(c[3], (Rgba{1, 1, 1, 255}));
+  // A file of 0..1 colours only keeps the 0..1 scale.
+  const Reading unit = read(write("unit.obj",
+                                  "v 0 0 0 1 0.5 0\nv 1 0 0 0.5 0.25 1\nv 0 1 0\n"
+                                  "v 0 0 1 1 1 1\n" +
+                                      std::string(kTetrahedronFaces)));
+  EXPECT_EQ(unit.attributes.vertex_colors[0], (Rgba{255, 128, 0, 255}));
+  EXPECT_EQ(unit.attributes.vertex_colors[3], (Rgba{255, 255, 255, 255}));
 }
 
 TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
@@ -365,8 +374,8 @@ TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
   read_soup(write("tail.ply", binary_ply + '\3' + std::string(12, '\0')), &tail);
   EXPECT_EQ(tail.trailing_bytes, 13u);
   EXPECT_TRUE(tail.changed_anything());
-  EXPECT_NE(describe_reading(tail).find("13 bytes after the last declared binary PLY element not "
-                                        "read (padding, or a false count)"),
+  EXPECT_NE(describe_reading(tail).find("13 bytes after the end of the mesh not read (padding, "
+                                        "or items a false count leaves out)"),
             std::string::npos)
       << describe_reading(tail);
   EXPECT_TRUE(not_kept_of("tail.ply", binary_ply + '\3' + std::string(12, '\0')).empty());

@@ -398,4 +398,26 @@ TEST_F(ParallelReading, obj_errors_in_later_parts_are_named_as_by_one_thread) {
   expect_same_for_every_thread_count(bad_number);
 }
 
+TEST_F(ParallelReading, obj_colour_scale_is_one_per_file_across_parts) {
+  // 0..1 colours in the first part, one 0..255 colour in the last: every part reads "1 1 1" as
+  // near black, as one thread does.
+  const std::string file = path("scale.obj");
+  {
+    std::ofstream out(file, std::ios::binary);
+    out << "v 0 0 0 1 1 1\n";
+    for (int i = 0; i < 100000; ++i)
+      out << "v " << i << " 0.123456789 0.987654321 0.5 0.5 0.5\n";
+    out << "v 0 0 1 1 1 1\nv 0 1 0 255 128 0\nf 1 2 3\nf 100001 100002 100003\n";
+  }
+  const Reading one = read_with(1, file);
+  ASSERT_TRUE(one.error.empty()) << one.error;
+  const auto& c = one.attributes.vertex_colors;
+  ASSERT_EQ(c.size(), 100003u);
+  EXPECT_EQ(c[0], (Rgba{1, 1, 1, 255}));
+  EXPECT_EQ(c[1], (Rgba{1, 1, 1, 255}));  // 0.5 as a byte of 0..255, rounded
+  EXPECT_EQ(c[100001], (Rgba{1, 1, 1, 255}));
+  EXPECT_EQ(c[100002], (Rgba{255, 128, 0, 255}));
+  expect_same_for_every_thread_count(file);
+}
+
 }  // namespace

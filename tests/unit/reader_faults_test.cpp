@@ -13,6 +13,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -185,9 +188,10 @@ TEST_F(ReaderFaults, off_and_3mf_under_an_obj_name_are_named_as_what_they_look_l
   EXPECT_TRUE(contains(error_of("zip.obj", std::string("PK\3\4\24\0\0\0\10\0", 10)),
                        "it begins with 'PK': a zip archive (a 3MF file under another name?)"));
   // Where the reader refuses the file outright, the same hint ends its error.
-  EXPECT_TRUE(contains(error_of("zip.ply", std::string("PK\3\4\24\0\0\0\10\0", 10)),
-                       "not a PLY file: it starts with 'PK????????', not 'ply'; it begins with "
-                       "'PK': a zip archive (a 3MF file under another name?)"));
+  EXPECT_TRUE(
+      contains(error_of("zip.ply", std::string("PK\3\4\24\0\0\0\10\0", 10)),
+               "not a PLY file: it starts with 'PK\?\?\?\?\?\?\?\?', not 'ply'; it begins with "
+               "'PK': a zip archive (a 3MF file under another name?)"));
   EXPECT_TRUE(
       contains(error_of("ply.off", "ply\nformat ascii 1.0\nend_header\n"),
                "not an OFF file: it starts with 'ply', not a header such as OFF, COFF, "
@@ -204,6 +208,109 @@ TEST_F(ReaderFaults, off_and_3mf_under_an_obj_name_are_named_as_what_they_look_l
   // An OFF number that no double holds says so.
   EXPECT_TRUE(contains(error_of("huge.off", "OFF\n1 0 0\n1e400 0 0\n"),
                        "found '1e400', which is no number a double can hold"));
+}
+
+const char* kAsciiTriangle =
+    "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+    "endloop\nendfacet\nendsolid x\n";
+
+TEST_F(ReaderFaults, stl_padding_a_streamed_count_and_a_fourth_number) {
+  // NUL bytes or a ^Z after an ASCII STL: padding, counted, not "binary data".
+  for (const std::string& padding : {std::string(4, '\0'), std::string("\x1a")}) {
+    ReadInfo info;
+    EXPECT_EQ(read_soup(write("padded.stl", kAsciiTriangle + padding), &info).num_faces(), 1u);
+    EXPECT_EQ(info.trailing_bytes, padding.size());
+    EXPECT_TRUE(contains(describe_reading(info), "after the end of the mesh not read"));
+  }
+  // A binary STL whose header counts 0 triangles (a writer that streams its facets): read whole,
+  // and named.
+  std::string binary(80, ' ');
+  binary += std::string(4, '\0');
+  const float corners[2][9] = {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 0, 0, 1, 0, 0, 0, 1}};
+  for (const float* facet : corners) {
+    binary += std::string(12, '\0');  // the normal
+    binary.append(reinterpret_cast<const char*>(facet), 36);
+    binary += std::string(2, '\0');  // the attribute word
+  }
+  MeshAttributes attributes;
+  ReadInfo info;
+  EXPECT_EQ(read_soup(write("streamed.stl", binary), &info, &attributes).num_faces(), 2u);
+  EXPECT_EQ(info.declared_faces, 2u);
+  ASSERT_EQ(attributes.not_kept.size(), 1u);
+  EXPECT_TRUE(contains(attributes.not_kept[0].what,
+                       "binary STL header that counts 0 triangles (a streaming writer's) before 2 "
+                       "whole facets, all read"));
+  EXPECT_TRUE(attributes.not_kept[0].fault);
+  // A header that counts 0 before a stray byte is still an error.
+  EXPECT_TRUE(contains(error_of("stray.stl", binary + "x"), "a binary STL whose header counts 0"));
+  // Four numbers after 'vertex'.
+  std::string four = kAsciiTriangle;
+  four.replace(four.find("vertex 1 0 0"), 12, "vertex 1 0 0 7");
+  EXPECT_TRUE(contains(error_of("four.stl", four),
+                       "ASCII STL line 5: facet 1, corner 2: more than 3 numbers after 'vertex'"));
+  // Cut anywhere inside the solid: every error says the file may be cut short.
+  const std::string whole = kAsciiTriangle;
+  for (std::size_t size = 9; size + 12 < whole.size(); ++size) {
+    const std::string error = error_of("cut.stl", whole.substr(0, size));
+    EXPECT_TRUE(contains(error, "truncated")) << size;
+  }
+}
+
+TEST_F(ReaderFaults, ply_with_a_byte_order_mark_or_cr_line_ends) {
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  EXPECT_EQ(read_soup(write("bom.ply", "\xEF\xBB\xBF" + ply)).num_faces(), 1u);
+  std::string cr = ply;
+  std::replace(cr.begin(), cr.end(), '\n', '\r');
+  EXPECT_TRUE(contains(error_of("cr.ply", cr),
+                       "cr.ply: its header lines end in CR alone (classic Mac OS text)"));
+}
+
+TEST_F(ReaderFaults, off_keyword_glued_to_its_counts_and_damaged_binary_off) {
+  // ModelNet writes "OFF8 6 12": the keyword and the counts without a blank.
+  ReadInfo info;
+  EXPECT_EQ(
+      read_soup(write("glued.off", std::string("OFF4 2 0\n") + kOffVertices + "3 0 1 2\n3 0 1 3\n"),
+                &info)
+          .num_faces(),
+      2u);
+  EXPECT_EQ(info.declared_vertices, 4u);
+  // Geomview's big-endian binary OFF: a trailing newline is padding; a cut file names its own
+  // counts, not little-endian garbage.
+  const auto big = [](std::uint32_t w) {
+    const std::uint32_t b = __builtin_bswap32(w);
+    return std::string(reinterpret_cast<const char*>(&b), 4);
+  };
+  const auto big_float = [&big](float x) {
+    std::uint32_t w = 0;
+    std::memcpy(&w, &x, 4);
+    return big(w);
+  };
+  std::string body = big(4) + big(2) + big(0);
+  for (float x : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f})
+    body += big_float(x);
+  for (std::uint32_t c : {0u, 1u, 2u})
+    body += (c == 0 ? big(3) : "") + big(c);
+  body += big(0);
+  for (std::uint32_t c : {0u, 1u, 3u})
+    body += (c == 0 ? big(3) : "") + big(c);
+  body += big(0);
+  ReadInfo padded;
+  EXPECT_EQ(read_soup(write("newline.off", "OFF BINARY\n" + body + "\n"), &padded).num_faces(), 2u);
+  EXPECT_EQ(padded.trailing_bytes, 1u);
+  const std::string cut = error_of("cut.off", "OFF BINARY\n" + body.substr(0, body.size() - 6));
+  EXPECT_TRUE(contains(cut, "binary OFF face 2")) << cut;
+}
+
+TEST_F(ReaderFaults, obj_corner_and_keyword_messages) {
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  EXPECT_TRUE(contains(error_of("dash.obj", triangle + "f 3 -\n"),
+                       "line 4: face corner '-' has no vertex index"));
+  EXPECT_TRUE(contains(error_of("upper.obj", triangle + "F 1 2 3\n"),
+                       "no polygons in the file (3 vertices); 1 line with an unknown keyword "
+                       "skipped (a misspelt or upper-case 'f'?)"));
 }
 
 }  // namespace

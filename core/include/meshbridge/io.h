@@ -51,9 +51,12 @@ struct ReadInfo {
   //! `tristrips` run (a strip, or its part between -1 restarts) of 1 or 2 vertices, which makes
   //! no triangle. Not in the soup; counted so that they do not vanish without a word.
   std::size_t empty_records = 0;
-  //! Bytes after the last element a binary PLY header declares: padding, or items that a false
-  //! count leaves out (faces among them would be lost). Not read; counted so that they are not
-  //! passed over without a word. (An ascii PLY with values after its last element is an error.)
+  //! Bytes after the end of the mesh: after the last element a binary PLY header declares
+  //! (padding, or items that a false count leaves out: faces among them would be lost), line
+  //! ends or NULs after a binary OFF's last face, NUL and ^Z bytes after an ASCII STL (padding
+  //! some programs write). Not read; counted so that
+  //! they are not passed over without a word. (An ascii PLY with values after its last element
+  //! is an error.)
   std::size_t trailing_bytes = 0;
   //! OBJ lines whose keyword is no OBJ record (e.g. "F 1 2 3", "vx 1 2"), skipped: counted so
   //! that a misspelt face is not lost without a word (the CLI warns). Records of the OBJ format
@@ -147,6 +150,11 @@ struct MeshAttributes {
   //! given attributes). See describe_unwritten().
   std::vector<NotKept> not_kept;
   bool double_precision = false;  //!< positions were stored as 64-bit floats (PLY double)
+  //! The length unit the file gives its coordinates in (3MF's `unit`: "micron", "millimeter",
+  //! "centimeter", "inch", "foot", "meter"); empty for the formats that have none. Coordinates
+  //! are kept as written, in this unit: the 3MF writer writes it back, and describe_unwritten()
+  //! names a unit other than millimetres that an output without units cannot hold.
+  std::string length_unit;
 
   //! True if element `i` has a colour of its own (a colour vector that is non-empty and no
   //! missing flag). `i` may be kNoIndex (an element repair added: no colour).
@@ -173,11 +181,11 @@ Soup read_soup(const std::string& path, ReadInfo* info = nullptr,
 //! colours through `mesh.face_origin` (the copies of a split vertex and the pieces of a split
 //! face carry their original's colour), OBJ groups moved to the first output face of each (a
 //! group left with no face gives way to the next one that starts there); the missing-colour flags
-//! mapped the same way; channels, `material_libraries`, the vt/vn counts and `double_precision`
-//! kept. An origin outside the input (kNoIndex: a face added by hole filling) gets the default
-//! colour and is flagged as having none. The result belongs to `mesh` itself, element by element:
-//! it is for callers that keep attributes per output element. write_mesh() takes the input's
-//! attributes and maps them itself; handing it these instead would map them twice. \pre
+//! mapped the same way; channels, `material_libraries`, the vt/vn counts, `double_precision` and
+//! `length_unit` kept. An origin outside the input (kNoIndex: a face added by hole filling) gets
+//! the default colour and is flagged as having none. The result belongs to `mesh` itself, element
+//! by element: it is for callers that keep attributes per output element. write_mesh() takes the
+//! input's attributes and maps them itself; handing it these instead would map them twice. \pre
 //! `mesh.face_origin` is non-decreasing (repair keeps the face order; added faces, marked kNoIndex,
 //! come last)
 MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& mesh);

@@ -31,6 +31,7 @@ void carry_colors(const std::vector<Rgba>& colors, const std::vector<bool>& miss
 MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& mesh) {
   MeshAttributes out;
   out.double_precision = input.double_precision;
+  out.length_unit = input.length_unit;
   out.vertex_color_channels = input.vertex_color_channels;
   out.face_color_channels = input.face_color_channels;
   out.material_libraries = input.material_libraries;

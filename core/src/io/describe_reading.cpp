@@ -47,7 +47,7 @@ std::string describe_reading(const ReadInfo& info) {
   }
   if (info.trailing_bytes > 0) {
     text += "; " + counted(info.trailing_bytes, "byte") +
-            " after the last declared binary PLY element not read (padding, or a false count)";
+            " after the end of the mesh not read (padding, or items a false count leaves out)";
   }
   if (info.unknown_records > 0)
     text += "; " + counted(info.unknown_records, "line") + " with an unknown keyword skipped";

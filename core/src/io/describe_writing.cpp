@@ -8,6 +8,7 @@
 #include "meshbridge/io.h"
 
 #include <algorithm>
+#include <charconv>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,22 @@ std::string missing_rgb(std::uint8_t channels) {
   return text;
 }
 
+//! A length as text, to a float's precision ("1.52587891e-05" as "1.5258789e-05").
+std::string shortest(double length) {
+  char digits[32];
+  const auto end = std::to_chars(digits, digits + sizeof digits, static_cast<float>(length)).ptr;
+  return std::string(digits, end);
+}
+
+//! The plural of a 3MF unit name: "inches", "feet", "microns".
+std::string units(const std::string& unit) {
+  if (unit == "inch")
+    return "inches";
+  if (unit == "foot")
+    return "feet";
+  return unit + "s";
+}
+
 std::size_t missing_count(const std::vector<bool>& missing) {
   return static_cast<std::size_t>(std::count(missing.begin(), missing.end(), true));
 }
@@ -71,7 +88,13 @@ std::vector<std::string> describe_unwritten(const std::string& path,
       what += counted(attributes.normals, "normal") + " (vn)";
     lost.push_back(what + " not written: MeshBridge writes neither");
   }
+  const bool writes_vertex_colors =
+      format == Format::obj || format == Format::off || format == Format::ply;
+  const bool writes_face_colors = format == Format::off || format == Format::ply;
   for (const NotKept& n : attributes.not_kept) {
+    // Clamped colours that the output holds none of: the colours are named below as not written.
+    if (n.clamped && !(n.noun == "face" ? writes_face_colors : writes_vertex_colors))
+      continue;
     lost.push_back(
         n.what + ", on " + counted(n.count, n.noun) +
         (n.clamped ? ": written clamped" : ": not written (MeshBridge reads past them)"));
@@ -109,6 +132,13 @@ std::vector<std::string> describe_unwritten(const std::string& path,
     lost.push_back(counted(faces_without, "face") +
                    " without a colour written white: PLY gives every face a colour or none");
   }
+  // STL, OBJ, OFF and PLY have no unit: slicers read them as millimetres.
+  if (format != Format::threemf && !attributes.length_unit.empty() &&
+      attributes.length_unit != "millimeter") {
+    lost.push_back("3MF unit '" + attributes.length_unit + "' not written: " + name +
+                   " has no unit, and the coordinates stay as written, in " +
+                   units(attributes.length_unit) + " (a slicer reads them as millimetres)");
+  }
   if (format != Format::obj &&
       (!attributes.face_groups.empty() || !attributes.material_libraries.empty())) {
     lost.push_back("OBJ groups and materials not written (" +
@@ -141,6 +171,8 @@ std::vector<std::string> describe_not_held(const MeshAttributes& attributes) {
                              " (vt)");
   if (attributes.normals > 0)
     held_elsewhere.push_back(counted(attributes.normals, "normal") + " (vn)");
+  if (!attributes.length_unit.empty() && attributes.length_unit != "millimeter")
+    held_elsewhere.push_back("3MF unit '" + attributes.length_unit + "'");
   for (const NotKept& n : attributes.not_kept)
     held_elsewhere.push_back(n.what + ", on " + counted(n.count, n.noun));
   return held_elsewhere;
@@ -172,6 +204,22 @@ WrittenOutput describe_written(const std::string& path, const Soup& soup,
                                  " holds no more");
     }
   }
+#ifdef MESHBRIDGE_WITH_3MF
+  if (format == detail::Format::threemf) {
+    const detail::ThreeMfRounding r = detail::measure_3mf_rounding(path, soup);
+    if (r.moved > 0) {
+      written.left_out.push_back("positions of " + counted(r.moved, "vertex") + " moved by up to " +
+                                 shortest(r.largest_move) +
+                                 " as lib3mf wrote them (3MF text, at most 6 decimals)");
+    }
+    if (r.collapsed > 0) {
+      written.left_out.push_back(
+          counted(r.collapsed, "triangle") +
+          " written with two corners at one point: the mesh is finer than lib3mf's 6 decimals "
+          "(write STL or PLY, or scale it up)");
+    }
+  }
+#endif
   return written;
 }
 

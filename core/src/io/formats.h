@@ -99,6 +99,18 @@ void require_float_range(const Soup& soup, const std::string& path, const char* 
 void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
                const WriteOptions& options);
 
+//! How the positions of `soup` came back from the 3MF file `path` that write_3mf() wrote: lib3mf
+//! 1.8 writes a coordinate as text with at most 6 decimals, computed in float (999.999f is
+//! written 999.999040, 1e-7 as 0). Measured by reading the file again with lib3mf.
+struct ThreeMfRounding {
+  std::size_t moved = 0;      //!< vertices whose written position differs from their float one
+  double largest_move = 0;    //!< the largest coordinate difference
+  std::size_t collapsed = 0;  //!< triangles with two corners that now coincide (none before)
+  bool measured = false;      //!< false if the file could not be read back (nothing measured)
+};
+//! See ThreeMfRounding. Vertex order is the writer's (one object, one build item).
+ThreeMfRounding measure_3mf_rounding(const std::string& path, const Soup& soup);
+
 //! Checks `soup` as validate_soup() does and, in the same walk over the faces, classifies every
 //! face as kept, split (pinched) or set aside (< 3 distinct corners) the way repair's WorkingSoup
 //! does, adding the counts to `info` (faces_without_corners are added to faces_set_aside too).

@@ -153,6 +153,7 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
       break;
   }
   if (soup.num_faces() == 0) {
+    const std::string looks_like = detail::other_format_hint(file.view(), format);
     throw ReadError(
         path + ": no polygons in the file (" + std::to_string(soup.num_vertices()) + " vertices" +
         (counts.dangling_edges > 0 ? ", " + std::to_string(counts.dangling_edges) + " edges"
@@ -168,7 +169,11 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
              ? "; " + counted(counts.trailing_bytes, "byte") +
                    " follow the last declared element: a false count in the header?"
              : std::string()) +
-        detail::other_format_hint(file.view(), format));
+        (counts.unknown_records > 0 && looks_like.empty()
+             ? "; " + counted(counts.unknown_records, "line") +
+                   " with an unknown keyword skipped (a misspelt or upper-case 'f'?)"
+             : std::string()) +
+        looks_like);
   }
   try {
     detail::account_faces(soup, counts);  // validates the soup on the way

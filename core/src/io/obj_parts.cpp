@@ -4,6 +4,7 @@
 #include "io/formats.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -35,6 +36,24 @@ RecordCounts count_records(const char* p, const char* end) {
 }
 
 }  // namespace
+
+void rescale_unit_colours(const ColourScale& scale, MeshAttributes& attributes) {
+  if (!scale.bytes)
+    return;
+  const auto as_byte = [](std::uint8_t& channel) {
+    channel = static_cast<std::uint8_t>(std::lround(channel / 255.0));  // the value as written
+  };
+  for (const auto& [v, alpha] : scale.unit) {
+    if (v >= attributes.vertex_colors.size())
+      continue;
+    Rgba& c = attributes.vertex_colors[v];
+    as_byte(c.r);
+    as_byte(c.g);
+    as_byte(c.b);
+    if (alpha)
+      as_byte(c.a);
+  }
+}
 
 void add_not_kept(MeshAttributes& attributes, const NotKept& n) {
   for (NotKept& known : attributes.not_kept) {

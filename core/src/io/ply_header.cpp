@@ -106,7 +106,8 @@ std::size_t PlyElement::min_size() const {
 PlyHeader parse_ply_header(std::string_view data, const std::string& path) {
   const std::string where = path + ": ";
   PlyHeader header;
-  std::size_t pos = 0;
+  // A UTF-8 byte order mark that a text editor put before "ply" is skipped, as in OBJ and OFF.
+  std::size_t pos = data.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
   std::size_t line_number = 0;
   bool has_format = false;
   // Returns the next line without its end of line; false at the end of the data.
@@ -124,6 +125,12 @@ PlyHeader parse_ply_header(std::string_view data, const std::string& path) {
   std::string_view line;
   const bool has_line = next_line(line);
   const std::vector<std::string_view> first = ply_line_words(line);
+  if (has_line && !first.empty() && (first[0] == "ply" || first[0] == "PLY") &&
+      line.find('\r') != std::string_view::npos && line.find('\r') + 1 < line.size()) {
+    throw ReadError(where +
+                    "its header lines end in CR alone (classic Mac OS text); PLY headers end "
+                    "in LF or CRLF: convert the file first (tr '\\r' '\\n' for ascii PLY)");
+  }
   if (!has_line || first.size() != 1 || (first[0] != "ply" && first[0] != "PLY")) {
     std::string start(first.empty() ? std::string_view() : first[0].substr(0, 16));
     for (char& c : start)

@@ -5,6 +5,7 @@
 
 #include "meshbridge/errors.h"
 
+#include <Common/NMR_ErrorConst.h>
 #include <Model/COM/NMR_DLLInterfaces.h>
 
 #include <array>
@@ -70,6 +71,13 @@ class Reader {
  public:
   Reader(const std::string& path, Soup& soup) : path_(path), soup_(soup) {}
 
+  //! What the placed mesh objects carry that MeshBridge reads past (see add_mesh).
+  struct Properties {
+    std::size_t triangles = 0;  //!< triangles with a colour, material or texture coordinate
+    std::size_t names = 0;      //!< mesh objects with a name
+  };
+  const Properties& properties() const { return properties_; }
+
   // Appends the triangles of mesh object `object`, its vertices mapped by `placement`.
   void add_mesh(NMR::PLib3MFModelObjectResource* object, const Affine& placement,
                 bool transformed) {
@@ -101,6 +109,30 @@ class Reader {
       }
       soup_.add_polygon(
           {offset + t.m_nIndices[0], offset + t.m_nIndices[1], offset + t.m_nIndices[2]});
+    }
+    count_properties(object, triangle_count);
+  }
+
+  // Counts the triangles of `object` that carry a property (a colour of an m:colorgroup, a base
+  // material, texture coordinates; the object's own pid gives one to every triangle without
+  // one), and whether the object has a name: read past, so named (NotKept).
+  void count_properties(NMR::PLib3MFModelObjectResource* object, DWORD triangle_count) {
+    ULONG name_length = 0;
+    if (NMR::lib3mf_object_getnameutf8(object, nullptr, 0, &name_length) == LIB3MF_OK)
+      properties_.names += name_length > 0;
+    Released defaults, handler;
+    NMR::eModelPropertyType type = NMR::MODELPROPERTYTYPE_NONE;
+    bool object_default = false;
+    if (NMR::lib3mf_object_createdefaultpropertyhandler(object, &defaults.instance) == LIB3MF_OK &&
+        NMR::lib3mf_defaultpropertyhandler_getpropertytype(defaults.instance, &type) == LIB3MF_OK) {
+      object_default = type != NMR::MODELPROPERTYTYPE_NONE;
+    }
+    if (NMR::lib3mf_meshobject_createpropertyhandler(object, &handler.instance) != LIB3MF_OK)
+      return;
+    for (DWORD t = 0; t < triangle_count; ++t) {
+      type = NMR::MODELPROPERTYTYPE_NONE;
+      NMR::lib3mf_propertyhandler_getpropertytype(handler.instance, t, &type);
+      properties_.triangles += object_default || type != NMR::MODELPROPERTYTYPE_NONE;
     }
   }
 
@@ -215,11 +247,32 @@ class Reader {
   std::set<DWORD> placed_;  // mesh objects some build item reached
   std::vector<NMR::MODELMESHVERTEX> vertices_;
   std::vector<NMR::MODELMESHTRIANGLE> triangles_;
+  Properties properties_;
 };
+
+//! The name the 3MF specification gives the unit lib3mf reports (eModelUnit).
+const char* unit_name(DWORD unit) {
+  switch (unit) {
+    case NMR::MODELUNIT_MICROMETER:
+      return "micron";
+    case NMR::MODELUNIT_MILLIMETER:
+      return "millimeter";
+    case NMR::MODELUNIT_CENTIMETER:
+      return "centimeter";
+    case NMR::MODELUNIT_INCH:
+      return "inch";
+    case NMR::MODELUNIT_FOOT:
+      return "foot";
+    case NMR::MODELUNIT_METER:
+      return "meter";
+    default:
+      return "millimeter";
+  }
+}
 
 }  // namespace
 
-void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* /*attributes*/) {
+void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
   const std::string& path = file.path();
   Released model, reader;
   check(NMR::lib3mf_createmodel(&model.instance), path, "create a model");
@@ -235,6 +288,11 @@ void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
     std::string why = message != nullptr && *message != '\0' ? message : "unknown error";
     if (why == "Could not create OPC Part")
       why += " (a relationship of the package names a part that is not in the archive?)";
+    if (code == NMR_ERROR_INVALIDMODELCOORDINATEINDICES) {
+      why +=
+          " (a triangle names one vertex twice, or a vertex its object does not have: lib3mf "
+          "1.8 refuses the whole file for it)";
+    }
     throw ReadError(path + ": lib3mf cannot read the file as 3MF: " + why + " (error " +
                     std::to_string(status) + ", lib3mf code " + std::to_string(code) + ")");
   }
@@ -243,6 +301,19 @@ void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   read.add_unplaced(model.instance);
   info.declared_vertices = soup.num_vertices();
   info.declared_faces = soup.num_faces();
+  if (attributes == nullptr)
+    return;
+  DWORD unit = NMR::MODELUNIT_MILLIMETER;
+  check(NMR::lib3mf_model_getunit(model.instance, &unit), path, "get the model's unit");
+  attributes->length_unit = unit_name(unit);
+  if (read.properties().triangles > 0) {
+    attributes->not_kept.push_back(
+        {"3MF triangle colours, materials or texture coordinates (m:colorgroup, basematerials, "
+         "texture2dgroup)",
+         read.properties().triangles, "triangle"});
+  }
+  if (read.properties().names > 0)
+    attributes->not_kept.push_back({"3MF object names", read.properties().names, "object"});
 }
 
 }  // namespace meshbridge::detail

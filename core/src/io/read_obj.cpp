@@ -38,6 +38,8 @@ class ObjReader {
 
   //! The vt/vn indices met by read().
   const AttributeIndices& attribute_indices() const { return attribute_indices_; }
+  //! The colour scale this reader met (see ColourScale); moved out.
+  ColourScale take_colour_scale() { return std::move(colour_scale_); }
 
   //! Reads the file counting the corners whose vt or vn index names a record past the file's
   //! `totals` (vt, vn) or, relative, before its first one.
@@ -149,11 +151,16 @@ class ObjReader {
     soup_.positions.push_back(Point(values[0], values[1], values[2]));
     if (attributes_ == nullptr)
       return;
-    // x y z r g b [a]: colours as floats in [0, 1], or 0..255 where some value is above 1 (as
-    // some exporters write them); a vertex without one has none.
+    // x y z r g b [a]: colours as floats in [0, 1], or 0..255 in a file where some value is
+    // above 1 (as some exporters write them: decided per file, see ColourScale); a vertex
+    // without one has none.
     Rgba color;
     if (n >= 6) {
       const bool bytes = *std::max_element(values + 3, values + n) > 1;
+      if (bytes)
+        colour_scale_.bytes = true;
+      else
+        colour_scale_.unit.emplace_back(static_cast<Index>(soup_.num_vertices() - 1), n == 7);
       const double top = bytes ? 255 : 1;
       colours_clamped_ +=
           std::any_of(values + 3, values + n, [top](double v) { return !(v >= 0 && v <= top); });
@@ -204,8 +211,10 @@ class ObjReader {
     std::int64_t index = 0;
     const char* end = parse_integer(first, last, index);
     if (end == nullptr) {
-      const bool digits = first != last && (std::isdigit(static_cast<unsigned char>(*first)) ||
-                                            *first == '-' || *first == '+');
+      const char* after_sign =
+          first != last && (*first == '-' || *first == '+') ? first + 1 : first;
+      const bool digits =
+          after_sign != last && std::isdigit(static_cast<unsigned char>(*after_sign)) != 0;
       fail(std::string(what) + " corner '" + clip(text) + "' " +
            (digits ? std::string("is not an index MeshBridge can hold (beyond 64 bits)")
                    : std::string("has no vertex index") +
@@ -353,6 +362,7 @@ class ObjReader {
   bool alpha_given_ = false;                                // some 'v' line has r g b a
   std::size_t w_not_one_ = 0, values_no_colour_ = 0;        // see vertex()
   std::size_t colours_clamped_ = 0;                         // see vertex()
+  ColourScale colour_scale_;                                // see vertex()
   static constexpr std::ptrdiff_t kReleaseEvery = 8 << 20;  // bytes of the map kept behind
   const char* released_;
 };
@@ -361,7 +371,8 @@ class ObjReader {
 //! appended in file order. False (outputs to be reset) if a part met an error or a negative
 //! index that reaches before the file's first vertex: the one-thread read names it.
 bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& info,
-                   MeshAttributes* attributes, AttributeIndices& attribute_indices) {
+                   MeshAttributes* attributes, AttributeIndices& attribute_indices,
+                   ColourScale& colour_scale) {
   std::vector<ObjPart> parts(n);
   for (unsigned k = 0; k < n; ++k) {
     parts[k].first = k == 0 ? after_byte_order_mark(file.data(), file.end()) : parts[k - 1].last;
@@ -389,12 +400,14 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
         ObjReader reader(file, part.first, part.last, soup, info, attributes);
         reader.read();
         part.attribute_indices = reader.attribute_indices();
+        part.colour_scale = reader.take_colour_scale();
       } else {
         reserve_huge(part.soup, part.counts.vertices, part.counts.faces, part.counts.corners);
         ObjReader reader(file, part.first, part.last, part.soup, part.info,
                          attributes != nullptr ? &part.attributes : nullptr, &part.relative);
         reader.read();
         part.attribute_indices = reader.attribute_indices();
+        part.colour_scale = reader.take_colour_scale();
       }
     } catch (const ReadError&) {
       failed[k] = 1;
@@ -418,6 +431,16 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
     before[0] += static_cast<std::int64_t>(counted.texture_coordinates);
     before[1] += static_cast<std::int64_t>(counted.normals);
   }
+  // The colour scale of the whole file, its vertices numbered in the file (before appending:
+  // part 0 read into `soup` itself, and appending empties a part).
+  std::size_t first_vertex = 0;
+  for (unsigned k = 0; k < n; ++k) {
+    const ColourScale& part = parts[k].colour_scale;
+    colour_scale.bytes = colour_scale.bytes || part.bytes;
+    for (const auto& [v, alpha] : part.unit)
+      colour_scale.unit.emplace_back(static_cast<Index>(first_vertex + v), alpha);
+    first_vertex += k == 0 ? soup.num_vertices() : parts[k].soup.num_vertices();
+  }
   for (unsigned k = 0; k < n; ++k) {
     if (failed[k] || (k > 0 && !append_part(parts[k], soup, info, attributes)))
       return false;
@@ -440,12 +463,14 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
       std::clamp<std::size_t>(file.size() / (std::size_t(1) << 20), 1, reading_threads()));
   bool read = false;
   AttributeIndices attribute_indices;
+  ColourScale colour_scale;
   if (n > 1) {
-    read = read_in_parts(file, n, soup, info, attributes, attribute_indices);
+    read = read_in_parts(file, n, soup, info, attributes, attribute_indices, colour_scale);
     if (!read) {
       soup = Soup();
       info = ReadInfo();
       attribute_indices = AttributeIndices();
+      colour_scale = ColourScale();
       if (attributes != nullptr)
         *attributes = MeshAttributes();
     }
@@ -457,6 +482,7 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
                      attributes);
     reader.read();
     attribute_indices = reader.attribute_indices();
+    colour_scale = reader.take_colour_scale();
   }
   // An l or p corner past the last vertex: an error naming its line, as for faces.
   if (attribute_indices.highest_element_vertex > std::int64_t(soup.num_vertices())) {
@@ -468,6 +494,7 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   }
   if (attributes == nullptr)
     return;
+  rescale_unit_colours(colour_scale, *attributes);
   // A vt or vn index the file has no record for: counted by reading the file once more (only
   // such a broken file pays for it), and named as read past (MeshBridge keeps neither).
   const std::size_t totals[2] = {attributes->texture_coordinates, attributes->normals};

@@ -98,7 +98,7 @@ class OffReader {
           return std::isdigit(static_cast<unsigned char>(c)) != 0;
         }))
       return h;  // "4OFF" is a keyword, "4" a count
-    const std::string_view word = in_.word();
+    std::string_view word = in_.word();
     std::size_t i = 0;
     if (word.substr(0, 2) == "ST")
       h.texcoords = true, i = 2;
@@ -111,6 +111,14 @@ class OffReader {
       four = true, ++i;
     if (i < word.size() && word[i] == 'n')
       n_dimensional = true, ++i;
+    // "OFF8 6 12": the keyword and the vertex count without a blank between them, as in the
+    // ModelNet data sets; read as the header it is.
+    if (word.substr(i, 3) == "OFF" && word.size() > i + 3 &&
+        std::all_of(word.begin() + i + 3, word.end(),
+                    [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; })) {
+      in_.back_to(word.data() + i + 3);
+      word = word.substr(0, i + 3);
+    }
     if (word.substr(i) != "OFF") {
       fail("not an OFF file: it starts with '" + clip(word) +
            "', not a header such as OFF, COFF, NOFF, STOFF or nOFF" +

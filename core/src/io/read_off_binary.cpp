@@ -7,6 +7,7 @@
 #include "meshbridge/counted.h"
 #include "meshbridge/errors.h"
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -62,19 +63,40 @@ class OffBinaryReader {
         p += (colors + 1) * 4;
       }
     }
-    return p == end;
+    return p == end || only_padding(p);
+  }
+  //! True if the bytes from `p` to the end are line ends, blanks or NULs (padding after the
+  //! last face, such as a newline a program added).
+  bool only_padding(const char* p) const {
+    return std::all_of(p, file_.end(),
+                       [](char c) { return c == '\n' || c == '\r' || c == ' ' || c == '\0'; });
+  }
+  //! True if the counts at `p` in `layout` leave room for the vertices and the faces (a face
+  //! takes at least 8 bytes) in what follows: the layout to read when none fits exactly.
+  bool plausible(const OffHeader& h, const char* p, BinaryLayout layout) const {
+    const std::uint64_t left = static_cast<std::uint64_t>(file_.end() - p);
+    if (left < 12)
+      return false;
+    const std::uint64_t nv = load(p, layout.big_endian), nf = load(p + 4, layout.big_endian);
+    return nv * vertex_floats(h) * 4 + nf * 8 <= left - 12;
   }
 
   void read(const OffHeader& h) {
     const char* p = body_;
     BinaryLayout layout;  // OpenMesh's, unless only another one fits the file
+    bool fitted = false;
     for (const BinaryLayout candidate : {BinaryLayout{false, false}, BinaryLayout{true, true},
                                          BinaryLayout{false, true}, BinaryLayout{true, false}}) {
       if (fits(h, p, candidate)) {
         layout = candidate;
+        fitted = true;
         break;
       }
     }
+    // None fits (a truncated or damaged file): the byte order whose counts the file can hold,
+    // so that the error names the file's own counts.
+    if (!fitted && !plausible(h, p, layout) && plausible(h, p, BinaryLayout{true, true}))
+      layout = BinaryLayout{true, true};
     const char* end = file_.end();
     const auto left = [&] { return static_cast<std::uint64_t>(end - p); };
     const auto word = [&] {
@@ -150,10 +172,11 @@ class OffBinaryReader {
         p += 4 * std::uint64_t(colour_values);
       }
     }
-    if (p != end) {
+    if (p != end && !only_padding(p)) {
       fail("binary OFF: " + std::to_string(left()) +
            " bytes follow its last face (neither OpenMesh's layout nor Geomview's fits the file)");
     }
+    info_.trailing_bytes = left();  // padding: counted, as after a binary PLY
   }
 
   const OffBinaryNotes& notes() const { return notes_; }

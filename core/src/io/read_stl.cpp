@@ -145,9 +145,9 @@ struct AsciiNotes {
   std::size_t normals_reversed = 0;
 };
 
-AsciiNotes read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
+AsciiNotes read_ascii(const MappedFile& file, const char* end, Soup& soup, ReadInfo& info) {
   std::size_t named_solids = 0, normals_reversed = 0;
-  TextScanner in(after_byte_order_mark(file.data(), file.end()), file.end());
+  TextScanner in(after_byte_order_mark(file.data(), end), end);
   std::vector<float> corners;
   std::size_t triangles = 0;
   const auto next_word = [&] {
@@ -155,15 +155,18 @@ AsciiNotes read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
       in.next_line();
     return in.word();
   };
-  const auto fail = [&](std::size_t line, const std::string& what) {
-    throw ReadError(file.path() + ": ASCII STL line " + std::to_string(line) + ": " + what);
-  };
   // True if nothing but blank lines follows the cursor: a file cut off there.
   const auto ends_here = [&in] {
     TextScanner rest = in;
     while (!rest.at_end() && rest.at_line_end())
       rest.next_line();
     return rest.at_end();
+  };
+  // Every error names its line; one where the file ends says it may be cut short.
+  const auto fail = [&](std::size_t line, const std::string& what) {
+    const bool cut = ends_here() && what.find("truncated") == std::string::npos;
+    throw ReadError(file.path() + ": ASCII STL line " + std::to_string(line) + ": " + what +
+                    (cut ? "; the file ends there (truncated?)" : ""));
   };
   const auto quoted = [](std::string_view word) {
     return word.empty() ? std::string("the end of the file")
@@ -220,8 +223,14 @@ AsciiNotes read_ascii(const MappedFile& file, Soup& soup, ReadInfo& info) {
     for (word = next_word(); equals_ignoring_case(word, "vertex"); word = next_word(), ++n) {
       const std::size_t line = in.line();
       double x = 0, y = 0, z = 0;
-      const bool ok = in.number(x) && in.number(y) && in.number(z) && std::isfinite(float(x)) &&
-                      std::isfinite(float(y)) && std::isfinite(float(z));
+      bool ok = in.number(x) && in.number(y) && in.number(z) && std::isfinite(float(x)) &&
+                std::isfinite(float(y)) && std::isfinite(float(z));
+      TextScanner after = in;  // a fourth number is no coordinate MeshBridge could keep
+      double w = 0;
+      if (ok && after.number(w)) {
+        fail(line, "facet " + std::to_string(triangles + 1) + ", corner " + std::to_string(n + 1) +
+                       ": more than 3 numbers after 'vertex'");
+      }
       if (!ok) {
         fail(line, "facet " + std::to_string(triangles + 1) + ", corner " + std::to_string(n + 1) +
                        " is not 'vertex x y z' with three finite numbers (32-bit floats)" +
@@ -300,12 +309,33 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
     }
     return;
   }
-  TextScanner probe(after_byte_order_mark(file.data(), file.end()), file.end());
+  // NUL bytes or a DOS end-of-file mark (^Z) after an ASCII STL: padding some programs write.
+  const char* text_end = file.end();
+  while (text_end != file.data() && (text_end[-1] == '\0' || text_end[-1] == '\x1a'))
+    --text_end;
+  TextScanner probe(after_byte_order_mark(file.data(), text_end), text_end);
   probe.skip_space_and_comments();
   // Binary data has NUL bytes (in its triangle count or coordinates) where ASCII STL has none: a
   // binary STL whose header begins with "solid" but whose size is wrong is named as binary.
-  const bool has_nul = std::memchr(file.data(), '\0', std::min<std::size_t>(size, 4096)) != nullptr;
+  const std::size_t text_size = static_cast<std::size_t>(text_end - file.data());
+  const bool has_nul =
+      std::memchr(file.data(), '\0', std::min<std::size_t>(text_size, 4096)) != nullptr;
   const bool solid = equals_ignoring_case(probe.word(), "solid");
+  // A header count of 0 with whole facets after it: written by a program that streams its
+  // facets and cannot go back to count them. Read as the facets the file holds, and named.
+  if (triangles == 0 && size > 84 && (size - 84) % 50 == 0 && (has_nul || !solid)) {
+    const auto facets = static_cast<std::uint32_t>((size - 84) / 50);
+    const BinaryFacetNotes notes = read_binary(file, facets, soup, info);
+    if (attributes != nullptr) {
+      attributes->not_kept.push_back(
+          {"binary STL header that counts 0 triangles (a streaming writer's) before " +
+               std::to_string(facets) + " whole facets, all read",
+           1, "file", true});
+      if (notes.normals_reversed > 0)
+        attributes->not_kept.push_back(reversed_normals(notes.normals_reversed));
+    }
+    return;
+  }
   if (has_nul || !solid) {
     throw ReadError(
         file.path() +
@@ -317,7 +347,8 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
                     : std::string("has at least 84 bytes")) +
         ", this file has " + std::to_string(size) + other_format_hint(file.view(), Format::stl));
   }
-  const AsciiNotes notes = read_ascii(file, soup, info);
+  const AsciiNotes notes = read_ascii(file, text_end, soup, info);
+  info.trailing_bytes = static_cast<std::size_t>(file.end() - text_end);
   if (attributes != nullptr && notes.named_solids > 0)
     attributes->not_kept.push_back({"ASCII STL solid names", notes.named_solids, "solid"});
   if (attributes != nullptr && notes.normals_reversed > 0)

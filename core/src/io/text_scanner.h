@@ -4,6 +4,7 @@
 
 #include "io/parse_numbers.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -137,6 +138,12 @@ class TextScanner {
   }
   //! Advances the cursor by `n` characters of the current line (caller checked they exist).
   void advance(std::size_t n) { p_ += n; }
+  //! Moves the cursor back to `p`, on the current line and not before the start (e.g. into a
+  //! word just read).
+  void back_to(const char* p) {
+    if (p >= first_ && p <= p_ && std::find(p, p_, '\n') == p_)
+      p_ = p;
+  }
 
   static bool is_blank_or_newline(char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
