@@ -156,7 +156,7 @@ int run_repair(RepairArguments& arguments) {
   }
   warn_about_reader(in, info);
   for (const std::string& what : written.left_out)
-    std::cerr << "meshbridge: warning: " << out << ": " << what << "\n";
+    std::cerr << "meshbridge: warning: " << in << ": output " << out << ": " << what << "\n";
 
   std::ostream& summary = report_to_stdout ? std::cerr : std::cout;
   summary << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
