@@ -252,10 +252,22 @@ TEST_F(ColourFidelity, obj_colours_written_0_to_255_are_read_as_such) {
   const auto& c = r.attributes.vertex_colors;
   ASSERT_EQ(c.size(), 4u);
   EXPECT_EQ(c[0], (Rgba{255, 128, 0, 255}));  // was clamped to yellow (255, 255, 0)
-  // One scale per file: in a file with a 0..255 colour, "1 1 1" is near black (it was white),
-  // and "0.5 0.25 1" rounds to 1 0 1.
-  EXPECT_EQ(c[1], (Rgba{1, 0, 1, 255}));
+  // In a file with a 0..255 colour, "1 1 1" is near black (it was white); "0.5 0.25 1" has
+  // fractions: 0..1 in any file.
+  EXPECT_EQ(c[1], (Rgba{128, 64, 255, 255}));
   EXPECT_EQ(c[3], (Rgba{1, 1, 1, 255}));
+  // A value above 1 with a fraction is a 0..1 colour out of range: clamped and counted, and the
+  // file's other colours keep their 0..1 scale.
+  const Reading over = read(write("over.obj",
+                                  "v 0 0 0 1.5 0 0\nv 1 0 0 0 1 0\nv 0 1 0\n"
+                                  "v 0 0 1 0.5 0.5 0.5\n" +
+                                      std::string(kTetrahedronFaces)));
+  EXPECT_EQ(over.attributes.vertex_colors[0], (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(over.attributes.vertex_colors[1], (Rgba{0, 255, 0, 255}));
+  EXPECT_EQ(over.attributes.vertex_colors[3], (Rgba{128, 128, 128, 255}));
+  ASSERT_EQ(over.attributes.not_kept.size(), 1u);
+  EXPECT_EQ(over.attributes.not_kept[0].count, 1u);
+  EXPECT_TRUE(over.attributes.not_kept[0].clamped);
   // A file of 0..1 colours only keeps the 0..1 scale.
   const Reading unit = read(write("unit.obj",
                                   "v 0 0 0 1 0.5 0\nv 1 0 0 0.5 0.25 1\nv 0 1 0\n"

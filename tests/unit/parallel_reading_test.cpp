@@ -399,7 +399,7 @@ TEST_F(ParallelReading, obj_errors_in_later_parts_are_named_as_by_one_thread) {
 }
 
 TEST_F(ParallelReading, obj_colour_scale_is_one_per_file_across_parts) {
-  // 0..1 colours in the first part, one 0..255 colour in the last: every part reads "1 1 1" as
+  // 0s and 1s in the first part, one 0..255 colour in the last: every part reads "1 1 1" as
   // near black, as one thread does.
   const std::string file = path("scale.obj");
   {
@@ -414,7 +414,7 @@ TEST_F(ParallelReading, obj_colour_scale_is_one_per_file_across_parts) {
   const auto& c = one.attributes.vertex_colors;
   ASSERT_EQ(c.size(), 100003u);
   EXPECT_EQ(c[0], (Rgba{1, 1, 1, 255}));
-  EXPECT_EQ(c[1], (Rgba{1, 1, 1, 255}));  // 0.5 as a byte of 0..255, rounded
+  EXPECT_EQ(c[1], (Rgba{128, 128, 128, 255}));  // a fraction: 0..1 in any file
   EXPECT_EQ(c[100001], (Rgba{1, 1, 1, 255}));
   EXPECT_EQ(c[100002], (Rgba{255, 128, 0, 255}));
   expect_same_for_every_thread_count(file);

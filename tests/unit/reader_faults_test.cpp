@@ -302,6 +302,15 @@ TEST_F(ReaderFaults, off_keyword_glued_to_its_counts_and_damaged_binary_off) {
   EXPECT_EQ(padded.trailing_bytes, 1u);
   const std::string cut = error_of("cut.off", "OFF BINARY\n" + body.substr(0, body.size() - 6));
   EXPECT_TRUE(contains(cut, "binary OFF face 2")) << cut;
+  // Cut inside the last face's colour count: named, never read past the end (a fuzz finding).
+  const std::string in_count =
+      error_of("in_count.off", "OFF BINARY\n" + body.substr(0, body.size() - 2));
+  EXPECT_TRUE(contains(in_count, "binary OFF ends in face 2, before its colour count")) << in_count;
+  std::string many = body;
+  many.replace(many.size() - 4, 4, big(1000));
+  EXPECT_TRUE(contains(error_of("many.off", "OFF BINARY\n" + many + std::string(8, '\0')),
+                       "binary OFF face 2 claims 1000 colour values, more than the rest of the "
+                       "file holds"));
 }
 
 TEST_F(ReaderFaults, obj_corner_and_keyword_messages) {

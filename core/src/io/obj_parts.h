@@ -36,18 +36,19 @@ struct AttributeIndices {
   std::int64_t highest_element_vertex = 0;
 };
 
-//! The scale of OBJ vertex colours, decided per file: 0..1, unless some colour of the file has
-//! a value above 1 (then 0..255, as some exporters write them). A reader notes what it met;
+//! The scale of OBJ vertex colours written as whole numbers: a colour of whole numbers with one
+//! above 1 is 0..255 (as some exporters write them), and in a file with such a colour, colours
+//! of 0s and 1s are 0..255 too ("1 1 1" is near black, not white). A reader notes what it met;
 //! rescale_unit_colours() applies the file's scale at the end.
 struct ColourScale {
-  bool bytes = false;  //!< some colour had a value above 1
-  //! The vertices (0-based, in the reader's soup) whose colour was read as 0..1, and whether it
-  //! gave alpha.
+  bool bytes = false;  //!< some colour was whole numbers with one above 1
+  //! The vertices (0-based, in the reader's soup) whose colour is 0s and 1s, read as 0..1, and
+  //! whether it gave alpha.
   std::vector<std::pair<Index, bool>> unit;
 };
 
-//! In a file with some 0..255 colour (`scale.bytes`), reads the colours first read as 0..1 as
-//! 0..255 too: a channel of "1" is 1, not 255. Nothing otherwise.
+//! In a file with some 0..255 colour (`scale.bytes`), reads the colours of 0s and 1s as 0..255
+//! too: a channel of "1" is 1, not 255. Nothing otherwise.
 void rescale_unit_colours(const ColourScale& scale, MeshAttributes& attributes);
 
 //! How many `v` and `f` records, and face corners at most, a range of an OBJ file holds.

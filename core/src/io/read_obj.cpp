@@ -151,15 +151,19 @@ class ObjReader {
     soup_.positions.push_back(Point(values[0], values[1], values[2]));
     if (attributes_ == nullptr)
       return;
-    // x y z r g b [a]: colours as floats in [0, 1], or 0..255 in a file where some value is
-    // above 1 (as some exporters write them: decided per file, see ColourScale); a vertex
-    // without one has none.
+    // x y z r g b [a]: colours as floats in [0, 1], or 0..255 where they are whole numbers
+    // and some is above 1 (as some exporters write them); in a file with such a colour, whole
+    // numbers of 0 and 1 ("1 1 1") are 0..255 too (see ColourScale). A value with a fraction
+    // is 0..1: "1.5" is clamped (and counted), never read as a byte. A vertex without a colour
+    // has none.
     Rgba color;
     if (n >= 6) {
-      const bool bytes = *std::max_element(values + 3, values + n) > 1;
+      const bool whole =
+          std::all_of(values + 3, values + n, [](double v) { return v == std::floor(v); });
+      const bool bytes = whole && *std::max_element(values + 3, values + n) > 1;
       if (bytes)
         colour_scale_.bytes = true;
-      else
+      else if (whole)  // 0s and 1s: the file's scale decides
         colour_scale_.unit.emplace_back(static_cast<Index>(soup_.num_vertices() - 1), n == 7);
       const double top = bytes ? 255 : 1;
       colours_clamped_ +=

@@ -166,8 +166,16 @@ class OffBinaryReader {
         corners.push_back(static_cast<Index>(index));
       }
       add_off_face(corners, soup_, info_);
-      if (layout.color_counts) {  // checked by fits(): a count of at most 4, then the floats
+      if (layout.color_counts) {  // a count, then that many floats (checked: the layout may
+                                  // be read without fitting, see plausible())
+        if (left() < 4)
+          fail("binary OFF ends in face " + std::to_string(f + 1) + ", before its colour count");
         const std::uint32_t colour_values = word();
+        if (4 * std::uint64_t(colour_values) > left()) {
+          fail("binary OFF face " + std::to_string(f + 1) + " claims " +
+               std::to_string(colour_values) + " colour values, more than the rest of the file " +
+               "holds");
+        }
         notes_.face_colours += colour_values > 0 ? 1 : 0;
         p += 4 * std::uint64_t(colour_values);
       }
