@@ -55,33 +55,58 @@ fs::path normalised(const fs::path& path) {
   return error ? fs::absolute(path).lexically_normal() : result;
 }
 
+//! `path` below `root` as batch names it: by the names in the folder, not by where a symbolic
+//! link leads ('/'-separated).
+std::string name_below(const fs::path& path, const fs::path& root) {
+  return path.lexically_relative(root).generic_string();
+}
+
 //! Depth-first walk that notes every folder it cannot list instead of stopping there. Folder
-//! symlinks are not followed (no cycles); file symlinks are.
+//! symlinks are not followed (no cycles) and are noted; file symlinks are read, under the link's
+//! own name. An entry with a mesh extension that is no readable regular file (a link to nothing,
+//! a link loop, a FIFO or device) is noted too, never passed over.
 void walk(const fs::path& root, const fs::path& dir, const fs::path& leave_out,
           std::vector<fs::path>& files, std::vector<BatchPlan::Unreadable>& unreadable) {
   std::error_code error;
   fs::directory_iterator it(dir, error);
   if (error) {
-    unreadable.push_back({fs::relative(dir, root).generic_string(),
-                          "cannot list the folder (" + error.message() + ")"});
+    unreadable.push_back(
+        {name_below(dir, root), "cannot list the folder (" + error.message() + ")"});
     return;
   }
   for (; it != fs::directory_iterator(); it.increment(error)) {
     if (error)
       break;
     const fs::directory_entry& entry = *it;
-    std::error_code status_error;
-    if (entry.is_symlink(status_error) == false && entry.is_directory(status_error)) {
+    std::error_code link_error, status_error;
+    const bool link = entry.is_symlink(link_error);
+    const fs::file_status target = fs::status(entry.path(), status_error);
+    if (!link && fs::is_directory(target)) {
       if (leave_out.empty() || normalised(entry.path()) != leave_out)
         walk(root, entry.path(), leave_out, files, unreadable);
-    } else if (entry.is_regular_file(status_error) &&
-               is_supported_mesh_file(entry.path().string())) {
-      files.push_back(entry.path());
+    } else if (link && fs::is_directory(target)) {
+      unreadable.push_back({name_below(entry.path(), root),
+                            "a symbolic link to a folder, not followed (batch walks the folder "
+                            "itself, so that no folder is read twice or in a loop)"});
+    } else if (is_supported_mesh_file(entry.path().string())) {
+      if (fs::is_regular_file(target)) {
+        files.push_back(entry.path());
+      } else if (link && target.type() == fs::file_type::not_found) {
+        unreadable.push_back({name_below(entry.path(), root),
+                              "a symbolic link to nothing: its target does not exist"});
+      } else if (status_error) {
+        unreadable.push_back({name_below(entry.path(), root),
+                              (link ? "cannot follow the symbolic link (" : "cannot read it (") +
+                                  status_error.message() + ")"});
+      } else {
+        unreadable.push_back({name_below(entry.path(), root),
+                              "not a regular file (a FIFO, socket or device): not read"});
+      }
     }
   }
   if (error) {
-    unreadable.push_back({fs::relative(dir, root).generic_string(),
-                          "cannot list the whole folder (" + error.message() + ")"});
+    unreadable.push_back(
+        {name_below(dir, root), "cannot list the whole folder (" + error.message() + ")"});
   }
 }
 
@@ -127,7 +152,7 @@ BatchPlan plan_batch(const std::string& in_dir, const std::string& out_dir,
   walk(in_dir, in_dir, out_inside ? out_abs : fs::path(), files, plan.unreadable);
   std::vector<std::pair<std::string, fs::path>> named;
   for (const fs::path& file : files) {
-    const std::string name = fs::relative(file, in_dir).generic_string();
+    const std::string name = name_below(file, in_dir);
     if (::access(file.c_str(), R_OK) != 0) {
       plan.unreadable.push_back(
           {name, "cannot open the file (" + std::string(std::strerror(errno)) + ")"});

@@ -545,6 +545,33 @@ batch_safety)
     echo "note: $mb is not executable by user nobody; unreadable-folder check left out" >&2
   fi
   chmod 755 "$work/in/locked" && chmod 644 "$work/in/secret.obj"
+  # Symbolic links: a linked file is read and written under the link's own name below OUTDIR
+  # (never where the link points: that file stays as it was); a link to nothing, a link loop, a
+  # link to a folder and a FIFO with a mesh name are skipped with their reason.
+  mkdir -p "$work/links/in" "$work/links/elsewhere"
+  cp "$models/twocubes.obj" "$work/links/elsewhere/original.obj"
+  cp "$models/bowtie.obj" "$work/links/in/a.obj"
+  ln -s ../elsewhere/original.obj "$work/links/in/outside.obj"
+  ln -s a.obj "$work/links/in/alias.obj"
+  ln -s nowhere.obj "$work/links/in/dangling.obj"
+  ln -s ../elsewhere "$work/links/in/folder_link"
+  ln -s loop.off "$work/links/in/loop.off"
+  mkfifo "$work/links/in/pipe.stl"
+  expect_exit 2 "$mb" batch "$work/links/in" "$work/links/out" --json
+  cmp -s "$work/links/elsewhere/original.obj" "$models/twocubes.obj" || fail "batch wrote through a link"
+  for name in a.obj alias.obj outside.obj; do
+    [ -f "$work/links/out/$name" ] || fail "no output $name: $(ls "$work/links/out")"
+  done
+  [ "$(json_lines "$work/out")" = 7 ] || fail "7 records: $(cat "$work/out")"
+  grep -F '"file":"outside.obj"' "$work/out" | grep -qF '"status":"repaired"' || fail "outside.obj record"
+  expect_in "$work/err" "skipped dangling.obj in $work/links/in: a symbolic link to nothing"
+  expect_in "$work/err" "skipped folder_link in $work/links/in: a symbolic link to a folder, not followed"
+  expect_in "$work/err" "skipped loop.off in $work/links/in: cannot follow the symbolic link"
+  expect_in "$work/err" "skipped pipe.stl in $work/links/in: not a regular file (a FIFO, socket or device)"
+  expect_in "$work/err" "7 file(s): 0 clean, 3 repaired, 0 failed, 4 skipped"
+  # check on a FIFO is an error at once, not a wait for a writer.
+  expect_exit 2 timeout 20 "$mb" check "$work/links/in/pipe.stl"
+  expect_in "$work/err" "not a regular file (a FIFO, socket or device cannot be mapped)"
   ;;
 json_paths)
   # Quotes, backslashes, a tab and Latin-1 (non-UTF-8) bytes in file and folder names.

@@ -13,7 +13,9 @@
 namespace meshbridge::detail {
 
 MappedFile::MappedFile(const std::string& path) : path_(path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // O_NONBLOCK: opening a FIFO with no writer returns at once (and is refused below) instead
+  // of waiting forever; it changes nothing for a regular file.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0)
     throw ReadError(path + ": cannot open (" + std::strerror(errno) + ")");
   struct stat status {};
@@ -28,7 +30,7 @@ MappedFile::MappedFile(const std::string& path) : path_(path) {
   }
   if (!S_ISREG(status.st_mode)) {
     ::close(fd);
-    throw ReadError(path + ": not a regular file (a pipe or device cannot be mapped)");
+    throw ReadError(path + ": not a regular file (a FIFO, socket or device cannot be mapped)");
   }
   if (status.st_size == 0) {
     ::close(fd);
