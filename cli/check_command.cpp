@@ -58,8 +58,12 @@ int run_check(const CheckArguments& arguments) {
     std::cout << check_report_json(path, report, &info, json) << "\n";
   } else {
     std::cout << path << "\n"
-              << "  read: " << describe_reading(info) << "\n"
-              << to_text(report) << gaps_line(gaps, true) << weld_hint;
+              << "  read: " << describe_reading(info) << "\n";
+    if (!attributes.length_unit.empty() && attributes.length_unit != "millimeter") {
+      std::cout << "  unit: " << attributes.length_unit
+                << " (the 3MF model's; coordinates as written, in that unit)\n";
+    }
+    std::cout << to_text(report) << gaps_line(gaps, true) << weld_hint;
     if (report.has_defects())
       std::cout << "(`meshbridge explain` tells what these terms mean)\n";
   }

@@ -6,7 +6,9 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -122,6 +124,14 @@ int main(int argc, char** argv) {
   }
   try {
     app.parse(argc, argv);
+    // A report or table that could not reach standard output (a full disk, a closed pipe) is
+    // lost: that is an error, as for a --report file that cannot be written.
+    std::cout.flush();
+    if (!std::cout) {
+      std::cerr << command_name(app) << ": error: cannot write to standard output ("
+                << std::strerror(errno != 0 ? errno : EIO) << ")\n";
+      return kError;
+    }
     return exit_code;
   } catch (const CLI::CallForHelp& help) {
     return app.exit(help);

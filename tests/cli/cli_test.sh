@@ -569,6 +569,12 @@ batch_safety)
   expect_in "$work/err" "skipped loop.off in $work/links/in: cannot follow the symbolic link"
   expect_in "$work/err" "skipped pipe.stl in $work/links/in: not a regular file (a FIFO, socket or device)"
   expect_in "$work/err" "7 file(s): 0 clean, 3 repaired, 0 failed, 4 skipped"
+  # A report that cannot reach standard output is an error, not a silent success.
+  if [ -w /dev/full ]; then
+    "$mb" check "$models/icosphere.obj" --json >/dev/full 2>"$work/err"
+    [ $? = 2 ] || fail "check --json > /dev/full did not fail"
+    expect_in "$work/err" "meshbridge check: error: cannot write to standard output"
+  fi
   # check on a FIFO is an error at once, not a wait for a writer.
   expect_exit 2 timeout 20 "$mb" check "$work/links/in/pipe.stl"
   expect_in "$work/err" "not a regular file (a FIFO, socket or device cannot be mapped)"

@@ -105,6 +105,53 @@ TEST(Format3mfFidelity, triangle_colours_and_object_names_are_named_as_read_past
   EXPECT_TRUE(any_holds(left_out, "3MF object names, on 1 object: not written"));
 }
 
+// A tetrahedron in the build, a support tetrahedron in the build, and one in no build item.
+void write_support_and_unplaced(const std::string& path) {
+  NMR::PLib3MFModel* model = nullptr;
+  ASSERT_EQ(NMR::lib3mf_createmodel(&model), LIB3MF_OK);
+  std::vector<NMR::PLib3MFBase*> made;
+  NMR::MODELMESHVERTEX vertices[4] = {{{0, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}}, {{0, 0, 1}}};
+  NMR::MODELMESHTRIANGLE triangles[4] = {{{0, 2, 1}}, {{0, 1, 3}}, {{1, 2, 3}}, {{0, 3, 2}}};
+  for (const char* kind : {"model", "support", "unplaced"}) {
+    NMR::PLib3MFModelMeshObject* object = nullptr;
+    ASSERT_EQ(NMR::lib3mf_model_addmeshobject(model, &object), LIB3MF_OK);
+    ASSERT_EQ(NMR::lib3mf_meshobject_setgeometry(object, vertices, 4, triangles, 4), LIB3MF_OK);
+    made.push_back(object);
+    if (std::string(kind) == "support")
+      ASSERT_EQ(NMR::lib3mf_object_settype(object, NMR::MODELOBJECTTYPE_SUPPORT), LIB3MF_OK);
+    if (std::string(kind) != "unplaced") {
+      NMR::PLib3MFModelBuildItem* item = nullptr;
+      ASSERT_EQ(NMR::lib3mf_model_addbuilditem(model, object, nullptr, &item), LIB3MF_OK);
+      made.push_back(item);
+    }
+  }
+  NMR::PLib3MFModelWriter* writer = nullptr;
+  ASSERT_EQ(NMR::lib3mf_model_querywriter(model, "3mf", &writer), LIB3MF_OK);
+  ASSERT_EQ(NMR::lib3mf_writer_writetofileutf8(writer, path.c_str()), LIB3MF_OK);
+  made.push_back(writer);
+  made.push_back(model);
+  for (NMR::PLib3MFBase* p : made)
+    NMR::lib3mf_release(p);
+}
+
+TEST(Format3mfFidelity, objects_a_slicer_would_not_print_as_the_model_are_named) {
+  const std::string path = scratch("support.3mf");
+  write_support_and_unplaced(path);
+  MeshAttributes attributes;
+  const Soup soup = read_soup(path, nullptr, &attributes);
+  std::remove(path.c_str());
+  EXPECT_EQ(soup.num_faces(), 12u);  // nothing dropped
+  const std::vector<std::string> held = describe_not_held(attributes);
+  EXPECT_TRUE(any_holds(held,
+                        "3MF mesh objects in no build item (a slicer does not print them), "
+                        "read as stored, after the build, on 1 object"));
+  EXPECT_TRUE(any_holds(held,
+                        "3MF object types other than 'model' (support, solidsupport, "
+                        "surface, other), read as model shells, on 1 object"));
+  for (const NotKept& n : attributes.not_kept)
+    EXPECT_TRUE(n.fault) << n.what;  // check warns about both
+}
+
 TEST(Format3mfFidelity, what_lib3mf_writes_of_the_positions_is_measured_from_the_file) {
   // A tetrahedron 2 mm across with one corner 0.0000004 mm from another: lib3mf writes at most
   // 6 decimals, so the two land on one point and two triangles lose their area.

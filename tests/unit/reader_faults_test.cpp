@@ -243,6 +243,21 @@ TEST_F(ReaderFaults, stl_padding_a_streamed_count_and_a_fourth_number) {
   EXPECT_TRUE(attributes.not_kept[0].fault);
   // A header that counts 0 before a stray byte is still an error.
   EXPECT_TRUE(contains(error_of("stray.stl", binary + "x"), "a binary STL whose header counts 0"));
+  // A count of 1 before 2 whole facets: both read, named; a count of 3 with 2 whole facets and a
+  // part of the third: a truncated file, said so.
+  std::string one = binary;
+  one[80] = 1;
+  attributes = MeshAttributes();
+  EXPECT_EQ(read_soup(write("one.stl", one), nullptr, &attributes).num_faces(), 2u);
+  ASSERT_EQ(attributes.not_kept.size(), 1u);
+  EXPECT_TRUE(contains(attributes.not_kept[0].what,
+                       "binary STL header that counts 1 triangles before 2 whole facets, all "
+                       "read"));
+  std::string three = binary + std::string(20, '\0');
+  three[80] = 3;
+  EXPECT_TRUE(contains(error_of("three.stl", three),
+                       "a binary STL whose header counts 3 triangles has 234 bytes, this file has "
+                       "204 (2 whole facets: a truncated file?)"));
   // Four numbers after 'vertex'.
   std::string four = kAsciiTriangle;
   four.replace(four.find("vertex 1 0 0"), 12, "vertex 1 0 0 7");

@@ -75,6 +75,8 @@ class Reader {
   struct Properties {
     std::size_t triangles = 0;  //!< triangles with a colour, material or texture coordinate
     std::size_t names = 0;      //!< mesh objects with a name
+    std::size_t unplaced = 0;   //!< mesh objects in no build item, read as stored
+    std::size_t not_model = 0;  //!< mesh objects of another type than "model" (support...)
   };
   const Properties& properties() const { return properties_; }
 
@@ -115,24 +117,29 @@ class Reader {
 
   // Counts the triangles of `object` that carry a property (a colour of an m:colorgroup, a base
   // material, texture coordinates; the object's own pid gives one to every triangle without
-  // one), and whether the object has a name: read past, so named (NotKept).
+  // one), whether the object has a name, and whether it is of another type than "model": read
+  // past, so named (NotKept).
   void count_properties(NMR::PLib3MFModelObjectResource* object, DWORD triangle_count) {
     ULONG name_length = 0;
     if (NMR::lib3mf_object_getnameutf8(object, nullptr, 0, &name_length) == LIB3MF_OK)
       properties_.names += name_length > 0;
+    DWORD type = NMR::MODELOBJECTTYPE_MODEL;
+    if (NMR::lib3mf_object_gettype(object, &type) == LIB3MF_OK)
+      properties_.not_model += type != NMR::MODELOBJECTTYPE_MODEL;
     Released defaults, handler;
-    NMR::eModelPropertyType type = NMR::MODELPROPERTYTYPE_NONE;
+    NMR::eModelPropertyType property = NMR::MODELPROPERTYTYPE_NONE;
     bool object_default = false;
     if (NMR::lib3mf_object_createdefaultpropertyhandler(object, &defaults.instance) == LIB3MF_OK &&
-        NMR::lib3mf_defaultpropertyhandler_getpropertytype(defaults.instance, &type) == LIB3MF_OK) {
-      object_default = type != NMR::MODELPROPERTYTYPE_NONE;
+        NMR::lib3mf_defaultpropertyhandler_getpropertytype(defaults.instance, &property) ==
+            LIB3MF_OK) {
+      object_default = property != NMR::MODELPROPERTYTYPE_NONE;
     }
     if (NMR::lib3mf_meshobject_createpropertyhandler(object, &handler.instance) != LIB3MF_OK)
       return;
     for (DWORD t = 0; t < triangle_count; ++t) {
-      type = NMR::MODELPROPERTYTYPE_NONE;
-      NMR::lib3mf_propertyhandler_getpropertytype(handler.instance, t, &type);
-      properties_.triangles += object_default || type != NMR::MODELPROPERTYTYPE_NONE;
+      property = NMR::MODELPROPERTYTYPE_NONE;
+      NMR::lib3mf_propertyhandler_getpropertytype(handler.instance, t, &property);
+      properties_.triangles += object_default || property != NMR::MODELPROPERTYTYPE_NONE;
     }
   }
 
@@ -205,8 +212,10 @@ class Reader {
              [&](NMR::PLib3MFBase* object) {
                DWORD id = 0;
                check(NMR::lib3mf_resource_getresourceid(object, &id), path_, "get an object's id");
-               if (placed_.count(id) == 0)
+               if (placed_.count(id) == 0) {
                  add_mesh(object, kIdentity, false);
+                 ++properties_.unplaced;
+               }
              });
   }
 
@@ -314,6 +323,19 @@ void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   }
   if (read.properties().names > 0)
     attributes->not_kept.push_back({"3MF object names", read.properties().names, "object"});
+  // What a slicer would not print as part of the model: named, so that it is not taken for it.
+  if (read.properties().unplaced > 0) {
+    attributes->not_kept.push_back(
+        {"3MF mesh objects in no build item (a slicer does not print them), read as stored, "
+         "after the build",
+         read.properties().unplaced, "object", true});
+  }
+  if (read.properties().not_model > 0) {
+    attributes->not_kept.push_back(
+        {"3MF object types other than 'model' (support, solidsupport, surface, other), read as "
+         "model shells",
+         read.properties().not_model, "object", true});
+  }
 }
 
 }  // namespace meshbridge::detail

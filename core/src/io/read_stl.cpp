@@ -321,15 +321,18 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   const bool has_nul =
       std::memchr(file.data(), '\0', std::min<std::size_t>(text_size, 4096)) != nullptr;
   const bool solid = equals_ignoring_case(probe.word(), "solid");
-  // A header count of 0 with whole facets after it: written by a program that streams its
-  // facets and cannot go back to count them. Read as the facets the file holds, and named.
-  if (triangles == 0 && size > 84 && (size - 84) % 50 == 0 && (has_nul || !solid)) {
+  // A header count other than the whole facets after it (0: written by a program that streams
+  // its facets and cannot go back to count them): the facets the file holds are read, as
+  // admesh and slicers read them, and the count is named.
+  if (size > 84 && (size - 84) % 50 == 0 && (size - 84) / 50 <= 0xffffffffu &&
+      (has_nul || !solid)) {
     const auto facets = static_cast<std::uint32_t>((size - 84) / 50);
     const BinaryFacetNotes notes = read_binary(file, facets, soup, info);
     if (attributes != nullptr) {
       attributes->not_kept.push_back(
-          {"binary STL header that counts 0 triangles (a streaming writer's) before " +
-               std::to_string(facets) + " whole facets, all read",
+          {"binary STL header that counts " + std::to_string(triangles) + " triangles" +
+               (triangles == 0 ? std::string(" (a streaming writer's)") : std::string()) +
+               " before " + std::to_string(facets) + " whole facets, all read",
            1, "file", true});
       if (notes.normals_reversed > 0)
         attributes->not_kept.push_back(reversed_normals(notes.normals_reversed));
@@ -337,6 +340,8 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
     return;
   }
   if (has_nul || !solid) {
+    const std::uint64_t whole = size >= 84 ? (size - 84) / 50 : 0;
+    const bool cut = size >= 84 && size < 84 + 50 * std::uint64_t(triangles);
     throw ReadError(
         file.path() +
         (solid ? ": binary data after a header that begins with 'solid', but not a "
@@ -345,7 +350,9 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
         (size >= 84 ? "whose header counts " + std::to_string(triangles) + " triangles has " +
                           std::to_string(84 + 50 * std::uint64_t(triangles)) + " bytes"
                     : std::string("has at least 84 bytes")) +
-        ", this file has " + std::to_string(size) + other_format_hint(file.view(), Format::stl));
+        ", this file has " + std::to_string(size) +
+        (cut ? " (" + std::to_string(whole) + " whole facets: a truncated file?)" : std::string()) +
+        other_format_hint(file.view(), Format::stl));
   }
   const AsciiNotes notes = read_ascii(file, text_end, soup, info);
   info.trailing_bytes = static_cast<std::size_t>(file.end() - text_end);
