@@ -77,6 +77,17 @@ bool threads_variable_is_valid() {
   return end != text && *end == '\0' && value >= 1;
 }
 
+//! MESHBRIDGE_PROGRESS_DELAY, if set, is seconds before the progress line shows (see
+//! progress_delay()): a number from 0 to below 1e6.
+bool progress_delay_variable_is_valid() {
+  const char* text = std::getenv("MESHBRIDGE_PROGRESS_DELAY");
+  if (text == nullptr || *text == '\0')
+    return true;
+  char* end = nullptr;
+  const double seconds = std::strtod(text, &end);
+  return end != text && *end == '\0' && seconds >= 0 && seconds < 1e6;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -108,6 +119,12 @@ int main(int argc, char** argv) {
   if (!threads_variable_is_valid()) {
     std::cerr << "meshbridge: error: MESHBRIDGE_THREADS=" << std::getenv("MESHBRIDGE_THREADS")
               << ": expected a whole number >= 1 or 'auto'\n";
+    return kError;
+  }
+  if (!progress_delay_variable_is_valid()) {
+    std::cerr << "meshbridge: error: MESHBRIDGE_PROGRESS_DELAY="
+              << std::getenv("MESHBRIDGE_PROGRESS_DELAY")
+              << ": expected seconds, a number from 0 to below 1000000\n";
     return kError;
   }
   if (argv[1][0] != '-') {

@@ -74,7 +74,7 @@ CloseGapsOptions parse_weld(const std::string& text) {
 std::string gaps_line(const CloseGapsReport& g, bool would) {
   std::ostringstream out;
   if (!(g.tolerance > 0)) {
-    out << "gaps: not closed (--weld 0)\n";
+    out << "gaps: not closed (weld tolerance 0: --weld 0, or every coordinate is 0)\n";
     return out.str();
   }
   out << "gaps (weld tolerance " << g.tolerance << "): " << (would ? "would weld " : "welded ")

@@ -93,6 +93,9 @@ check_exit_codes)
   MESHBRIDGE_THREADS=abc expect_exit 2 "$mb" check "$models/icosphere.obj"
   expect_in "$work/err" "meshbridge: error: MESHBRIDGE_THREADS=abc: expected a whole number >= 1 or 'auto'"
   MESHBRIDGE_THREADS=2 expect_exit 0 "$mb" check "$models/icosphere.obj"
+  MESHBRIDGE_PROGRESS_DELAY=x expect_exit 2 "$mb" check "$models/icosphere.obj"
+  expect_in "$work/err" "meshbridge: error: MESHBRIDGE_PROGRESS_DELAY=x: expected seconds"
+  MESHBRIDGE_PROGRESS_DELAY=0.5 expect_exit 0 "$mb" check "$models/icosphere.obj"
   # An STL facet with one point three times is set aside; the point stays as an isolated vertex
   # of an indexed output, which is listed, not a defect: check of the repaired file exits 0.
   {
@@ -313,7 +316,7 @@ stl_warning)
   expect_exit 0 "$mb" check "$work/b3/twocubes.3mf"
   expect_in "$work/out" "watertight yes"
   expect_exit 0 "$mb" check "$work/b3/twocubes.3mf" --weld 0
-  expect_in "$work/out" "gaps: not closed (--weld 0)"
+  expect_in "$work/out" "gaps: not closed (weld tolerance 0: --weld 0, or every coordinate is 0)"
   expect_exit 2 "$mb" check "$work/b3/twocubes.3mf" --weld -1
   expect_in "$work/err" "--weld: expects auto or a finite number >= 0, got '-1'"
   ;;
