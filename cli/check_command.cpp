@@ -44,18 +44,17 @@ int run_check(const CheckArguments& arguments) {
     progress.stage(Stage::detect, 0);
     report = detect_defects(soup);
     count_records_without_corners(info, report);  // face records with no corner: set aside too
-    if (!arguments
-             .json) {  // what repair's gap closing would do (the report is of the file as read)
-      gaps = preview_close_gaps(soup, weld, &report);
+    // What repair's gap closing would do (the report is of the file as read).
+    gaps = preview_close_gaps(soup, weld, &report);
+    if (!arguments.json)
       weld_hint = wider_weld_hint(soup, weld, gaps, report);
-    }
   }
   warn_about_reader(path, info);
   warn_about_file_faults(path, attributes);
   if (arguments.json) {
     ReportJsonOptions json;
     json.elements = arguments.elements;
-    std::cout << check_report_json(path, report, &info, json) << "\n";
+    std::cout << check_report_json(path, report, &info, json, &gaps) << "\n";
   } else {
     std::cout << path << "\n"
               << "  read: " << describe_reading(info) << "\n";

@@ -156,11 +156,14 @@ Json figures(const BuildFigures& f) {
 }  // namespace
 
 std::string check_report_json(const std::string& file, const DefectReport& report,
-                              const ReadInfo* read, const ReportJsonOptions& options) {
+                              const ReadInfo* read, const ReportJsonOptions& options,
+                              const CloseGapsReport* gaps) {
   Json out = header("check", file);
   if (read)
     out["read"] = read_json(*read);
   add_defects(out, report, options.elements);
+  if (gaps)
+    out["gaps"] = gaps_json(*gaps);
   return dump(out, options.indent);
 }
 

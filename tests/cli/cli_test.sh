@@ -572,6 +572,9 @@ batch_safety)
   expect_in "$work/err" "skipped loop.off in $work/links/in: cannot follow the symbolic link"
   expect_in "$work/err" "skipped pipe.stl in $work/links/in: not a regular file (a FIFO, socket or device)"
   expect_in "$work/err" "7 file(s): 0 clean, 3 repaired, 0 failed, 4 skipped"
+  # check --json carries what repair's gap closing would do, as the text does.
+  expect_exit 0 "$mb" check "$models/icosphere.obj" --json
+  [ "$(json_field "$work/out" gaps.vertices_welded)" = 0 ] || fail "check --json gaps: $(cat "$work/out")"
   # A report that cannot reach standard output is an error, not a silent success.
   if [ -w /dev/full ]; then
     "$mb" check "$models/icosphere.obj" --json >/dev/full 2>"$work/err"

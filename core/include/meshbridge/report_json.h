@@ -36,12 +36,13 @@ struct ReportJsonOptions {
   int indent = -1;
 };
 
-//! `{"schema_version":1,"kind":"check","file":...,"read":{...},<counts>[,"elements":{...}]}`.
-//! `file` is written as given. `read` (the read accounting of ReadInfo) is left out when
-//! `read` is null.
+//! `{"schema_version":1,"kind":"check","file":...,"read":{...},<counts>[,"gaps":{...}]
+//! [,"elements":{...}]}`. `file` is written as given. `read` (the read accounting of ReadInfo)
+//! is left out when `read` is null; `gaps` (what repair's gap closing would do, the keys of a
+//! repair report's `gaps`) when `gaps` is null.
 std::string check_report_json(const std::string& file, const DefectReport& report,
-                              const ReadInfo* read = nullptr,
-                              const ReportJsonOptions& options = {});
+                              const ReadInfo* read = nullptr, const ReportJsonOptions& options = {},
+                              const CloseGapsReport* gaps = nullptr);
 
 //! `{"schema_version":1,"kind":"check","file":...,"status":"failed","reason":...}`: what
 //! `check --json` prints instead of the report when FILE cannot be checked (`reason`: the error
