@@ -2,6 +2,7 @@
 // 3MF reading through lib3mf 1.8's v1 C API: what a slicer prints, the build items with their
 // transforms (3MF Core Specification 1.2, section 3.4: build; 4.1: components).
 #include "io/formats.h"
+#include "io/units_3mf.h"
 
 #include "meshbridge/errors.h"
 
@@ -259,26 +260,6 @@ class Reader {
   Properties properties_;
 };
 
-//! The name the 3MF specification gives the unit lib3mf reports (eModelUnit).
-const char* unit_name(DWORD unit) {
-  switch (unit) {
-    case NMR::MODELUNIT_MICROMETER:
-      return "micron";
-    case NMR::MODELUNIT_MILLIMETER:
-      return "millimeter";
-    case NMR::MODELUNIT_CENTIMETER:
-      return "centimeter";
-    case NMR::MODELUNIT_INCH:
-      return "inch";
-    case NMR::MODELUNIT_FOOT:
-      return "foot";
-    case NMR::MODELUNIT_METER:
-      return "meter";
-    default:
-      return "millimeter";
-  }
-}
-
 }  // namespace
 
 void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
@@ -314,7 +295,7 @@ void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
     return;
   DWORD unit = NMR::MODELUNIT_MILLIMETER;
   check(NMR::lib3mf_model_getunit(model.instance, &unit), path, "get the model's unit");
-  attributes->length_unit = unit_name(unit);
+  attributes->length_unit = unit_name_3mf(unit);
   if (read.properties().triangles > 0) {
     attributes->not_kept.push_back(
         {"3MF triangle colours, materials or texture coordinates (m:colorgroup, basematerials, "

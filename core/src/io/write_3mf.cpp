@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/formats.h"
 #include "io/triangulate.h"
+#include "io/units_3mf.h"
 
 #include "meshbridge/errors.h"
 
@@ -26,21 +27,6 @@ struct Released {
 void check(HRESULT result, const std::string& path, const char* what) {
   if (result != LIB3MF_OK)
     throw WriteError(path + ": lib3mf cannot " + what + " (error " + std::to_string(result) + ")");
-}
-
-//! The eModelUnit of a 3MF unit name (MeshAttributes::length_unit); millimetres for the rest.
-DWORD unit_of(const std::string& name) {
-  if (name == "micron")
-    return NMR::MODELUNIT_MICROMETER;
-  if (name == "centimeter")
-    return NMR::MODELUNIT_CENTIMETER;
-  if (name == "inch")
-    return NMR::MODELUNIT_INCH;
-  if (name == "foot")
-    return NMR::MODELUNIT_FOOT;
-  if (name == "meter")
-    return NMR::MODELUNIT_METER;
-  return NMR::MODELUNIT_MILLIMETER;
 }
 
 }  // namespace
@@ -82,7 +68,7 @@ void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
   check(NMR::lib3mf_createmodel(&model.instance), path, "create a model");
   // The input's unit (a 3MF read in inches stays in inches); millimetres otherwise.
   check(NMR::lib3mf_model_setunit(model.instance,
-                                  unit_of(attributes != nullptr ? attributes->length_unit : "")),
+                                  unit_3mf(attributes != nullptr ? attributes->length_unit : "")),
         path, "set the model's unit");
   check(NMR::lib3mf_model_addmeshobject(model.instance, &object.instance), path,
         "add a mesh object");
