@@ -68,10 +68,10 @@ void read_vertices(py::handle vertices, Soup& soup) {
     read_positions<double>(array, soup);
 }
 
-[[noreturn]] void index_error(std::size_t face, std::size_t corner, long long value,
+[[noreturn]] void index_error(std::size_t face, std::size_t corner, const std::string& value,
                               const char* what) {
   throw InvalidSoupError("face " + std::to_string(face) + ", corner " + std::to_string(corner) +
-                         ": vertex index " + std::to_string(value) + " " + what);
+                         ": vertex index " + value + " " + what);
 }
 
 //! Checks one index from Python and narrows it to the core's 32 bits.
@@ -79,10 +79,10 @@ template <class T>
 Index checked_index(T value, std::size_t face, std::size_t corner) {
   if constexpr (std::is_signed_v<T>) {
     if (value < 0)
-      index_error(face, corner, static_cast<long long>(value), "is negative");
+      index_error(face, corner, std::to_string(value), "is negative");
   }
   if (static_cast<unsigned long long>(value) >= kNoIndex) {
-    index_error(face, corner, static_cast<long long>(value),
+    index_error(face, corner, std::to_string(value),  // in its own type: 2^63 stays positive
                 "is out of range (MeshBridge indices are below 2^32 - 1)");
   }
   return static_cast<Index>(value);
@@ -158,9 +158,10 @@ void read_face_sequences(py::handle faces, Soup& soup) {
       int overflow = 0;
       const long long value = PyLong_AsLongLongAndOverflow(index, &overflow);
       Py_DECREF(index);
-      if (overflow != 0)
-        index_error(i, j, overflow < 0 ? -1 : std::numeric_limits<long long>::max(),
+      if (overflow != 0) {
+        index_error(i, j, py::str(item).cast<std::string>(),
                     overflow < 0 ? "is negative" : "is out of range");
+      }
       soup.corner_vertices.push_back(checked_index(value, i, j));
     }
     soup.face_begin.push_back(static_cast<Index>(soup.corner_vertices.size()));

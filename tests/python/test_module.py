@@ -237,6 +237,8 @@ def test_report_lists_on_request():
     "faces,message",
     [
         (np.array([[0, 1, 99]]), "face 0, corner 2: vertex index 99 is out of range"),
+        (np.array([[0, 1, 2**63]], dtype=np.uint64), "face 0, corner 2: vertex index 9223372036854775808 is out of range"),
+        ([[0, 1, 2**70]], "face 0, corner 2: vertex index 1180591620717411303424 is out of range"),
         ([[0, 1, 2], [0, -1, 2]], "face 1, corner 1: vertex index -1 is negative"),
         (np.array([[0, 1, 2], [2, 1, -5]], dtype=np.int32), "face 1, corner 2: vertex index -5 is negative"),
         ([[0, 1, 2], [0, 1]], "face 1 has 2 corner(s)"),
