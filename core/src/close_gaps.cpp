@@ -403,10 +403,20 @@ std::vector<Insertion> find_t_junctions(const Soup& soup, double tolerance,
 }  // namespace
 
 double default_weld_tolerance(const Soup& soup) {
+  // Vertices that no face uses take no part in welding: a stray one far away (an OBJ `v` line
+  // nothing refers to) must not widen the tolerance for the rest.
+  std::vector<char> used(soup.num_vertices(), 0);
+  for (const Index v : soup.corner_vertices) {
+    if (v < used.size())
+      used[v] = 1;
+  }
   double largest = 0;
-  for (const Point& p : soup.positions)
+  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
+    if (!used[v])
+      continue;
     for (int a = 0; a < 3; ++a)
-      largest = std::max(largest, std::abs(p[a]));
+      largest = std::max(largest, std::abs(soup.positions[v][a]));
+  }
   return std::ldexp(largest, -21);
 }
 

@@ -102,6 +102,10 @@ TEST(CloseGaps, default_tolerance_is_four_float_ulps_of_the_largest_coordinate) 
   EXPECT_EQ(default_weld_tolerance(soup), 110.0 / (1 << 21));
   EXPECT_GE(default_weld_tolerance(soup), 4 * float_ulp_at_110() / 2);
   EXPECT_EQ(default_weld_tolerance(Soup()), 0.0);
+  // A stray vertex that no face uses, far away, does not widen it (it would weld small parts).
+  Soup stray = soup;
+  stray.add_vertex({1e9, 0, 0});
+  EXPECT_EQ(default_weld_tolerance(stray), 110.0 / (1 << 21));
 }
 
 TEST(CloseGaps, cube_with_corners_written_twice_welds_six_and_closes) {

@@ -52,7 +52,8 @@ struct ClosedGaps {
   CloseGapsReport report;
 };
 
-//! The automatic tolerance: 2^-21 (about 4.8e-7) times the largest absolute coordinate, that is
+//! The automatic tolerance: 2^-21 (about 4.8e-7) times the largest absolute coordinate of a
+//! vertex some face uses (an isolated vertex takes no part in welding), that is
 //! 4 to 8 units in the last place of a float32 (STL) coordinate at that magnitude — the size of
 //! the rounding differences that CAD exports leave between copies of one vertex, and far below
 //! any feature a printer can make (7.2e-5 mm at 150 mm). 0 for an empty soup or one at the
