@@ -607,9 +607,9 @@ TEST_F(HostileFile, binary_stl_whose_size_disagrees_with_its_count) {
   for (const std::uint32_t count : {5u, 3u, 0xFFFFFFFFu}) {
     MeshAttributes attributes;
     const std::string name = "count_" + std::to_string(count) + ".stl";
-    EXPECT_EQ(read_soup(write(name, binary_stl(kTetrahedron, count)), nullptr, &attributes)
-                  .num_faces(),
-              4u);
+    EXPECT_EQ(
+        read_soup(write(name, binary_stl(kTetrahedron, count)), nullptr, &attributes).num_faces(),
+        4u);
     ASSERT_EQ(attributes.not_kept.size(), 1u) << name;
     EXPECT_EQ(attributes.not_kept[0].what, "binary STL header that counts " +
                                                std::to_string(count) +
