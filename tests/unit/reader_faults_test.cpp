@@ -166,7 +166,7 @@ TEST_F(ReaderFaults, ascii_stl_cut_off_inside_a_facet_says_so) {
                        "the file ends inside facet 2 after 2 of its 3 vertices (truncated)"));
   EXPECT_TRUE(contains(error_of("in_a_vertex.stl", first + "vertex 1 0"),
                        "line 12: facet 2, corner 2 is not 'vertex x y z' with three finite "
-                       "numbers (32-bit floats); the file ends there (truncated)"));
+                       "numbers (32-bit floats); the file ends there (truncated?)"));
   EXPECT_TRUE(contains(error_of("in_endloop.stl", first + "vertex 1 0 0\nvertex 0 1 0\nendlo"),
                        "'endlo' where facet 2 (line 9) needs 'endloop' (a truncated file?)"));
   // Not cut off: a facet with 2 vertices and more after it is still named as such.
@@ -253,6 +253,13 @@ TEST_F(ReaderFaults, stl_padding_a_streamed_count_and_a_fourth_number) {
   EXPECT_TRUE(contains(attributes.not_kept[0].what,
                        "binary STL header that counts 1 triangles before 2 whole facets, all "
                        "read"));
+  // What such facets carry is named as for a whole binary STL (an attribute word here).
+  std::string coloured = one;
+  coloured[84 + 48] = 5;
+  attributes = MeshAttributes();
+  read_soup(write("coloured.stl", coloured), nullptr, &attributes);
+  ASSERT_EQ(attributes.not_kept.size(), 2u);
+  EXPECT_TRUE(contains(attributes.not_kept[0].what, "binary STL facet attribute words"));
   std::string three = binary + std::string(20, '\0');
   three[80] = 3;
   EXPECT_TRUE(contains(error_of("three.stl", three),

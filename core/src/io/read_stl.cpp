@@ -223,8 +223,8 @@ AsciiNotes read_ascii(const MappedFile& file, const char* end, Soup& soup, ReadI
     for (word = next_word(); equals_ignoring_case(word, "vertex"); word = next_word(), ++n) {
       const std::size_t line = in.line();
       double x = 0, y = 0, z = 0;
-      bool ok = in.number(x) && in.number(y) && in.number(z) && std::isfinite(float(x)) &&
-                std::isfinite(float(y)) && std::isfinite(float(z));
+      const bool ok = in.number(x) && in.number(y) && in.number(z) && std::isfinite(float(x)) &&
+                      std::isfinite(float(y)) && std::isfinite(float(z));
       TextScanner after = in;  // a fourth number is no coordinate MeshBridge could keep
       double w = 0;
       if (ok && after.number(w)) {
@@ -233,8 +233,7 @@ AsciiNotes read_ascii(const MappedFile& file, const char* end, Soup& soup, ReadI
       }
       if (!ok) {
         fail(line, "facet " + std::to_string(triangles + 1) + ", corner " + std::to_string(n + 1) +
-                       " is not 'vertex x y z' with three finite numbers (32-bit floats)" +
-                       (ends_here() ? "; the file ends there (truncated)" : ""));
+                       " is not 'vertex x y z' with three finite numbers (32-bit floats)");
       }
       if (n < 3)  // STL coordinates are 32-bit floats (binary STL stores nothing else)
         corners.insert(corners.end(), {float(x), float(y), float(z)});
@@ -288,6 +287,23 @@ NotKept reversed_normals(std::size_t facets) {
       facets, "facet", true};
 }
 
+//! Reads `facets` binary facets and names what they carry that is read past.
+void read_binary_facets(const MappedFile& file, std::uint32_t facets, Soup& soup, ReadInfo& info,
+                        MeshAttributes* attributes) {
+  const BinaryFacetNotes notes = read_binary(file, facets, soup, info);
+  if (attributes == nullptr)
+    return;
+  if (notes.attribute_words > 0) {
+    attributes->not_kept.push_back({"binary STL facet attribute words (colours in some programs)",
+                                    notes.attribute_words, "facet"});
+  }
+  if (notes.normals_reversed > 0)
+    attributes->not_kept.push_back(reversed_normals(notes.normals_reversed));
+  // Materialise's and VisCAM's whole-object colour in the 80-byte header.
+  if (std::memcmp(file.data(), "COLOR=", 6) == 0 || std::memcmp(file.data(), "MATERIAL=", 9) == 0)
+    attributes->not_kept.push_back({"binary STL header colour (COLOR=/MATERIAL=)", 1, "file"});
+}
+
 }  // namespace
 
 void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
@@ -295,18 +311,7 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   const std::size_t size = file.size();
   const std::uint32_t triangles = size >= 84 ? little_endian_u32(head + 80) : 0;
   if (size >= 84 && 84 + 50 * std::uint64_t(triangles) == size) {
-    const BinaryFacetNotes notes = read_binary(file, triangles, soup, info);
-    if (attributes != nullptr && notes.attribute_words > 0) {
-      attributes->not_kept.push_back({"binary STL facet attribute words (colours in some programs)",
-                                      notes.attribute_words, "facet"});
-    }
-    if (attributes != nullptr && notes.normals_reversed > 0)
-      attributes->not_kept.push_back(reversed_normals(notes.normals_reversed));
-    // Materialise's and VisCAM's whole-object colour in the 80-byte header.
-    if (attributes != nullptr &&
-        (std::memcmp(head, "COLOR=", 6) == 0 || std::memcmp(head, "MATERIAL=", 9) == 0)) {
-      attributes->not_kept.push_back({"binary STL header colour (COLOR=/MATERIAL=)", 1, "file"});
-    }
+    read_binary_facets(file, triangles, soup, info, attributes);
     return;
   }
   // NUL bytes or a DOS end-of-file mark (^Z) after an ASCII STL: padding some programs write.
@@ -327,15 +332,13 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   if (size > 84 && (size - 84) % 50 == 0 && (size - 84) / 50 <= 0xffffffffu &&
       (has_nul || !solid)) {
     const auto facets = static_cast<std::uint32_t>((size - 84) / 50);
-    const BinaryFacetNotes notes = read_binary(file, facets, soup, info);
+    read_binary_facets(file, facets, soup, info, attributes);
     if (attributes != nullptr) {
       attributes->not_kept.push_back(
           {"binary STL header that counts " + std::to_string(triangles) + " triangles" +
                (triangles == 0 ? std::string(" (a streaming writer's)") : std::string()) +
                " before " + std::to_string(facets) + " whole facets, all read",
            1, "file", true});
-      if (notes.normals_reversed > 0)
-        attributes->not_kept.push_back(reversed_normals(notes.normals_reversed));
     }
     return;
   }
