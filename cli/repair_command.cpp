@@ -135,10 +135,21 @@ int run_repair(RepairArguments& arguments) {
       const std::string text = repair_report_json(in, out, result.report, &info, json,
                                                   reread ? &*reread : nullptr, &written) +
                                "\n";
-      if (report_to_stdout)
+      if (report_to_stdout) {
         std::cout << text << std::flush;
-      else
-        write_text_atomically(arguments.report, text);
+      } else {
+        try {
+          write_text_atomically(arguments.report, text);
+        } catch (const WriteError& error) {
+          // Name what failed: the report, after OUT was written.
+          std::string why = error.what();
+          const std::string prefix = arguments.report + ": ";
+          if (why.compare(0, prefix.size(), prefix) == 0)
+            why.erase(0, prefix.size());
+          throw WriteError(arguments.report + ": cannot write the report (" + why + "); " + out +
+                           " is written");
+        }
+      }
     }
     if (!arguments.before_after.empty()) {
       // The result framed as the input, so the two pictures line up.

@@ -581,6 +581,11 @@ batch_safety)
     [ $? = 2 ] || fail "check --json > /dev/full did not fail"
     expect_in "$work/err" "meshbridge check: error: cannot write to standard output"
   fi
+  # A report that cannot be written says so, and that OUT was written.
+  if [ -w /dev/full ]; then
+    expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/full_report.obj" --report /dev/full
+    expect_in "$work/err" "/dev/full: cannot write the report (write failed (No space left on device)); $work/full_report.obj is written"
+  fi
   # check on a FIFO is an error at once, not a wait for a writer.
   expect_exit 2 timeout 20 "$mb" check "$work/links/in/pipe.stl"
   expect_in "$work/err" "not a regular file (a FIFO, socket or device cannot be mapped)"
@@ -824,7 +829,7 @@ messages)
     expect_in "$work/err" "No space left on device"
     expect_exit 2 full_run sh -c 'head -c 9000 /dev/zero >"$0/fill" 2>/dev/null; exec "$@"' \
       "$work/full" "$mb" repair "$models/prisms24.obj" "$work/b.obj" --report "$work/full/r.json"
-    expect_in "$work/err" "$work/full/r.json: write failed (No space left on device)"
+    expect_in "$work/err" "$work/full/r.json: cannot write the report (write failed (No space left on device)); $work/b.obj is written"
     expect_exit 2 full_run sh -c 'head -c 9000 /dev/zero >"$0/fill" 2>/dev/null; exec "$@"' \
       "$work/full" "$mb" snapshot "$models/prisms24.obj" "$work/full/a.png"
     expect_in "$work/err" "$work/full/a.png: write failed (No space left on device)"
