@@ -148,6 +148,37 @@ TEST_F(ParallelReading, binary_and_ascii_stl_weld_the_same_in_parts) {
   EXPECT_TRUE(same_reading(one, read_with(2, ascii), false));
 }
 
+// Parts whose tables differ in size: the first half of the file is a soup of distinct corners
+// (its table grows), the second half reuses them with a new point now and then. Every part after
+// the first must find its positions in the earlier parts' tables however large each grew.
+TEST_F(ParallelReading, binary_stl_parts_of_unlike_vertex_counts_weld_the_same) {
+  Soup soup;
+  constexpr Index kSoup = 30000;  // triangles of distinct corners
+  for (Index t = 0; t < kSoup; ++t) {
+    for (int k = 0; k < 3; ++k)
+      soup.add_vertex(Point(t, k, 0.5 * t + k));
+    soup.add_polygon({3 * t, 3 * t + 1, 3 * t + 2});
+  }
+  std::size_t fresh = 0;
+  for (Index t = 0; t < kSoup; ++t) {
+    Index third = (7 * t + 2) % (3 * kSoup);
+    if (t % 100 == 0) {
+      third = soup.add_vertex(Point(-1.0 - t, 0, 0));
+      ++fresh;
+    }
+    soup.add_polygon({(7 * t) % (3 * kSoup), (7 * t + 1) % (3 * kSoup), third});
+  }
+  IndexedMesh mesh;
+  mesh.soup = std::move(soup);
+  const std::string file = path("unlike.stl");
+  write_mesh(file, mesh);
+  const Reading one = read_with(1, file);
+  ASSERT_EQ(one.error, "");
+  EXPECT_EQ(one.soup.num_vertices(), 3 * kSoup + fresh);
+  EXPECT_EQ(one.soup.num_faces(), 2u * kSoup);
+  expect_same_for_every_thread_count(file);
+}
+
 TEST_F(ParallelReading, binary_stl_names_the_first_non_finite_corner_in_file_order) {
   const IndexedMesh mesh = test_mesh();
   const std::string file = path("nan.stl");

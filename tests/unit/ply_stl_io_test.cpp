@@ -25,6 +25,7 @@
 
 #include <dirent.h>
 #include <unistd.h>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -639,6 +640,77 @@ TEST_F(PlyStlIo, stl_facets_with_a_repeated_point_are_kept_and_set_aside) {
     // OpenMesh drops the 6 facets without a word (the listed difference).
     EXPECT_EQ(read_with_openmesh(path(name)).soup.num_faces(), 4u);
   }
+}
+
+// The binary reader decides a facet's normal in float where the sign is sure and in double near
+// zero: over facets built to sit at every edge of that decision, the count must be the one the
+// double computation gives, facet by facet.
+TEST_F(PlyStlIo, binary_stl_normals_against_the_winding_are_counted_as_in_double) {
+  const auto against = [](const float* n, const float* a, const float* b, const float* c) {
+    const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
+    const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
+    const double dot = n[0] * (u[1] * v[2] - u[2] * v[1]) + n[1] * (u[2] * v[0] - u[0] * v[2]) +
+                       n[2] * (u[0] * v[1] - u[1] * v[0]);
+    return std::isfinite(dot) && dot < 0;
+  };
+  std::uint64_t state = 12345;
+  const auto uniform = [&state] {  // in [-1, 1)
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return float(std::int64_t(state >> 11) - (std::int64_t(1) << 52)) / float(1ull << 52);
+  };
+  std::vector<std::array<float, 12>> facets;
+  for (int i = 0; i < 20000; ++i) {
+    std::array<float, 12> f{};
+    for (float& x : f)
+      x = uniform() * (i % 7 == 0 ? 1e6f : 10.0f);
+    const float w[3] = {(f[7] - f[4]) * (f[11] - f[5]) - (f[8] - f[5]) * (f[10] - f[4]),
+                        (f[8] - f[5]) * (f[9] - f[3]) - (f[6] - f[3]) * (f[11] - f[5]),
+                        (f[6] - f[3]) * (f[10] - f[4]) - (f[7] - f[4]) * (f[9] - f[3])};
+    switch (i % 6) {
+      case 0:  // a normal nearly in the facet's plane: a dot product at the rounding level
+        f[0] = w[1] - w[2] + uniform() * 1e-6f * std::fabs(w[0]);
+        f[1] = w[2] - w[0];
+        f[2] = w[0] - w[1];
+        break;
+      case 1:  // a zero normal (-0 too), which makes no claim
+        f[0] = -0.0f;
+        f[1] = f[2] = 0.0f;
+        break;
+      case 2:  // a degenerate facet: three corners on a line
+        for (int k = 0; k < 3; ++k)
+          f[9 + k] = f[3 + k] + 2 * (f[6 + k] - f[3 + k]);
+        break;
+      case 3:  // huge values whose products leave float
+        f[0] = 3e38f;
+        f[3] = -3e38f;
+        break;
+      default:  // a normal along or against the winding
+        for (int k = 0; k < 3; ++k)
+          f[k] = (i % 2 == 0 ? 1 : -1) * w[k];
+    }
+    facets.push_back(f);
+  }
+  std::string stl(80, ' ');
+  put(stl, static_cast<std::uint32_t>(facets.size()));
+  std::size_t expected = 0;
+  for (const auto& f : facets) {
+    expected += against(f.data(), f.data() + 3, f.data() + 6, f.data() + 9);
+    for (float x : f)
+      put(stl, x);
+    put(stl, std::uint16_t(0));
+  }
+  ASSERT_GT(expected, 3000u);
+  const std::string file = path("normals.stl");
+  std::ofstream(file, std::ios::binary) << stl;
+  ReadInfo info;
+  MeshAttributes attributes;
+  read_soup(file, &info, &attributes);
+  std::size_t counted = 0;
+  for (const NotKept& n : attributes.not_kept) {
+    if (n.what.rfind("STL facet normals against", 0) == 0)
+      counted = n.count;
+  }
+  EXPECT_EQ(counted, expected);
 }
 
 TEST_F(PlyStlIo, binary_stl_whose_header_says_solid_is_read_by_its_size) {

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The weld of STL corners. Where the time goes: one random probe of a table much larger than the
 // caches per corner. So each slot holds its whole key (one cache miss per probe, not two), the
-// slots of the next block of corners are prefetched while this block is looked up, and the table
-// lives on zero pages from the kernel (no memset) backed by huge pages where granted (few TLB
-// misses). With several threads, each part of the file gets a table of its own; the parts are
-// then merged in file order so that every vertex keeps its one-thread number.
+// slots of the next block of corners are prefetched while this block is looked up (no branch
+// between loading and prefetching), and the table lives on zero pages from the kernel (no
+// memset) backed by huge pages where granted (few TLB misses). With several threads, each part
+// of the file gets a table of its own; the parts are then merged in file order so that every
+// vertex keeps its one-thread number.
 
 #include "io/position_weld.h"
 
@@ -52,7 +53,17 @@ class WeldTable {
   WeldTable& operator=(WeldTable&&) = delete;
 
   std::size_t size() const { return size_; }
+  std::size_t capacity() const { return mask_ + 1; }
   void prefetch(std::uint32_t hash) const { __builtin_prefetch(&slots_[hash & mask_]); }
+
+  //! Calls `visit(key, vertex)` for the keys in slots [first, last), in slot order.
+  template <class Visit>
+  void for_each_in_slots(std::size_t first, std::size_t last, Visit&& visit) const {
+    for (std::size_t s = first; s < last; ++s) {
+      if (slots_[s].id != 0)
+        visit(slots_[s].key, slots_[s].id - 1);
+    }
+  }
 
   //! The vertex of `key`, or kNoIndex.
   Index find(const FloatKey& key, std::uint32_t hash) const {
@@ -88,8 +99,6 @@ class WeldTable {
   }
 
  private:
-  std::size_t capacity() const { return mask_ + 1; }
-
   void allocate(std::size_t capacity) {
     constexpr std::size_t kHuge = std::size_t(2) << 20;
     bytes_ = (capacity * sizeof(Slot) + kHuge - 1) / kHuge * kHuge;
@@ -126,9 +135,10 @@ class WeldTable {
 struct Part {
   std::size_t first = 0, last = 0;
   WeldTable table;
-  std::vector<FloatKey> keys;  //!< the part's vertices in order of first appearance in it
-  std::vector<Index> vertex;   //!< part vertex -> soup vertex (parts after the first)
-  std::vector<Index> corners;  //!< corner -> part vertex (parts after the first)
+  std::vector<FloatKey> keys;         //!< the part's vertices in order of first appearance in it
+  std::vector<Index> vertex;          //!< part vertex -> soup vertex (parts after the first)
+  std::vector<std::uint8_t> earlier;  //!< part vertex -> the first earlier part that has it
+  std::vector<Index> corners;         //!< corner -> part vertex (parts after the first)
 
   // A closed triangle mesh has about half as many vertices as triangles.
   Part(std::size_t first_corner, std::size_t last_corner)
@@ -136,27 +146,7 @@ struct Part {
 };
 
 constexpr std::size_t kBlock = 48;  // corners looked up while the next block's slots arrive
-
-//! The positions met last, one per hash bucket (256 KiB, stays in the L2 cache). A file lists
-//! the triangles around a vertex close together (a tessellation, a scan, a grid), so most
-//! corners find their vertex here and never touch the big table.
-class RecentPositions {
- public:
-  RecentPositions() : slots_(kSize) {}
-  //! The vertex of `key` if it is here, else kNoIndex.
-  Index find(const FloatKey& key, std::uint32_t hash) const {
-    const Slot& slot = slots_[hash >> (32 - kBits)];
-    return slot.id != 0 && slot.holds(key) ? slot.id - 1 : kNoIndex;
-  }
-  void remember(const FloatKey& key, std::uint32_t hash, Index v) {
-    slots_[hash >> (32 - kBits)] = Slot{key, v + 1};
-  }
-
- private:
-  static constexpr int kBits = 14;
-  static constexpr std::size_t kSize = std::size_t(1) << kBits;
-  std::vector<Slot> slots_;
-};
+static_assert(kBlock % 3 == 0, "a block holds whole triangles (CornerKeys)");
 
 Point to_point(const FloatKey& key) {
   float xyz[3];
@@ -164,23 +154,22 @@ Point to_point(const FloatKey& key) {
   return Point(xyz[0], xyz[1], xyz[2]);
 }
 
-//! Welds the part's corners into its table, appending each corner's part vertex to `out`. The
-//! part's new positions go to `positions` if given (the first part: its numbers are the soup's),
-//! else to `part.keys`.
-void weld_part(const CornerKeys& corner_keys, Part& part, std::vector<Index>& out,
+//! Welds the part's corners into its table, writing each corner's part vertex to `out` (one per
+//! corner of the part). The part's new positions go to `positions` if given (the first part: its
+//! numbers are the soup's), else to `part.keys`. Every corner probes the table: a small cache of
+//! recent positions in front of it (one probe less for most corners) made the weld 1.5-2.4x
+//! slower on the 2-core machines of bench/results.md, its hits and misses being unpredictable
+//! branches and its slots a second random read.
+void weld_part(const CornerKeys& corner_keys, Part& part, Index* out,
                std::vector<Point>* positions) {
   FloatKey keys[2][kBlock];
   std::uint32_t hashes[2][kBlock];
-  Index found[2][kBlock];  // the vertex `recent` knew when the block was loaded, or kNoIndex
-  RecentPositions recent;
   const auto load = [&](std::size_t c, int b) {
     const std::size_t n = std::min(kBlock, part.last - c);
     corner_keys(c, n, keys[b]);
     for (std::size_t i = 0; i < n; ++i) {
       hashes[b][i] = float_key_hash(keys[b][i]);
-      found[b][i] = recent.find(keys[b][i], hashes[b][i]);
-      if (found[b][i] == kNoIndex)
-        part.table.prefetch(hashes[b][i]);
+      part.table.prefetch(hashes[b][i]);
     }
     return n;
   };
@@ -192,53 +181,78 @@ void weld_part(const CornerKeys& corner_keys, Part& part, std::vector<Index>& ou
     const std::size_t next = c + n;
     const std::size_t following = next < part.last ? load(next, b ^ 1) : 0;
     for (std::size_t i = 0; i < n; ++i) {
-      Index v = found[b][i];
-      if (v == kNoIndex) {  // (a position of this block may have come in since the load)
-        const FloatKey& key = keys[b][i];
-        v = recent.find(key, hashes[b][i]);
-        if (v == kNoIndex) {
-          bool added = false;
-          v = part.table.find_or_add(key, hashes[b][i], added);
-          if (added && positions != nullptr)
-            positions->push_back(to_point(key));
-          else if (added)
-            part.keys.push_back(key);
-          recent.remember(key, hashes[b][i], v);
-        }
-      }
-      out.push_back(v);
+      const FloatKey& key = keys[b][i];
+      bool added = false;
+      const Index v = part.table.find_or_add(key, hashes[b][i], added);
+      if (added && positions != nullptr)
+        positions->push_back(to_point(key));
+      else if (added)
+        part.keys.push_back(key);
+      *out++ = v;
     }
     c = next;
     n = following;
   }
 }
 
-//! Numbers the vertices of parts[1..] in file order: a position an earlier part has keeps that
-//! part's number, a new one gets the next; appends the new positions to `positions`.
-void merge_parts(std::vector<Part>& parts, std::vector<Point>& positions) {
+//! For every vertex of parts[1..]: the first earlier part that has its position, and its vertex
+//! there (in `earlier` and `vertex`; kNoIndex where no earlier part has it). Only reads the
+//! tables, so the `threads` threads each take a share of every part's vertices. Where the two
+//! tables have the same capacity (parts of equal size), a key's probe in the earlier table starts
+//! at about the slot it has in its own: walking the later table in slot order then reads the
+//! earlier one nearly in order too, instead of one random slot per vertex.
+void find_in_earlier_parts(std::vector<Part>& parts, unsigned threads) {
+  for (std::size_t k = 1; k < parts.size(); ++k) {
+    parts[k].vertex.assign(parts[k].keys.size(), kNoIndex);
+    parts[k].earlier.assign(parts[k].keys.size(), 0);
+  }
+  run_parts(threads, [&parts, threads](unsigned t) {
+    for (std::size_t k = 1; k < parts.size(); ++k) {
+      Part& part = parts[k];
+      for (std::size_t j = 0; j < k; ++j) {
+        const WeldTable& table = parts[j].table;
+        const auto look_up = [&](const FloatKey& key, Index l) {
+          if (part.vertex[l] != kNoIndex)  // an earlier part has it
+            return;
+          const Index found = table.find(key, float_key_hash(key));
+          if (found != kNoIndex) {
+            part.vertex[l] = found;
+            part.earlier[l] = static_cast<std::uint8_t>(j);
+          }
+        };
+        if (table.capacity() == part.table.capacity()) {
+          const std::size_t slots = part.table.capacity();
+          part.table.for_each_in_slots(part_begin(slots, threads, t),
+                                       part_begin(slots, threads, t + 1), look_up);
+          continue;
+        }
+        const std::size_t first = part_begin(part.keys.size(), threads, t);
+        const std::size_t last = part_begin(part.keys.size(), threads, t + 1);
+        constexpr std::size_t kAhead = 32;  // slots on their way
+        for (std::size_t l = first; l < last; ++l) {
+          if (l + kAhead < last)
+            table.prefetch(float_key_hash(part.keys[l + kAhead]));
+          look_up(part.keys[l], static_cast<Index>(l));
+        }
+      }
+    }
+  });
+}
+
+//! Numbers the vertices of parts[1..] in file order after find_in_earlier_parts(): a position an
+//! earlier part has keeps that part's number, a new one gets the next; appends the new positions
+//! to `positions`.
+void number_later_parts(std::vector<Part>& parts, std::vector<Point>& positions) {
   for (std::size_t k = 1; k < parts.size(); ++k) {
     Part& part = parts[k];
-    part.vertex.resize(part.keys.size());
-    const std::size_t n = part.keys.size();
-    constexpr std::size_t kAhead = 16;
-    for (std::size_t i = 0; i < std::min(kAhead, n); ++i)
-      parts[0].table.prefetch(float_key_hash(part.keys[i]));
-    for (std::size_t l = 0; l < n; ++l) {
-      if (l + kAhead < n)
-        parts[0].table.prefetch(float_key_hash(part.keys[l + kAhead]));
-      const FloatKey& key = part.keys[l];
-      const std::uint32_t hash = float_key_hash(key);
-      Index v = kNoIndex;
-      for (std::size_t j = 0; j < k && v == kNoIndex; ++j) {
-        const Index found = parts[j].table.find(key, hash);
-        if (found != kNoIndex)
-          v = j == 0 ? found : parts[j].vertex[found];
-      }
+    for (std::size_t l = 0; l < part.keys.size(); ++l) {
+      Index& v = part.vertex[l];
       if (v == kNoIndex) {
         v = static_cast<Index>(positions.size());
-        positions.push_back(to_point(key));
+        positions.push_back(to_point(part.keys[l]));
+      } else if (part.earlier[l] != 0) {
+        v = parts[part.earlier[l]].vertex[v];
       }
-      part.vertex[l] = v;
     }
   }
 }
@@ -252,7 +266,10 @@ void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, S
   constexpr std::size_t kLeastPart = 3 * 8192;
   const unsigned n = static_cast<unsigned>(
       std::clamp<std::size_t>(corners / kLeastPart, 1, std::max(threads, 1u)));
+  // Every corner's vertex is written in place: the first part's directly, the others' after
+  // the merge below.
   reserve_huge(soup.corner_vertices, corners);
+  soup.corner_vertices.resize(corners);
   // A closed triangle mesh has about half as many vertices as triangles, a part border a few more.
   reserve_huge(soup.positions, corners / 5 + 16);
   std::vector<Part> parts;
@@ -262,25 +279,37 @@ void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, S
   run_parts(n, [&](unsigned k) {
     Part& part = parts[k];
     if (k == 0) {
-      weld_part(corner_keys, part, soup.corner_vertices, &soup.positions);
+      weld_part(corner_keys, part, soup.corner_vertices.data(), &soup.positions);
       return;
     }
     reserve_huge(part.corners, part.last - part.first);
-    weld_part(corner_keys, part, part.corners, nullptr);
+    part.corners.resize(part.last - part.first);
+    weld_part(corner_keys, part, part.corners.data(), nullptr);
   });
-  merge_parts(parts, soup.positions);
+  find_in_earlier_parts(parts, n);
+  number_later_parts(parts, soup.positions);
   for (Part& part : parts) {
     part.table.release();
     std::vector<FloatKey>().swap(part.keys);
-    for (const Index v : part.corners)
-      soup.corner_vertices.push_back(part.vertex[v]);
-    std::vector<Index>().swap(part.corners);
   }
-  // Corner c of the file is soup corner c: triangle f begins at corner 3f.
+  // Corner c of the file is soup corner c: triangle f begins at corner 3f. The corners of the
+  // parts after the first and the face starts are written side by side.
   soup.face_begin.clear();
   reserve_huge(soup.face_begin, triangles + 1);
-  for (std::size_t f = 0; f <= triangles; ++f)
-    soup.face_begin.push_back(static_cast<Index>(3 * f));
+  soup.face_begin.resize(triangles + 1);
+  const std::size_t later = parts[0].last;
+  run_parts(n, [&](unsigned t) {
+    std::size_t k = 1;
+    const std::size_t last = later + part_begin(corners - later, n, t + 1);
+    for (std::size_t c = later + part_begin(corners - later, n, t); c < last; ++c) {
+      while (c >= parts[k].last)
+        ++k;
+      soup.corner_vertices[c] = parts[k].vertex[parts[k].corners[c - parts[k].first]];
+    }
+    const std::size_t last_face = part_begin(triangles + 1, n, t + 1);
+    for (std::size_t f = part_begin(triangles + 1, n, t); f < last_face; ++f)
+      soup.face_begin[f] = static_cast<Index>(3 * f);
+  });
 }
 
 void restore_negative_zeros(Soup& soup, const CornerFloats& corner_floats) {

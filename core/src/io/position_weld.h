@@ -15,6 +15,7 @@ namespace meshbridge::detail {
 
 //! A corner position as the bit patterns of its three floats, -0 stored as +0 (they are equal).
 using FloatKey = std::array<std::uint32_t, 3>;
+static_assert(sizeof(FloatKey) == 12, "keys of a triangle's corners are 36 contiguous bytes");
 
 inline FloatKey float_key(float x, float y, float z) {
   FloatKey key;
@@ -34,8 +35,9 @@ inline std::uint32_t float_key_hash(const FloatKey& k) {
   return static_cast<std::uint32_t>(h >> 32);
 }
 
-//! Writes the FloatKeys of corners [first, first + count) to `keys` (count <= 64). May throw
-//! (e.g. for a non-finite coordinate); it is called in corner order within each part.
+//! Writes the FloatKeys of corners [first, first + count) to `keys` (count <= 64). `first` and
+//! `count` are multiples of 3: a call gets whole triangles. May throw (e.g. for a non-finite
+//! coordinate); it is called in corner order within each part.
 using CornerKeys = std::function<void(std::size_t first, std::size_t count, FloatKey* keys)>;
 
 //! Fills `soup` (empty) with `corners / 3` triangles, corner c of the file becoming soup corner

@@ -4,6 +4,7 @@
 #include "io/formats.h"
 #include "io/parallel_parts.h"
 #include "io/position_weld.h"
+#include "io/stl_facets.h"
 #include "io/text_scanner.h"
 
 #include "meshbridge/errors.h"
@@ -20,11 +21,6 @@ namespace meshbridge::detail {
 
 namespace {
 
-std::uint32_t little_endian_u32(const unsigned char* b) {
-  return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |
-         std::uint32_t(b[3]) << 24;
-}
-
 bool equals_ignoring_case(std::string_view word, std::string_view lower) {
   if (word.size() != lower.size())
     return false;
@@ -36,40 +32,14 @@ bool equals_ignoring_case(std::string_view word, std::string_view lower) {
   return true;
 }
 
-//! True if a facet's stored normal `n` points against the normal of its corners' winding
-//! (a b c, counter-clockwise seen from outside): both non-zero and their dot product negative.
-//! A zero or non-finite stored normal (many writers leave it 0 0 0) is no claim either way.
-bool normal_against_winding(const float n[3], const float a[3], const float b[3],
-                            const float c[3]) {
-  const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
-  const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
-  const double w[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                       u[0] * v[1] - u[1] * v[0]};
-  const double dot = n[0] * w[0] + n[1] * w[1] + n[2] * w[2];
-  return std::isfinite(dot) && dot < 0;
-}
-
-float little_endian_float(const unsigned char* b) {
-  const std::uint32_t bits = little_endian_u32(b);
-  float value;
-  std::memcpy(&value, &bits, 4);
-  return value;
-}
-
-//! What a binary STL reader reads past: counts of facets.
-struct BinaryFacetNotes {
-  std::size_t attribute_words = 0;   //!< a non-zero attribute word (a colour in some programs)
-  std::size_t normals_reversed = 0;  //!< a stored normal against the winding
-};
-
 //! The stretch of the file a binary STL reader keeps mapped behind and ahead of it.
 constexpr std::size_t kWindow = std::size_t(8) << 20;
 
 //! Returns how many triangles have a non-zero attribute word (the 16 bits after each triangle:
 //! 0 by the format, a colour in some programs) and a normal against their winding (not kept:
 //! every writer recomputes normals from the corners).
-BinaryFacetNotes read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup,
-                             ReadInfo& info) {
+FacetNotes read_binary(const MappedFile& file, std::uint32_t triangles, Soup& soup,
+                       ReadInfo& info) {
   const auto* bytes = reinterpret_cast<const unsigned char*>(file.data()) + 84;
   info.declared_faces = triangles;
   info.declared_vertices = 3 * std::size_t(triangles);
@@ -77,38 +47,27 @@ BinaryFacetNotes read_binary(const MappedFile& file, std::uint32_t triangles, So
   std::atomic<bool> negative_zero{false};
   const auto keys = [&file, bytes, &attribute_words, &normals_reversed, &negative_zero](
                         std::size_t first, std::size_t count, FloatKey* out) {
-    std::size_t used = 0, reversed = 0;
-    bool minus_zero = false;
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::size_t c = first + i;
-      const unsigned char* p = bytes + 50 * (c / 3) + 12 + 12 * (c % 3);  // after the normal
-      if (c % 3 == 2) {
-        used += (p[12] | p[13]) != 0;  // the attribute word after the last corner
-        float values[12];              // the normal and the three corners
-        for (int k = 0; k < 12; ++k)
-          values[k] = little_endian_float(bytes + 50 * (c / 3) + 4 * k);
-        reversed += normal_against_winding(values, values + 3, values + 6, values + 9);
-      }
-      const std::uint32_t bits[3] = {little_endian_u32(p), little_endian_u32(p + 4),
-                                     little_endian_u32(p + 8)};
-      // All exponent bits set: infinite or NaN.
-      if ((bits[0] & 0x7F800000u) == 0x7F800000u || (bits[1] & 0x7F800000u) == 0x7F800000u ||
-          (bits[2] & 0x7F800000u) == 0x7F800000u) {
-        throw InvalidSoupError(file.path() + ": binary STL facet " + std::to_string(c / 3 + 1) +
-                               ", corner " + std::to_string(c % 3 + 1) +
-                               " has a non-finite coordinate");
-      }
-      for (int k = 0; k < 3; ++k) {
-        minus_zero |= bits[k] == 0x80000000u;
-        out[i][k] = bits[k] == 0x80000000u ? 0 : bits[k];  // -0 is +0 (float_key)
+    const unsigned char* facets = bytes + 50 * (first / 3);  // whole facets (CornerKeys)
+    const CornerBits bits = facet_corner_keys(facets, count / 3, out);
+    if (bits.non_finite) {  // the first such corner, for the message
+      for (std::size_t c = first;; ++c) {
+        const unsigned char* p = bytes + 50 * (c / 3) + 12 + 12 * (c % 3);
+        for (int k = 0; k < 3; ++k) {
+          if (!std::isfinite(little_endian_float(p + 4 * k))) {
+            throw InvalidSoupError(file.path() + ": binary STL facet " + std::to_string(c / 3 + 1) +
+                                   ", corner " + std::to_string(c % 3 + 1) +
+                                   " has a non-finite coordinate");
+          }
+        }
       }
     }
-    if (minus_zero)
+    if (bits.negative_zero)
       negative_zero.store(true, std::memory_order_relaxed);
-    if (used > 0)
-      attribute_words += used;
-    if (reversed > 0)
-      normals_reversed += reversed;
+    const FacetNotes notes = facet_notes(facets, count / 3);
+    if (notes.attribute_words > 0)
+      attribute_words += notes.attribute_words;
+    if (notes.normals_reversed > 0)
+      normals_reversed += notes.normals_reversed;
     // Every 8 MiB of the file, the 8 MiB read before go back to the kernel (see
     // MappedFile::release_before), so the map adds a window to the peak memory, not the whole file,
     // and the 8 MiB after the next are mapped in one call. (At the start of a part that window may
@@ -290,7 +249,7 @@ NotKept reversed_normals(std::size_t facets) {
 //! Reads `facets` binary facets and names what they carry that is read past.
 void read_binary_facets(const MappedFile& file, std::uint32_t facets, Soup& soup, ReadInfo& info,
                         MeshAttributes* attributes) {
-  const BinaryFacetNotes notes = read_binary(file, facets, soup, info);
+  const FacetNotes notes = read_binary(file, facets, soup, info);
   if (attributes == nullptr)
     return;
   if (notes.attribute_words > 0) {
