@@ -4,6 +4,7 @@
 #include "meshbridge/validate.h"
 
 #include "detection.h"
+#include "parallel_parts.h"
 #include "pipeline/fans.h"
 #include "pipeline/orientation.h"
 #include "pipeline/vertex_pairs.h"
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 
 namespace meshbridge {
 
@@ -149,11 +151,48 @@ struct EdgeTally {
   std::vector<std::pair<Index, Index>> singular_links;  // sides on one singular edge
 };
 
+// The checks of single faces: zero area (in input numbering: |vector area|^2 <= (1e-12 * sum of
+// squared sides)^2) and duplicates among the polygons as built (a collapsed polygon can duplicate
+// another), reported by input face, sorted.
+struct FaceChecks {
+  std::vector<Index> zero_area_faces;
+  std::vector<Index> duplicate_faces;
+};
+
+FaceChecks check_faces(const WorkingSoup& working) {
+  const Soup& input = working.input();
+  FaceChecks checks;
+  for (Index f = 0; f < input.num_faces(); ++f) {
+    const PolygonView polygon = input.polygon(f);
+    double squared_sides = 0;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      squared_sides +=
+          (input.positions[polygon[(i + 1) % polygon.size()]] - input.positions[polygon[i]])
+              .sqrnorm();
+    }
+    const double limit = 1e-12 * squared_sides;
+    if (newell_normal(input, f).sqrnorm() <= limit * limit)
+      checks.zero_area_faces.push_back(f);
+  }
+  for (Index f : duplicate_polygons(working.soup()))
+    checks.duplicate_faces.push_back(working.face_origin(f));
+  std::sort(checks.duplicate_faces.begin(), checks.duplicate_faces.end());
+  checks.duplicate_faces.erase(
+      std::unique(checks.duplicate_faces.begin(), checks.duplicate_faces.end()),
+      checks.duplicate_faces.end());
+  return checks;
+}
+
 // Detection on `working` after its edges went through `tally` (num_edges of them).
+// With `faces_alongside`, the face checks run on a thread of their own meanwhile.
 DefectReport detect_tallied(const WorkingSoup& working, const CornerFaces& corner_face,
                             EdgeTally&& tally, std::size_t num_edges,
-                            std::vector<Index>* manifold_mate_out = nullptr) {
-  const Soup& input = working.input();
+                            std::vector<Index>* manifold_mate_out = nullptr,
+                            bool faces_alongside = false) {
+  // (Where no thread can be started, the checks run when their result is asked for.)
+  std::future<FaceChecks> face_checks = std::async(
+      faces_alongside ? std::launch::async | std::launch::deferred : std::launch::deferred,
+      [&working] { return check_faces(working); });
   const Soup& soup = working.soup();
   DefectReport& report = tally.report;
   report.num_edges = num_edges;
@@ -222,27 +261,9 @@ DefectReport detect_tallied(const WorkingSoup& working, const CornerFaces& corne
                                 static_cast<long long>(num_edges) +
                                 static_cast<long long>(soup.num_faces());
 
-  // Faces, in input numbering. Zero area: |vector area|^2 <= (1e-12 * sum of squared sides)^2.
-  for (Index f = 0; f < input.num_faces(); ++f) {
-    const PolygonView polygon = input.polygon(f);
-    double squared_sides = 0;
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-      squared_sides +=
-          (input.positions[polygon[(i + 1) % polygon.size()]] - input.positions[polygon[i]])
-              .sqrnorm();
-    }
-    const double limit = 1e-12 * squared_sides;
-    if (newell_normal(input, f).sqrnorm() <= limit * limit)
-      report.zero_area_faces.push_back(f);
-  }
-  // Duplicates among the polygons as built (a collapsed polygon can duplicate another), reported
-  // by input face.
-  for (Index f : duplicate_polygons(soup))
-    report.duplicate_faces.push_back(working.face_origin(f));
-  std::sort(report.duplicate_faces.begin(), report.duplicate_faces.end());
-  report.duplicate_faces.erase(
-      std::unique(report.duplicate_faces.begin(), report.duplicate_faces.end()),
-      report.duplicate_faces.end());
+  FaceChecks faces = face_checks.get();
+  report.zero_area_faces = std::move(faces.zero_area_faces);
+  report.duplicate_faces = std::move(faces.duplicate_faces);
 
   report.watertight = soup.num_faces() > 0 && report.boundary_edges.empty() &&
                       report.singular_edges.empty() && report.num_singular_vertices() == 0 &&
@@ -264,18 +285,27 @@ void tally_bridges(const Soup& soup, const GroupedSides& grouped, EdgeTally& tal
 DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped) {
   EdgeTally tally(working);
   tally_bridges(working.soup(), grouped, tally);
-  return detect_tallied(working, grouped.corner_face, std::move(tally),
-                        grouped.bridges.num_edges());
+  return detect_tallied(working, grouped.corner_face, std::move(tally), grouped.bridges.num_edges(),
+                        nullptr, worker_threads() > 1);
 }
 
 DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mate,
                     GroupedSides* grouped_out) {
+  if (grouped_out == nullptr) {
+    const CornerFaces corner_face(working.soup());
+    EdgeTally tally(working);
+    const std::size_t num_edges = for_each_vertex_pair(working.soup(), corner_face, tally);
+    return detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate,
+                          worker_threads() > 1);
+  }
+  return detect_alongside(working, manifold_mate, grouped_out, false).get();
+}
+
+std::future<DefectReport> detect_alongside(const WorkingSoup& working,
+                                           std::vector<Index>* manifold_mate,
+                                           GroupedSides* grouped_out, bool alongside) {
   CornerFaces corner_face(working.soup());
   EdgeTally tally(working);
-  if (grouped_out == nullptr) {
-    const std::size_t num_edges = for_each_vertex_pair(working.soup(), corner_face, tally);
-    return detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate);
-  }
   // Edge offsets are recorded from the first edge that is not 2-sided on (the ones before it
   // start at 0, 2, 4, ...): a closed 2-manifold candidate never allocates them.
   EdgeBridges bridges;
@@ -297,12 +327,26 @@ DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mat
   };
   const std::size_t num_edges =
       for_each_vertex_pair(working.soup(), corner_face, visit, &bridges.contenders);
-  if (!keep)
-    bridges = EdgeBridges();
-  DefectReport report =
-      detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate);
-  *grouped_out = keep ? GroupedSides{std::move(corner_face), std::move(bridges)} : GroupedSides();
-  return report;
+  if (!keep) {
+    *grouped_out = GroupedSides();
+    std::promise<DefectReport> here;
+    here.set_value(detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate,
+                                  worker_threads() > 1));
+    return here.get_future();
+  }
+  *grouped_out = GroupedSides{std::move(corner_face), std::move(bridges)};
+  if (!alongside) {
+    std::promise<DefectReport> here;
+    here.set_value(detect_tallied(working, grouped_out->corner_face, std::move(tally), num_edges,
+                                  manifold_mate, worker_threads() > 1));
+    return here.get_future();
+  }
+  // (Where no thread can be started, the rest runs when the report is asked for.)
+  return std::async(std::launch::async | std::launch::deferred,
+                    [&working, tally = std::move(tally), num_edges]() mutable {
+                      const CornerFaces own(working.soup());
+                      return detect_tallied(working, own, std::move(tally), num_edges);
+                    });
 }
 
 }  // namespace detail

@@ -7,6 +7,7 @@
 #include "pipeline/grouping.h"
 #include "working_soup.h"
 
+#include <future>
 #include <vector>
 
 namespace meshbridge::detail {
@@ -24,5 +25,15 @@ DefectReport detect(const WorkingSoup& working, const GroupedSides& grouped);
 //! pipeline, which reads it: no second grouping); otherwise `grouped_out` is left empty.
 DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mate = nullptr,
                     GroupedSides* grouped_out = nullptr);
+//! detect(working, manifold_mate, grouped_out) for repair, which needs the grouping at once and
+//! the report only after its pipeline: when the grouping is kept (the pipeline will run) and
+//! `alongside` is set, the grouping and the per-edge tally are made here and the rest of the
+//! detection (fans, components, orientability, faces) runs on a thread of its own, with a
+//! corner-to-face map of its own since the pipeline frees the grouping; `manifold_mate` is then
+//! left empty. Otherwise the report is made here and the future is ready. The thread reads
+//! `working`, which must outlive the future (its destructor waits for the thread).
+std::future<DefectReport> detect_alongside(const WorkingSoup& working,
+                                           std::vector<Index>* manifold_mate,
+                                           GroupedSides* grouped_out, bool alongside);
 
 }  // namespace meshbridge::detail

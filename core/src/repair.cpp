@@ -8,12 +8,14 @@
 
 #include "close_gaps_detail.h"
 #include "detection.h"
+#include "parallel_parts.h"
 #include "pipeline/orientation.h"
 #include "pipeline/run_pipeline.h"
 #include "release_memory.h"
 #include "working_soup.h"
 
 #include <algorithm>
+#include <future>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -79,7 +81,9 @@ void tell(const RepairOptions& options, Stage stage, double fraction) {
 struct KnownInput {
   const detail::WorkingSoup* simple = nullptr;  //!< the input made simple; null: make it
   DefectReport* before = nullptr;               //!< its detection (moved from); null: detect
-  detail::GroupedSides grouped;                 //!< its grouping; no contenders: group again
+  //! its detection still being made beside the pipeline (detect_alongside()); taken after it
+  std::future<DefectReport>* before_later = nullptr;
+  detail::GroupedSides grouped;  //!< its grouping; no contenders: group again
 };
 
 // Everything repair() does, on a valid soup; `known` holds what was already made of `input`.
@@ -109,7 +113,8 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
   report.gaps = gaps.report;
   const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
   const bool detecting = options.detect_before_after || filtering;
-  if (detecting) {
+  const bool before_later = known.before_later != nullptr && known.before_later->valid();
+  if (detecting && !before_later) {
     report.before =
         known.before != nullptr ? std::move(*known.before) : detail::detect(input_simple, grouped);
   }
@@ -168,6 +173,8 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
   pipeline_options.keep_state = false;  // only the mesh and the counts are read below
   detail::PipelineResult pipeline =
       detail::run_pipeline(working, std::move(grouped), pipeline_options);
+  if (before_later)
+    report.before = known.before_later->get();
 
   IndexedMesh& mesh = result.mesh;
   mesh = std::move(pipeline.mesh);
@@ -216,8 +223,10 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
   const bool unchanged = !gaps_closed && !filtering && simple.is_identity() &&
                          report.vertices_split == 0 && report.faces_flipped == 0 &&
                          report.isolated_vertices_removed == 0 && report.holes.faces_added == 0;
-  if (detecting)
-    report.after = unchanged ? report.before : detect_defects(mesh.soup);
+  if (detecting) {
+    // (The output is valid by construction: detect_defects() would check it again.)
+    report.after = unchanged ? report.before : detail::detect(detail::WorkingSoup(mesh.soup));
+  }
   tell(options, Stage::detect, 1);
   report.components_before = report.before.num_components;
   report.components_after = report.after.num_components;
@@ -243,7 +252,14 @@ std::optional<RepairReport> report_if_unchanged(const Soup& soup,
   if (!options.detect_before_after && !filtering)
     return std::nullopt;  // no detection asked for: the pipeline's own path
   std::vector<Index> mate;
-  before = detail::detect(working, &mate, &known.grouped);
+  // Without removals (which read the input's report first), a soup that has to go through the
+  // pipeline gets the rest of its detection made beside it.
+  const bool alongside = !filtering && detail::worker_threads() > 1;
+  *known.before_later = detail::detect_alongside(working, &mate, &known.grouped, alongside);
+  const bool pipeline = !known.grouped.bridges.contenders.empty();  // a boundary or singular edge
+  if (pipeline && alongside)
+    return std::nullopt;  // repair_valid() takes the report after its pipeline
+  before = known.before_later->get();
   known.before = &before;
   if (!working.is_identity() || !before.watertight || options.fill_holes.max_edges > 0 ||
       (options.remove_duplicate_faces && !before.duplicate_faces.empty()) ||
@@ -287,7 +303,9 @@ RepairResult repair(Soup&& soup, const RepairOptions& options) {
   std::optional<RepairReport> unchanged;
   {
     const detail::WorkingSoup working(soup);
+    std::future<DefectReport> before_later;  // (its destructor waits for a thread reading working)
     known.simple = &working;
+    known.before_later = &before_later;
     unchanged = report_if_unchanged(soup, working, options, before, known);
     if (!unchanged)
       return repair_valid(soup, options, std::move(known));

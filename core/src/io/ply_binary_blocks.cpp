@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/ply_binary_blocks.h"
 
-#include "io/parallel_parts.h"
+#include "parallel_parts.h"
 #include "io/ply_sources.h"
 
 #include <atomic>

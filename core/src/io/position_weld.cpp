@@ -10,7 +10,7 @@
 #include "io/position_weld.h"
 
 #include "io/huge_pages.h"
-#include "io/parallel_parts.h"
+#include "parallel_parts.h"
 
 #include <sys/mman.h>
 #include <algorithm>

@@ -6,7 +6,7 @@
 #include "io/formats.h"
 #include "io/huge_pages.h"
 #include "io/obj_parts.h"
-#include "io/parallel_parts.h"
+#include "parallel_parts.h"
 #include "io/text_scanner.h"
 #include "meshbridge/counted.h"
 #include "meshbridge/errors.h"
@@ -464,7 +464,7 @@ void throw_obj_index_out_of_range(const MappedFile& file, const ObjIndexOutOfRan
 void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
   // Parts of less than 1 MiB cost more to start and append than they save.
   const unsigned n = static_cast<unsigned>(
-      std::clamp<std::size_t>(file.size() / (std::size_t(1) << 20), 1, reading_threads()));
+      std::clamp<std::size_t>(file.size() / (std::size_t(1) << 20), 1, worker_threads()));
   bool read = false;
   AttributeIndices attribute_indices;
   ColourScale colour_scale;

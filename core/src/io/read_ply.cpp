@@ -4,7 +4,7 @@
 // size. Per-vertex and per-face colours go to MeshAttributes.
 #include "io/formats.h"
 #include "io/huge_pages.h"
-#include "io/parallel_parts.h"
+#include "parallel_parts.h"
 #include "io/ply_ascii_lines.h"
 #include "io/ply_binary_blocks.h"
 #include "io/ply_header.h"
@@ -252,7 +252,7 @@ class PlyReader {
       return false;
     // read_elements checked that the whole element is in the file.
     read_ply_fixed_vertices(source.position(), stride, offset, type, source.swaps(),
-                            soup_.positions, reading_threads());
+                            soup_.positions, worker_threads());
     source.advance(stride * soup_.positions.size());
     return true;
   }
@@ -327,7 +327,7 @@ class PlyReader {
     // All n-gons of one n with valid indices (almost every file): in blocks, in parts.
     if (const std::size_t bytes =
             read_ply_uniform_faces(source.position(), source.remaining(), e.count,
-                                   e.properties[0].type, swap, soup_, reading_threads())) {
+                                   e.properties[0].type, swap, soup_, worker_threads())) {
       source.advance(bytes);
       return true;
     }

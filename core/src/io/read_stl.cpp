@@ -2,7 +2,7 @@
 // The STL reader: binary (decided by size: 84 + 50 n bytes, whatever the header says) and ascii,
 // corners welded by exact position into shared vertices in order of first appearance.
 #include "io/formats.h"
-#include "io/parallel_parts.h"
+#include "parallel_parts.h"
 #include "io/position_weld.h"
 #include "io/stl_facets.h"
 #include "io/text_scanner.h"
@@ -82,7 +82,7 @@ FacetNotes read_binary(const MappedFile& file, std::uint32_t triangles, Soup& so
     }
   };
   file.prefault_between(file.data(), file.data() + std::min(file.size(), 2 * kWindow));
-  weld_triangle_corners(3 * std::size_t(triangles), keys, soup, reading_threads());
+  weld_triangle_corners(3 * std::size_t(triangles), keys, soup, worker_threads());
   if (negative_zero.load()) {
     restore_negative_zeros(soup, [bytes](std::size_t c, float* xyz) {
       for (int k = 0; k < 3; ++k)
@@ -228,7 +228,7 @@ AsciiNotes read_ascii(const MappedFile& file, const char* end, Soup& soup, ReadI
     for (std::size_t c = first; c < first + count; ++c)
       out[c - first] = float_key(corners[3 * c], corners[3 * c + 1], corners[3 * c + 2]);
   };
-  weld_triangle_corners(3 * triangles, keys, soup, reading_threads());
+  weld_triangle_corners(3 * triangles, keys, soup, worker_threads());
   if (std::any_of(corners.begin(), corners.end(),
                   [](float x) { return x == 0 && std::signbit(x); })) {
     restore_negative_zeros(soup, [&corners](std::size_t c, float* xyz) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline/nesting.h"
 
+#include "parallel_parts.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -192,36 +194,43 @@ std::vector<Index> nesting_depths(const Soup& soup, const std::vector<char>& fli
         box[s].add(soup.positions[v]);
     }
   }
-  // Only shells listed in the grid cell of S's box centre can contain S.
+  // Only shells listed in the grid cell of S's box centre can contain S. Each shell's depth is
+  // its own: with several threads, each takes a share of the shells.
   const BoxGrid grid(box);
-  for (Index s = 0; s < num_shells; ++s) {
-    const auto [first, last] = grid.at((box[s].min + box[s].max) * 0.5);
-    for (const Index* it = first; it != last; ++it) {
-      const Index t = *it;
-      if (t == s || !box[t].contains(box[s]))
-        continue;
-      const Index* t_first = shell_faces.data() + shell_begin[t];
-      const Index* t_last = shell_faces.data() + shell_begin[t + 1];
-      // Up to kTries points spread over S: inside only if every decided one is.
-      const std::size_t n = shell_begin[s + 1] - shell_begin[s];
-      const std::size_t tries = std::min(kTries, n);
-      bool inside = false;
-      for (std::size_t k = 0; k < tries; ++k) {
-        const Index f = shell_faces[shell_begin[s] + k * n / tries];
-        const double w =
-            std::abs(winding_number(soup, flipped, t_first, t_last, centroid(soup, f)));
-        if (std::isnan(w))
-          continue;  // the point lies on T: undecided
-        if (w > 1 - kDecided && std::abs(w - std::round(w)) < kDecided) {
-          inside = true;
-        } else {
-          inside = false;  // outside, or crossing T: not nested
-          break;
+  constexpr std::size_t kLeastShellsPerThread = 2048;
+  const unsigned parts = static_cast<unsigned>(std::clamp<std::size_t>(
+      num_shells / kLeastShellsPerThread, 1, std::max(worker_threads(), 1u)));
+  run_parts(parts, [&](unsigned part) {
+    const Index end = static_cast<Index>(part_begin(num_shells, parts, part + 1));
+    for (Index s = static_cast<Index>(part_begin(num_shells, parts, part)); s < end; ++s) {
+      const auto [first, last] = grid.at((box[s].min + box[s].max) * 0.5);
+      for (const Index* it = first; it != last; ++it) {
+        const Index t = *it;
+        if (t == s || !box[t].contains(box[s]))
+          continue;
+        const Index* t_first = shell_faces.data() + shell_begin[t];
+        const Index* t_last = shell_faces.data() + shell_begin[t + 1];
+        // Up to kTries points spread over S: inside only if every decided one is.
+        const std::size_t n = shell_begin[s + 1] - shell_begin[s];
+        const std::size_t tries = std::min(kTries, n);
+        bool inside = false;
+        for (std::size_t k = 0; k < tries; ++k) {
+          const Index f = shell_faces[shell_begin[s] + k * n / tries];
+          const double w =
+              std::abs(winding_number(soup, flipped, t_first, t_last, centroid(soup, f)));
+          if (std::isnan(w))
+            continue;  // the point lies on T: undecided
+          if (w > 1 - kDecided && std::abs(w - std::round(w)) < kDecided) {
+            inside = true;
+          } else {
+            inside = false;  // outside, or crossing T: not nested
+            break;
+          }
         }
+        depth[s] += inside ? 1 : 0;
       }
-      depth[s] += inside ? 1 : 0;
     }
-  }
+  });
   return depth;
 }
 

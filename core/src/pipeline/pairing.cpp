@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline/pairing.h"
 
+#include "parallel_parts.h"
 #include "pipeline/angular_order.h"
 #include "union_find.h"
 
@@ -17,12 +18,14 @@ void pair(std::vector<Index>& mate, Index a, Index b) {
 }
 
 // Combinatorial rule over `sides` (in the order given): opposite-running sides first come,
-// first paired.
+// first paired. `waiting` is scratch space (kept between calls: no allocation per edge).
 void pair_opposite_in_order(const Soup& soup, const CornerFaces& corner_face,
-                            const std::vector<Index>& sides, std::vector<Index>& mate) {
+                            const std::vector<Index>& sides, std::vector<Index>& mate,
+                            std::vector<Index> (&waiting)[2]) {
   // Each side takes the earliest still waiting side that runs the other way: the same pairs as
   // "each unpaired side takes the first later opposite one", in linear time.
-  std::vector<Index> waiting[2];
+  waiting[0].clear();
+  waiting[1].clear();
   std::size_t head[2] = {0, 0};
   for (Index side : sides) {
     if (mate[side] != kNoIndex)
@@ -46,6 +49,17 @@ struct ContenderRange {
   std::size_t size() const { return static_cast<std::size_t>(last - first); }
   const OrderedSide& operator[](std::size_t i) const { return first[i]; }
 };
+
+// The angular orders of a share of the singular edges (edge i of the share: flat[order_begin[i]
+// .. order_begin[i + 1]]), and their sides without a direction (likewise in undirected).
+struct SortedEdges {
+  std::vector<OrderedSide> flat;
+  std::vector<Index> undirected;
+  std::vector<Index> order_begin, undirected_begin;
+};
+
+// Fewer singular edges than this per thread cost more to start a thread for than they save.
+constexpr std::size_t kLeastEdgesPerThread = 4096;
 
 // The side of a contender face that looks into the wedge after it (counter-clockwise) and the
 // one that looks into the wedge before it. Face side ids: 2f front, 2f+1 back.
@@ -124,11 +138,11 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
   if (singular.empty())
     return mate;
 
-  std::vector<Index> sides;
+  std::vector<Index> sides, waiting[2];
   const auto combinatorial = [&](std::size_t e) {
     sides.assign(bridges.contenders.begin() + bridges.begin[e],
                  bridges.contenders.begin() + bridges.begin[e + 1]);
-    pair_opposite_in_order(soup, corner_face, sides, mate);
+    pair_opposite_in_order(soup, corner_face, sides, mate, waiting);
   };
   if (policy == PairingPolicy::combinatorial) {
     for (Index e : singular)
@@ -137,33 +151,46 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
   }
 
   // Geometric: the angular order of every singular edge's contenders that have a direction
-  // there; those without one (flat against the edge) are kept aside per edge.
-  AngularSorter sorter;
-  std::vector<OrderedSide> order_scratch, flat;
-  flat.reserve(singular_sides);  // the sides with a direction: seldom fewer
-  std::vector<Index> undirected_scratch, undirected;
-  std::vector<Index> order_begin(singular.size() + 1, 0);
-  std::vector<Index> undirected_begin(singular.size() + 1, 0);
-  for (std::size_t s = 0; s < singular.size(); ++s) {
-    const Index e = singular[s];
-    sorter.sort(soup, grouped, e, bridges.contenders.data() + bridges.begin[e],
-                bridges.contenders.data() + bridges.begin[e + 1], order_scratch,
-                undirected_scratch);
-    if (order_scratch.size() >= 2) {
-      flat.insert(flat.end(), order_scratch.begin(), order_scratch.end());
-      undirected.insert(undirected.end(), undirected_scratch.begin(), undirected_scratch.end());
-    } else {  // nothing to order: every side waits for elimination, in face-key order
-      std::vector<Index> waiting(undirected_scratch);
-      for (const OrderedSide& o : order_scratch)
-        waiting.push_back(o.side);
-      sort_by_face_key(soup, corner_face, waiting);
-      undirected.insert(undirected.end(), waiting.begin(), waiting.end());
+  // there; those without one (flat against the edge) are kept aside per edge. Edges are
+  // independent: with several threads each sorts a share of them into buffers of its own.
+  const unsigned parts = static_cast<unsigned>(std::clamp<std::size_t>(
+      singular.size() / kLeastEdgesPerThread, 1, std::max(worker_threads(), 1u)));
+  std::vector<SortedEdges> sorted(parts);
+  run_parts(parts, [&](unsigned t) {
+    SortedEdges& part = sorted[t];
+    const std::size_t first = part_begin(singular.size(), parts, t);
+    const std::size_t last = part_begin(singular.size(), parts, t + 1);
+    AngularSorter sorter;
+    std::vector<OrderedSide> order_scratch;
+    std::vector<Index> undirected_scratch;
+    part.flat.reserve(singular_sides / parts + 64);  // the sides with a direction: seldom fewer
+    part.order_begin.assign(1, 0);
+    part.undirected_begin.assign(1, 0);
+    for (std::size_t s = first; s < last; ++s) {
+      const Index e = singular[s];
+      sorter.sort(soup, grouped, e, bridges.contenders.data() + bridges.begin[e],
+                  bridges.contenders.data() + bridges.begin[e + 1], order_scratch,
+                  undirected_scratch);
+      if (order_scratch.size() >= 2) {
+        part.flat.insert(part.flat.end(), order_scratch.begin(), order_scratch.end());
+        part.undirected.insert(part.undirected.end(), undirected_scratch.begin(),
+                               undirected_scratch.end());
+      } else {  // nothing to order: every side waits for elimination, in face-key order
+        std::vector<Index> waiting_sides(undirected_scratch);
+        for (const OrderedSide& o : order_scratch)
+          waiting_sides.push_back(o.side);
+        sort_by_face_key(soup, corner_face, waiting_sides);
+        part.undirected.insert(part.undirected.end(), waiting_sides.begin(), waiting_sides.end());
+      }
+      part.order_begin.push_back(static_cast<Index>(part.flat.size()));
+      part.undirected_begin.push_back(static_cast<Index>(part.undirected.size()));
     }
-    order_begin[s + 1] = static_cast<Index>(flat.size());
-    undirected_begin[s + 1] = static_cast<Index>(undirected.size());
-  }
-  const auto order_of = [&](std::size_t s) {
-    return ContenderRange{flat.data() + order_begin[s], flat.data() + order_begin[s + 1]};
+  });
+  const auto order_of = [&](std::size_t s, unsigned t) {
+    const SortedEdges& part = sorted[t];
+    const std::size_t i = s - part_begin(singular.size(), parts, t);
+    return ContenderRange{part.flat.data() + part.order_begin[i],
+                          part.flat.data() + part.order_begin[i + 1]};
   };
 
   // Regions of space: face sides joined across every wedge. Face side 2f looks the way the
@@ -183,8 +210,10 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
       regions.unite(2 * fa + 1, 2 * fb + (opposite ? 1 : 0));
     }
   }
-  for (std::size_t s = 0; s < singular.size(); ++s) {
-    const ContenderRange order = order_of(s);
+  for (std::size_t s = 0, part = 0; s < singular.size(); ++s) {
+    while (s >= part_begin(singular.size(), parts, part + 1))
+      ++part;
+    const ContenderRange order = order_of(s, part);
     for (std::size_t t = 0; t < order.size(); ++t) {
       const OrderedSide& a = order[t];
       const OrderedSide& b = order[(t + 1) % order.size()];
@@ -197,31 +226,39 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
   // it is a sheet.
   const std::vector<char> sheet = sheets(soup, std::move(regions));
 
-  std::vector<OrderedSide> cycle;
-  for (std::size_t s = 0; s < singular.size(); ++s) {
-    const ContenderRange order = order_of(s);
-    // (a) solids first: the sheets are taken out of the cycle.
-    cycle.clear();
-    for (const auto& c : order)
-      if (!sheet[corner_face[c.side]])
-        cycle.push_back(c);
-    pair_behind_neighbours(cycle, mate);
-    // (b) everything still unpaired.
-    cycle.clear();
-    for (const auto& c : order)
-      if (mate[c.side] == kNoIndex)
-        cycle.push_back(c);
-    pair_behind_neighbours(cycle, mate);
-    // (c) elimination, opposite-running only: what is left in cyclic order, then the sides
-    //     without a direction, in face-key order.
-    sides.clear();
-    for (const auto& c : cycle)
-      if (mate[c.side] == kNoIndex)
-        sides.push_back(c.side);
-    sides.insert(sides.end(), undirected.begin() + undirected_begin[s],
-                 undirected.begin() + undirected_begin[s + 1]);
-    pair_opposite_in_order(soup, corner_face, sides, mate);
-  }
+  // Each edge's pairs touch only its own sides: the edges are paired in the same shares.
+  run_parts(parts, [&](unsigned t) {
+    const SortedEdges& part = sorted[t];
+    const std::size_t first = part_begin(singular.size(), parts, t);
+    const std::size_t last = part_begin(singular.size(), parts, t + 1);
+    std::vector<OrderedSide> cycle;
+    std::vector<Index> edge_sides, waiting_scratch[2];
+    for (std::size_t s = first; s < last; ++s) {
+      const ContenderRange order = order_of(s, t);
+      // (a) solids first: the sheets are taken out of the cycle.
+      cycle.clear();
+      for (const auto& c : order)
+        if (!sheet[corner_face[c.side]])
+          cycle.push_back(c);
+      pair_behind_neighbours(cycle, mate);
+      // (b) everything still unpaired.
+      cycle.clear();
+      for (const auto& c : order)
+        if (mate[c.side] == kNoIndex)
+          cycle.push_back(c);
+      pair_behind_neighbours(cycle, mate);
+      // (c) elimination, opposite-running only: what is left in cyclic order, then the sides
+      //     without a direction, in face-key order.
+      edge_sides.clear();
+      for (const auto& c : cycle)
+        if (mate[c.side] == kNoIndex)
+          edge_sides.push_back(c.side);
+      const std::size_t i = s - first;
+      edge_sides.insert(edge_sides.end(), part.undirected.begin() + part.undirected_begin[i],
+                        part.undirected.begin() + part.undirected_begin[i + 1]);
+      pair_opposite_in_order(soup, corner_face, edge_sides, mate, waiting_scratch);
+    }
+  });
   return mate;
 }
 

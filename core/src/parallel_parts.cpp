@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "io/parallel_parts.h"
+#include "parallel_parts.h"
 
 #include <sched.h>
 #include <algorithm>
@@ -11,7 +11,7 @@
 
 namespace meshbridge::detail {
 
-unsigned reading_threads() {
+unsigned worker_threads() {
   const char* text = std::getenv("MESHBRIDGE_THREADS");
   if (text == nullptr)
     return 1;

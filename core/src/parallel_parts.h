@@ -14,7 +14,7 @@ namespace meshbridge::detail {
 //! under `taskset -c 0` it is 1), at most 8; unset or anything else: 1. One is the default
 //! because two threads gave no gain on the 2-core machines this was measured on, shared with
 //! other work (see the commit that made it so). Read on every call, so a test may change it.
-unsigned reading_threads();
+unsigned worker_threads();
 
 //! Runs `part(k)` for every k in [0, n): part 0 on the calling thread, each other one on a thread
 //! of its own; returns when all have ended. If parts throw, the exception of the lowest k is
