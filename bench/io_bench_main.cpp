@@ -9,8 +9,9 @@
 //   parse FILE                  MeshBridge's read_soup (parse, validate, account)
 //   floor FILE                  the floor: mmap + one pass over the bytes (text: every number
 //                               through std::from_chars; binary: every 4-byte word summed)
-//   split FILE [RUNS]           in one process: floor and parse alternating 3 x RUNS (5) times
-//                               (fastest and median of each), then detect, repair and write,
+//   split FILE [RUNS]           in one process: floor, parse and parse with one thread
+//                               (MESHBRIDGE_THREADS=1) alternating 3 x RUNS (5) times (fastest
+//                               and median of each), then detect, repair and write,
 //                               best of RUNS: the parse/floor ratio and the parse/compute/write
 //                               split measured side by side
 //
@@ -142,14 +143,23 @@ std::pair<double, double> min_and_median(std::vector<double>& samples) {
 int split(const std::string& path, int runs) {
   const std::string ext = path.substr(path.find_last_of('.'));
   const std::string out = "/tmp/meshbridge_io_bench_split" + ext;
-  std::vector<double> floor_s, parse_s;
+  std::vector<double> floor_s, parse_s, one_thread_s;
   std::size_t numbers = 0, faces = 0;
+  const char* threads = std::getenv("MESHBRIDGE_THREADS");
+  const std::string chosen = threads != nullptr ? threads : "";
   for (int r = 0; r < 3 * runs; ++r) {
     floor_s.push_back(seconds_of([&] { floor_sum(path, numbers); }));
     parse_s.push_back(seconds_of([&] { faces = read_soup(path).num_faces(); }));
+    setenv("MESHBRIDGE_THREADS", "1", 1);
+    one_thread_s.push_back(seconds_of([&] { read_soup(path); }));
+    if (threads != nullptr)
+      setenv("MESHBRIDGE_THREADS", chosen.c_str(), 1);
+    else
+      unsetenv("MESHBRIDGE_THREADS");
   }
   const auto [floor_min, floor_median] = min_and_median(floor_s);
   const auto [parse_min, parse_median] = min_and_median(parse_s);
+  const double one_thread_min = min_and_median(one_thread_s).first;
   double repair_s = 1e9, write_s = 1e9, detect_s = 1e9;
   for (int r = 0; r < runs; ++r) {
     const Soup soup = read_soup(path);
@@ -161,9 +171,11 @@ int split(const std::string& path, int runs) {
   std::remove(out.c_str());
   std::printf(
       "split %s (%zu faces): floor %.4f s, parse %.4f s (%.2fx floor; medians of %d: %.4f s, "
-      "%.4f s, %.2fx), detect %.4f s, repair %.4f s, write %.4f s (best of %d)\n",
+      "%.4f s, %.2fx; one thread %.4f s, %.2fx), detect %.4f s, repair %.4f s, write %.4f s "
+      "(best of %d)\n",
       path.c_str(), faces, floor_min, parse_min, parse_min / floor_min, 3 * runs, floor_median,
-      parse_median, parse_median / floor_median, detect_s, repair_s, write_s, runs);
+      parse_median, parse_median / floor_median, one_thread_min, one_thread_min / floor_min,
+      detect_s, repair_s, write_s, runs);
   return 0;
 }
 

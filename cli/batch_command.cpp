@@ -98,6 +98,8 @@ void write_all(int fd, const std::string& data) {
 }
 
 [[noreturn]] void run_child(const FileJob& job, const FileJobOptions& options, int fd) {
+  // The files are the parallel work: one thread per file unless the user chose otherwise.
+  ::setenv("MESHBRIDGE_THREADS", "1", 0);
   Entry entry;
   try {
     take_result(entry, run_file_job(job, options), job);

@@ -66,7 +66,7 @@ void wrap_descriptions(CLI::App& app) {
   }
 }
 
-//! MESHBRIDGE_THREADS as the readers take it: unset, `auto` or a whole number >= 1. The core
+//! MESHBRIDGE_THREADS as the core takes it: unset, `auto` or a whole number >= 1. The core
 //! reads anything else as 1; the tool says so instead of ignoring a typo.
 bool threads_variable_is_valid() {
   const char* text = std::getenv("MESHBRIDGE_THREADS");

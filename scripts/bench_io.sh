@@ -15,8 +15,8 @@
 # on a 3D checkerboard of 1.05M triangles, a clean torus of 1.05M and the 5M checkerboard, each
 # as .obj .off .ply .stl. Every row runs ROUNDS times (default 2) interleaved with the others;
 # the table keeps the best wall time, the best CPU time (user + sys) and the largest peak RSS.
-# meshbridge check/repair also run pinned to one core (taskset -c 0): the 1-core figures; and
-# parse, check and repair with MESHBRIDGE_THREADS=2 (the readers' two-part reading): 2 threads.
+# MeshBridge uses every CPU it may (at most 8) by default; parse, check and repair also run with
+# MESHBRIDGE_THREADS=1 (one thread, both cores free) and pinned to one core (taskset -c 0).
 # Ratios are to OpenMesh read (check, parse) and OpenMesh read + write (repair, meshlabserver).
 # Also prints the in-process split (meshbridge-parse-bench split: parse vs floor alternating 9
 # times, then detect, repair, write, best of 3).
@@ -93,15 +93,15 @@ for model in $models; do
     for ((r = 0; r < rounds; ++r)); do
       run "$model.$fmt floor" "$parsebench" floor "$f"
       run "$model.$fmt parse" "$parsebench" parse "$f"
-      run "$model.$fmt parse_2threads" env MESHBRIDGE_THREADS=2 "$parsebench" parse "$f"
+      run "$model.$fmt parse_1thread" env MESHBRIDGE_THREADS=1 "$parsebench" parse "$f"
       run "$model.$fmt openmesh_read" "$iobench" openmesh-read "$f"
       run "$model.$fmt check" "$meshbridge" check "$f"
       run "$model.$fmt check_1core" taskset -c 0 "$meshbridge" check "$f"
-      run "$model.$fmt check_2threads" env MESHBRIDGE_THREADS=2 "$meshbridge" check "$f"
+      run "$model.$fmt check_1thread" env MESHBRIDGE_THREADS=1 "$meshbridge" check "$f"
       run "$model.$fmt openmesh_rw" "$iobench" openmesh-readwrite "$f" "$tmp/om.$fmt"
       run "$model.$fmt repair" "$meshbridge" repair "$f" "$tmp/mb.$fmt"
       run "$model.$fmt repair_1core" taskset -c 0 "$meshbridge" repair "$f" "$tmp/mb.$fmt"
-      run "$model.$fmt repair_2threads" env MESHBRIDGE_THREADS=2 "$meshbridge" repair "$f" "$tmp/mb.$fmt"
+      run "$model.$fmt repair_1thread" env MESHBRIDGE_THREADS=1 "$meshbridge" repair "$f" "$tmp/mb.$fmt"
       if [ "$have_meshlab" = 1 ] && [ "$model" != checkerboard_5m ]; then
         run_meshlab "$model.$fmt meshlab" "$f" "$tmp/ml.$fmt"
       fi
@@ -119,7 +119,8 @@ load="$(cut -d' ' -f1-3 /proc/loadavg)"
     "load average at the end $load (other jobs share the machine: compare the ratios, which are" \
     "measured side by side, not the absolute times). Each row: best of $rounds interleaved" \
     "runs; CPU = user + sys; peak = largest resident set. *1 core* = pinned with taskset -c 0;" \
-    "*MESHBRIDGE_THREADS=2* = binary STL, binary PLY and OBJ read in two parts side by side." \
+    "MeshBridge rows without a note use both cores (the default); *MESHBRIDGE_THREADS=1* = one" \
+    "thread." \
     "meshlabserver: MeshLab 2020.09 under xvfb-run (X start not timed; not run on 5M)."
   echo
   echo "| file | step | wall s | CPU s | peak MiB | wall / OpenMesh | CPU / OpenMesh | peak / OpenMesh |"
@@ -133,17 +134,17 @@ load="$(cut -d' ' -f1-3 /proc/loadavg)"
       if (!(key in seen)) { seen[key] = 1; order[++n] = key }
     }
     END {
-      split("floor parse parse_2threads openmesh_read check check_1core check_2threads openmesh_rw repair repair_1core repair_2threads meshlab", steps, " ")
+      split("floor parse parse_1thread openmesh_read check check_1thread check_1core openmesh_rw repair repair_1thread repair_1core meshlab", steps, " ")
       names["floor"] = "mmap + from_chars floor"; names["parse"] = "MeshBridge parse (read_soup)"
       names["openmesh_read"] = "OpenMesh read_mesh"; names["check"] = "meshbridge check"
       names["check_1core"] = "meshbridge check, 1 core"; names["openmesh_rw"] = "OpenMesh read + write"
       names["repair"] = "meshbridge repair IN OUT"; names["repair_1core"] = "meshbridge repair, 1 core"
       names["meshlab"] = "meshlabserver load + save"
-      names["parse_2threads"] = "MeshBridge parse, MESHBRIDGE_THREADS=2"
-      names["check_2threads"] = "meshbridge check, MESHBRIDGE_THREADS=2"
-      names["repair_2threads"] = "meshbridge repair, MESHBRIDGE_THREADS=2"
-      base["parse_2threads"] = "openmesh_read"; base["check_2threads"] = "openmesh_read"
-      base["repair_2threads"] = "openmesh_rw"
+      names["parse_1thread"] = "MeshBridge parse, MESHBRIDGE_THREADS=1"
+      names["check_1thread"] = "meshbridge check, MESHBRIDGE_THREADS=1"
+      names["repair_1thread"] = "meshbridge repair, MESHBRIDGE_THREADS=1"
+      base["parse_1thread"] = "openmesh_read"; base["check_1thread"] = "openmesh_read"
+      base["repair_1thread"] = "openmesh_rw"
       base["floor"] = "openmesh_read"; base["parse"] = "openmesh_read"; base["openmesh_read"] = "openmesh_read"
       base["check"] = "openmesh_read"; base["check_1core"] = "openmesh_read"
       base["openmesh_rw"] = "openmesh_rw"; base["repair"] = "openmesh_rw"
@@ -163,8 +164,9 @@ load="$(cut -d' ' -f1-3 /proc/loadavg)"
     }' "$tmp/raw"
   echo
   echo "In one process (meshbridge-parse-bench split): parse next to its floor, alternating 9 times"
-  echo "(fastest of each, medians in brackets), then the parse / compute / write split of \`repair\`,"
-  echo "best of 3 (detect is the report \`check\` prints)."
+  echo "(fastest of each, medians in brackets; parse with the default threads, and with one),"
+  echo "then the parse / compute / write split of \`repair\`, best of 3 (detect is the report"
+  echo "\`check\` prints)."
   echo
   sed 's/^/    /' "$tmp/split"
 } >"$out"

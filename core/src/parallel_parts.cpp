@@ -13,9 +13,7 @@ namespace meshbridge::detail {
 
 unsigned worker_threads() {
   const char* text = std::getenv("MESHBRIDGE_THREADS");
-  if (text == nullptr)
-    return 1;
-  if (std::string_view(text) == "auto") {
+  if (text == nullptr || std::string_view(text) == "auto") {
     cpu_set_t set;
     CPU_ZERO(&set);
     int cpus = 1;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Running a reader's parts side by side: how many threads reading may use, and one call that
-// runs part k of n on its own thread and passes on the first part's error.
+// Running parts of one job side by side: how many threads MeshBridge may use for one mesh, and
+// one call that runs part k of n on its own thread and passes on the first part's error.
 
 #include <algorithm>
 #include <cstddef>
@@ -9,11 +9,11 @@
 
 namespace meshbridge::detail {
 
-//! Threads a reader may use: the environment variable MESHBRIDGE_THREADS when it holds a whole
-//! number >= 1 (at most 64); "auto": the CPUs this process may run on (its affinity mask, so
-//! under `taskset -c 0` it is 1), at most 8; unset or anything else: 1. One is the default
-//! because two threads gave no gain on the 2-core machines this was measured on, shared with
-//! other work (see the commit that made it so). Read on every call, so a test may change it.
+//! Threads MeshBridge may use for one mesh (readers in parts, repair's steps in shares): the
+//! environment variable MESHBRIDGE_THREADS when it holds a whole number >= 1 (at most 64);
+//! unset or "auto": the CPUs this process may run on (its affinity mask, so under
+//! `taskset -c 0` it is 1), at most 8; anything else: 1. Every count gives the same result.
+//! Read on every call, so a test may change it.
 unsigned worker_threads();
 
 //! Runs `part(k)` for every k in [0, n): part 0 on the calling thread, each other one on a thread

@@ -107,7 +107,9 @@ def _job_options(options: Dict[str, Any]) -> "_core.FileJobOptions":
 def run_file(job: Tuple[str, str, str, str], options: Dict[str, Any]) -> Tuple[str, str, str]:
     """One task: read -> repair -> write ``job`` = (input, output, name, output_name) with the
     core's run_file_job; returns (status, reason, record). Runs on a Dask worker; the GIL is
-    released while the core works."""
+    released while the core works. The files are the parallel work: the core uses one thread
+    per file unless MESHBRIDGE_THREADS says otherwise."""
+    os.environ.setdefault("MESHBRIDGE_THREADS", "1")
     return _core.run_file_job(*job, _job_options(options))
 
 
