@@ -154,16 +154,17 @@ Point to_point(const FloatKey& key) {
   return Point(xyz[0], xyz[1], xyz[2]);
 }
 
-//! Welds the part's corners into its table, writing each corner's part vertex to `out` (one per
-//! corner of the part). The part's new positions go to `positions` if given (the first part: its
-//! numbers are the soup's), else to `part.keys`. Every corner probes the table: a small cache of
-//! recent positions in front of it (one probe less for most corners) made the weld 1.5-2.4x
-//! slower on the 2-core machines of bench/results.md, its hits and misses being unpredictable
-//! branches and its slots a second random read.
-void weld_part(const CornerKeys& corner_keys, Part& part, Index* out,
+//! Welds the part's corners into its table, appending each corner's part vertex to `out`. The
+//! part's new positions go to `positions` if given (the first part: its numbers are the soup's),
+//! else to `part.keys`. Every corner probes the table: a small cache of recent positions in front
+//! of it (one probe less for most corners) made the weld 1.5-2.4x slower on the 2-core machines of
+//! bench/results.md, its hits and misses being unpredictable branches and its slots a second random
+//! read.
+void weld_part(const CornerKeys& corner_keys, Part& part, std::vector<Index>& out,
                std::vector<Point>* positions) {
   FloatKey keys[2][kBlock];
   std::uint32_t hashes[2][kBlock];
+  Index vertices[kBlock];  // the block's, appended to `out` at once (one pass over `out`)
   const auto load = [&](std::size_t c, int b) {
     const std::size_t n = std::min(kBlock, part.last - c);
     corner_keys(c, n, keys[b]);
@@ -188,8 +189,9 @@ void weld_part(const CornerKeys& corner_keys, Part& part, Index* out,
         positions->push_back(to_point(key));
       else if (added)
         part.keys.push_back(key);
-      *out++ = v;
+      vertices[i] = v;
     }
+    out.insert(out.end(), vertices, vertices + n);
     c = next;
     n = following;
   }
@@ -266,10 +268,9 @@ void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, S
   constexpr std::size_t kLeastPart = 3 * 8192;
   const unsigned n = static_cast<unsigned>(
       std::clamp<std::size_t>(corners / kLeastPart, 1, std::max(threads, 1u)));
-  // Every corner's vertex is written in place: the first part's directly, the others' after
-  // the merge below.
+  // The first part appends its corners' vertices to the soup; the others' are written in place
+  // after the merge below.
   reserve_huge(soup.corner_vertices, corners);
-  soup.corner_vertices.resize(corners);
   // A closed triangle mesh has about half as many vertices as triangles, a part border a few more.
   reserve_huge(soup.positions, corners / 5 + 16);
   std::vector<Part> parts;
@@ -279,12 +280,11 @@ void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, S
   run_parts(n, [&](unsigned k) {
     Part& part = parts[k];
     if (k == 0) {
-      weld_part(corner_keys, part, soup.corner_vertices.data(), &soup.positions);
+      weld_part(corner_keys, part, soup.corner_vertices, &soup.positions);
       return;
     }
     reserve_huge(part.corners, part.last - part.first);
-    part.corners.resize(part.last - part.first);
-    weld_part(corner_keys, part, part.corners.data(), nullptr);
+    weld_part(corner_keys, part, part.corners, nullptr);
   });
   find_in_earlier_parts(parts, n);
   number_later_parts(parts, soup.positions);
@@ -292,10 +292,16 @@ void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, S
     part.table.release();
     std::vector<FloatKey>().swap(part.keys);
   }
-  // Corner c of the file is soup corner c: triangle f begins at corner 3f. The corners of the
-  // parts after the first and the face starts are written side by side.
+  // Corner c of the file is soup corner c: triangle f begins at corner 3f. With several parts,
+  // the corners of the parts after the first and the face starts are written side by side.
   soup.face_begin.clear();
   reserve_huge(soup.face_begin, triangles + 1);
+  if (n == 1) {
+    for (std::size_t f = 0; f <= triangles; ++f)
+      soup.face_begin.push_back(static_cast<Index>(3 * f));
+    return;
+  }
+  soup.corner_vertices.resize(corners);
   soup.face_begin.resize(triangles + 1);
   const std::size_t later = parts[0].last;
   run_parts(n, [&](unsigned t) {
