@@ -2,11 +2,13 @@
 #include "pipeline/nesting.h"
 
 #include "parallel_parts.h"
+#include "pipeline/ray_crossings.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace meshbridge::detail {
 
@@ -16,6 +18,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDecided = 0.1;   // |w - round(w)| below this decides inside / outside
 constexpr std::size_t kTries = 8;  // sample points of a shell
 constexpr std::size_t kMaxCells = std::size_t{1} << 21;
+// Shells of at least this many faces answer inside tests by ray crossings.
+constexpr std::size_t kRayFaces = 256;
 
 struct Box {
   Point min{1e300, 1e300, 1e300};
@@ -197,6 +201,25 @@ std::vector<Index> nesting_depths(const Soup& soup, const std::vector<char>& fli
   // Only shells listed in the grid cell of S's box centre can contain S. Each shell's depth is
   // its own: with several threads, each takes a share of the shells.
   const BoxGrid grid(box);
+  // A shell of many faces that may contain others answers by ray crossings (RayCrossings):
+  // the solid-angle sum would cost all its faces for every point of every shell inside its box.
+  std::vector<std::unique_ptr<RayCrossings>> rays(num_shells);
+  {
+    std::vector<char> container(num_shells, 0);
+    for (Index s = 0; s < num_shells; ++s) {
+      const auto [first, last] = grid.at((box[s].min + box[s].max) * 0.5);
+      for (const Index* it = first; it != last; ++it) {
+        if (*it != s && box[*it].contains(box[s]))
+          container[*it] = 1;
+      }
+    }
+    for (Index t = 0; t < num_shells; ++t) {
+      if (container[t] && shell_begin[t + 1] - shell_begin[t] >= kRayFaces) {
+        rays[t] = std::make_unique<RayCrossings>(soup, flipped, shell_faces.data() + shell_begin[t],
+                                                 shell_faces.data() + shell_begin[t + 1]);
+      }
+    }
+  }
   constexpr std::size_t kLeastShellsPerThread = 2048;
   const unsigned parts = static_cast<unsigned>(std::clamp<std::size_t>(
       num_shells / kLeastShellsPerThread, 1, std::max(worker_threads(), 1u)));
@@ -216,8 +239,10 @@ std::vector<Index> nesting_depths(const Soup& soup, const std::vector<char>& fli
         bool inside = false;
         for (std::size_t k = 0; k < tries; ++k) {
           const Index f = shell_faces[shell_begin[s] + k * n / tries];
+          const Point point = centroid(soup, f);
           const double w =
-              std::abs(winding_number(soup, flipped, t_first, t_last, centroid(soup, f)));
+              std::abs(rays[t] != nullptr ? rays[t]->at(point)
+                                          : winding_number(soup, flipped, t_first, t_last, point));
           if (std::isnan(w))
             continue;  // the point lies on T: undecided
           if (w > 1 - kDecided && std::abs(w - std::round(w)) < kDecided) {
