@@ -26,14 +26,7 @@ using namespace meshbridge;
 
 namespace {
 
-//! Sets MESHBRIDGE_THREADS for its lifetime.
-class ThreadsSetting {
- public:
-  explicit ThreadsSetting(unsigned n) {
-    setenv("MESHBRIDGE_THREADS", std::to_string(n).c_str(), 1);
-  }
-  ~ThreadsSetting() { unsetenv("MESHBRIDGE_THREADS"); }
-};
+using test_support::ThreadsSetting;
 
 struct Reading {
   Soup soup;

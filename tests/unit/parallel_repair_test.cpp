@@ -21,14 +21,7 @@ using namespace meshbridge;
 
 namespace {
 
-//! Sets MESHBRIDGE_THREADS for its lifetime.
-class ThreadsSetting {
- public:
-  explicit ThreadsSetting(unsigned n) {
-    setenv("MESHBRIDGE_THREADS", std::to_string(n).c_str(), 1);
-  }
-  ~ThreadsSetting() { unsetenv("MESHBRIDGE_THREADS"); }
-};
+using test_support::ThreadsSetting;
 
 //! Adds an axis-aligned cube of edge `size` at `corner`, facing outward (or inward: a cavity).
 void add_cube(Soup& soup, const Point& corner, double size, bool inward) {
@@ -84,12 +77,7 @@ void expect_same_for_every_thread_count(const Soup& input) {
     EXPECT_EQ(to_text(many.report), to_text(one.report));
     EXPECT_EQ(counts(many.report.before), counts(one.report.before));
     EXPECT_EQ(counts(many.report.after), counts(one.report.after));
-    EXPECT_EQ(many.mesh.soup.positions, one.mesh.soup.positions);
-    EXPECT_EQ(many.mesh.soup.face_begin, one.mesh.soup.face_begin);
-    EXPECT_EQ(many.mesh.soup.corner_vertices, one.mesh.soup.corner_vertices);
-    EXPECT_EQ(many.mesh.vertex_origin, one.mesh.vertex_origin);
-    EXPECT_EQ(many.mesh.face_origin, one.mesh.face_origin);
-    EXPECT_EQ(many.mesh.corner_origin, one.mesh.corner_origin);
+    test_support::expect_same_mesh(many.mesh, one.mesh);
   }
 }
 

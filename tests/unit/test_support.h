@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <random>
+#include <string>
 
 namespace meshbridge::test_support {
 
@@ -134,6 +136,27 @@ inline Soup shuffled(const Soup& soup, std::uint32_t seed) {
     out.add_polygon(polygon);
   }
   return out;
+}
+
+//! Sets MESHBRIDGE_THREADS (the threads the core may use for one mesh) for its lifetime.
+class ThreadsSetting {
+ public:
+  explicit ThreadsSetting(unsigned n) {
+    setenv("MESHBRIDGE_THREADS", std::to_string(n).c_str(), 1);
+  }
+  ~ThreadsSetting() { unsetenv("MESHBRIDGE_THREADS"); }
+  ThreadsSetting(const ThreadsSetting&) = delete;
+  ThreadsSetting& operator=(const ThreadsSetting&) = delete;
+};
+
+//! Expects two meshes to be the same: positions, polygons and every origin.
+inline void expect_same_mesh(const IndexedMesh& a, const IndexedMesh& b) {
+  EXPECT_EQ(a.soup.positions, b.soup.positions);
+  EXPECT_EQ(a.soup.face_begin, b.soup.face_begin);
+  EXPECT_EQ(a.soup.corner_vertices, b.soup.corner_vertices);
+  EXPECT_EQ(a.vertex_origin, b.vertex_origin);
+  EXPECT_EQ(a.face_origin, b.face_origin);
+  EXPECT_EQ(a.corner_origin, b.corner_origin);
 }
 
 }  // namespace meshbridge::test_support
