@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The weld of STL corners. Where the time goes: one random probe of a table much larger than the
-// caches per corner. So each slot holds its whole key (one cache miss per probe, not two), the
+// caches per corner. So each slot is 8 bytes (a key's hash and its vertex: the table half as
+// large as one of whole keys; the key compared is the vertex's position, mostly in cache as a
+// file lists the faces around a vertex close together), the
 // slots of the next block of corners are prefetched while this block is looked up (no branch
 // between loading and prefetching), and the table lives on zero pages from the kernel (no
 // memset) backed by huge pages where granted (few TLB misses). With several threads, each part
@@ -23,17 +25,21 @@ namespace meshbridge::detail {
 
 namespace {
 
-//! One table entry: a key and its vertex + 1 (0: the slot is empty).
+//! One table entry: a key's hash and its vertex + 1 (0: the slot is empty). The key itself is
+//! the vertex's (its position, or the part's key list): half the table of whole keys, and a
+//! probe whose hash matches reads a position that a mesh file mostly used a moment ago.
 struct Slot {
-  FloatKey key;
+  std::uint32_t hash;
   std::uint32_t id;
-  bool holds(const FloatKey& k) const {  // not std::array's ==, which calls memcmp
-    return key[0] == k[0] && key[1] == k[1] && key[2] == k[2];
-  }
 };
-static_assert(sizeof(Slot) == 16, "four slots per cache line");
+static_assert(sizeof(Slot) == 8, "eight slots per cache line");
 
-//! An open-addressing (linear probing) table from FloatKey to vertex, at most 5/8 full.
+bool same_key(const FloatKey& a, const FloatKey& b) {  // not std::array's ==, which calls memcmp
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+//! An open-addressing (linear probing) table from FloatKey to vertex, at most 5/8 full. Lookups
+//! take `key_of(v)`: the key of vertex v.
 class WeldTable {
  public:
   explicit WeldTable(std::size_t expected_vertices) {
@@ -56,38 +62,41 @@ class WeldTable {
   std::size_t capacity() const { return mask_ + 1; }
   void prefetch(std::uint32_t hash) const { __builtin_prefetch(&slots_[hash & mask_]); }
 
-  //! Calls `visit(key, vertex)` for the keys in slots [first, last), in slot order.
+  //! Calls `visit(vertex)` for the vertices in slots [first, last), in slot order.
   template <class Visit>
   void for_each_in_slots(std::size_t first, std::size_t last, Visit&& visit) const {
     for (std::size_t s = first; s < last; ++s) {
       if (slots_[s].id != 0)
-        visit(slots_[s].key, slots_[s].id - 1);
+        visit(slots_[s].id - 1);
     }
   }
 
   //! The vertex of `key`, or kNoIndex.
-  Index find(const FloatKey& key, std::uint32_t hash) const {
+  template <class KeyOf>
+  Index find(const FloatKey& key, std::uint32_t hash, const KeyOf& key_of) const {
     for (std::size_t s = hash & mask_;; s = (s + 1) & mask_) {
       const Slot& slot = slots_[s];
       if (slot.id == 0)
         return kNoIndex;
-      if (slot.holds(key))
+      if (slot.hash == hash && same_key(key_of(slot.id - 1), key))
         return slot.id - 1;
     }
   }
-  //! The vertex of `key`; absent, it is added as vertex size() and `added` is set.
-  Index find_or_add(const FloatKey& key, std::uint32_t hash, bool& added) {
+  //! The vertex of `key`; absent, it is added as vertex size() and `added` is set (the caller
+  //! makes `key_of(size() - 1)` its key before the next lookup).
+  template <class KeyOf>
+  Index find_or_add(const FloatKey& key, std::uint32_t hash, bool& added, const KeyOf& key_of) {
     for (std::size_t s = hash & mask_;; s = (s + 1) & mask_) {
       Slot& slot = slots_[s];
       if (slot.id == 0) {
         const Index v = static_cast<Index>(size_);
-        slot = Slot{key, v + 1};
+        slot = Slot{hash, v + 1};
         added = true;
         if (++size_ * 8 > capacity() * 5)
           grow();
         return v;
       }
-      if (slot.holds(key))
+      if (slot.hash == hash && same_key(key_of(slot.id - 1), key))
         return slot.id - 1;
     }
   }
@@ -117,7 +126,7 @@ class WeldTable {
     for (std::size_t i = 0; i < old_capacity; ++i) {
       if (old[i].id == 0)
         continue;
-      std::size_t s = float_key_hash(old[i].key) & mask_;
+      std::size_t s = old[i].hash & mask_;
       while (slots_[s].id != 0)
         s = (s + 1) & mask_;
       slots_[s] = old[i];
@@ -154,6 +163,11 @@ Point to_point(const FloatKey& key) {
   return Point(xyz[0], xyz[1], xyz[2]);
 }
 
+//! The key of a position made by to_point() (exact: float -> double -> float).
+FloatKey key_of_point(const Point& p) {
+  return float_key(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]));
+}
+
 //! Welds the part's corners into its table, appending each corner's part vertex to `out`. The
 //! part's new positions go to `positions` if given (the first part: its numbers are the soup's),
 //! else to `part.keys`. Every corner probes the table: a small cache of recent positions in front
@@ -184,11 +198,18 @@ void weld_part(const CornerKeys& corner_keys, Part& part, std::vector<Index>& ou
     for (std::size_t i = 0; i < n; ++i) {
       const FloatKey& key = keys[b][i];
       bool added = false;
-      const Index v = part.table.find_or_add(key, hashes[b][i], added);
-      if (added && positions != nullptr)
-        positions->push_back(to_point(key));
-      else if (added)
-        part.keys.push_back(key);
+      Index v;
+      if (positions != nullptr) {
+        v = part.table.find_or_add(key, hashes[b][i], added,
+                                   [positions](Index u) { return key_of_point((*positions)[u]); });
+        if (added)
+          positions->push_back(to_point(key));
+      } else {
+        v = part.table.find_or_add(key, hashes[b][i], added,
+                                   [&part](Index u) { return part.keys[u]; });
+        if (added)
+          part.keys.push_back(key);
+      }
       vertices[i] = v;
     }
     out.insert(out.end(), vertices, vertices + n);
@@ -203,20 +224,26 @@ void weld_part(const CornerKeys& corner_keys, Part& part, std::vector<Index>& ou
 //! tables have the same capacity (parts of equal size), a key's probe in the earlier table starts
 //! at about the slot it has in its own: walking the later table in slot order then reads the
 //! earlier one nearly in order too, instead of one random slot per vertex.
-void find_in_earlier_parts(std::vector<Part>& parts, unsigned threads) {
+//! `positions` are the first part's vertices (the soup's so far).
+void find_in_earlier_parts(std::vector<Part>& parts, const std::vector<Point>& positions,
+                           unsigned threads) {
   for (std::size_t k = 1; k < parts.size(); ++k) {
     parts[k].vertex.assign(parts[k].keys.size(), kNoIndex);
     parts[k].earlier.assign(parts[k].keys.size(), 0);
   }
-  run_parts(threads, [&parts, threads](unsigned t) {
+  run_parts(threads, [&parts, &positions, threads](unsigned t) {
     for (std::size_t k = 1; k < parts.size(); ++k) {
       Part& part = parts[k];
       for (std::size_t j = 0; j < k; ++j) {
         const WeldTable& table = parts[j].table;
+        const std::vector<FloatKey>& earlier_keys = parts[j].keys;
         const auto look_up = [&](const FloatKey& key, Index l) {
           if (part.vertex[l] != kNoIndex)  // an earlier part has it
             return;
-          const Index found = table.find(key, float_key_hash(key));
+          const std::uint32_t hash = float_key_hash(key);
+          const Index found =
+              j == 0 ? table.find(key, hash, [&](Index u) { return key_of_point(positions[u]); })
+                     : table.find(key, hash, [&](Index u) { return earlier_keys[u]; });
           if (found != kNoIndex) {
             part.vertex[l] = found;
             part.earlier[l] = static_cast<std::uint8_t>(j);
@@ -225,7 +252,8 @@ void find_in_earlier_parts(std::vector<Part>& parts, unsigned threads) {
         if (table.capacity() == part.table.capacity()) {
           const std::size_t slots = part.table.capacity();
           part.table.for_each_in_slots(part_begin(slots, threads, t),
-                                       part_begin(slots, threads, t + 1), look_up);
+                                       part_begin(slots, threads, t + 1),
+                                       [&](Index l) { look_up(part.keys[l], l); });
           continue;
         }
         const std::size_t first = part_begin(part.keys.size(), threads, t);
@@ -286,7 +314,7 @@ void weld_triangle_corners(std::size_t corners, const CornerKeys& corner_keys, S
     reserve_huge(part.corners, part.last - part.first);
     weld_part(corner_keys, part, part.corners, nullptr);
   });
-  find_in_earlier_parts(parts, n);
+  find_in_earlier_parts(parts, soup.positions, n);
   number_later_parts(parts, soup.positions);
   for (Part& part : parts) {
     part.table.release();
