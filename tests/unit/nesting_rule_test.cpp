@@ -266,3 +266,21 @@ TEST(Orientation, many_cavities_in_a_finely_divided_block_face_the_void) {
     expect_volumes(s, to_original, expected);
   });
 }
+
+TEST(Orientation, cavity_on_the_grid_lines_of_a_finely_divided_block_faces_the_void) {
+  // A block of 10 x 10 quads a side (600 faces: inside tests by rays) and a cavity whose faces'
+  // centres lie on the block's grid lines and on its quads' diagonals: a ray along an axis would
+  // meet an edge from every sample point and leave the cavity undecided (it stayed a solid).
+  for (bool cavity_outward : {true, false}) {
+    SCOPED_TRACE(cavity_outward ? "cavity given outward" : "cavity given inward");
+    Soup soup;
+    add_divided_cube(soup, 0, 100, 10, true);
+    add_cube(soup, 30, 10, cavity_outward);
+    std::vector<double> expected(600, 1e6);
+    expected.insert(expected.end(), 6, -1000.0);
+    std::vector<Index> identity(soup.num_faces());
+    std::iota(identity.begin(), identity.end(), Index(0));
+    expect_volumes(soup, identity, expected);
+    EXPECT_EQ(repair(soup).report.faces_flipped, cavity_outward ? 6u : 0u);
+  }
+}

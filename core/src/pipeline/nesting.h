@@ -26,9 +26,9 @@ namespace meshbridge::detail {
 //! Candidates come from a uniform grid over the shells' boxes (about one cell per shell), so
 //! shells that do not nest cost O(#F + #shells); each candidate pair costs O(faces of T), except
 //! that a T of 256 faces or more that contains some box answers by ray crossings (RayCrossings:
-//! the integer winding number, undecided where the ray meets an edge or a corner), at about the
-//! triangles of one grid cell per point: many shells inside one large shell (cavities in a block,
-//! the cells of an inside-out grid) no longer cost #shells x #F.
+//! the integer winding number), at about the triangles of one grid cell per point, and by the
+//! solid angles only where its ray meets an edge or a corner: many shells inside one large shell
+//! (cavities in a block, the cells of an inside-out grid) no longer cost #shells x #F.
 std::vector<Index> nesting_depths(const Soup& soup, const std::vector<char>& flipped,
                                   const std::vector<Index>& face_shell, std::size_t num_shells);
 

@@ -9,6 +9,22 @@ namespace meshbridge::detail {
 
 namespace {
 
+// The ray's direction and two axes across it. Axis-aligned rays would pass through the edges of
+// axis-aligned models (CAD grids, voxel shells) all the time, leaving points undecided; this
+// direction is generic, so such coincidences need more than a grid to happen.
+struct Frame {
+  Point u, v, d;
+  Frame() {
+    d = Point(0.3181, 0.5477, 0.7739).normalized();
+    u = OpenMesh::cross(d, Point(1, 0, 0)).normalized();
+    v = OpenMesh::cross(d, u);
+  }
+  Point operator()(const Point& p) const {
+    return Point(OpenMesh::dot(p, u), OpenMesh::dot(p, v), OpenMesh::dot(p, d));
+  }
+};
+const Frame kFrame;
+
 // Twice the signed area of (a, b, c) projected on the xy plane: > 0 counter-clockwise.
 double orient_xy(const Point& a, const Point& b, const Point& c) {
   return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
@@ -28,8 +44,8 @@ RayCrossings::RayCrossings(const Soup& soup, const std::vector<char>& flipped,
   for (const Index* f = faces_begin; f != faces_end; ++f) {
     const PolygonView polygon = soup.polygon(*f);
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      Triangle t{soup.positions[polygon[0]], soup.positions[polygon[i]],
-                 soup.positions[polygon[i + 1]], 0};
+      Triangle t{kFrame(soup.positions[polygon[0]]), kFrame(soup.positions[polygon[i]]),
+                 kFrame(soup.positions[polygon[i + 1]]), 0};
       if (flipped[*f])
         std::swap(t.b, t.c);
       t.z_normal = orient_xy(t.a, t.b, t.c);
@@ -93,9 +109,10 @@ std::size_t RayCrossings::cell(double value, int axis) const {
   return std::min(cells_[axis] - 1, static_cast<std::size_t>(std::max(0.0, t)));
 }
 
-double RayCrossings::at(const Point& p) const {
+double RayCrossings::at(const Point& position) const {
   if (triangles_.empty())
     return 0;
+  const Point p = kFrame(position);
   if (p[0] < min_[0] || p[1] < min_[1] || p[0] > min_[0] + extent_[0] ||
       p[1] > min_[1] + extent_[1])
     return 0;  // the ray misses the shell's projection

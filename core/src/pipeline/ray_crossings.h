@@ -11,19 +11,20 @@ namespace meshbridge::detail {
 
 //! A closed, consistently oriented shell (the given faces of `soup`, face f reversed where
 //! flipped[f]) prepared for winding-number queries: each polygon as a fan of triangles from its
-//! first corner, projected on the xy plane and listed in a uniform grid of cells (about one
-//! triangle per cell, at most 1024 a side), so a query costs the triangles of one cell instead of
-//! every face. The winding number at p is the number of triangles the ray from p toward +z
-//! leaves the shell through (normal with +z component) minus those it enters through: for points
-//! off a closed shell, the same integer the generalized winding number gives.
+//! first corner, projected on the plane across a fixed generic direction d (no axis, so the rays
+//! of axis-aligned models do not run along their edges) and listed in a uniform grid of cells
+//! (about one triangle per cell, at most 1024 a side), so a query costs the triangles of one cell
+//! instead of every face. The winding number at p is the number of triangles the ray from p
+//! along d leaves the shell through minus those it enters through: for points off a closed
+//! shell, the same integer the generalized winding number gives.
 class RayCrossings {
  public:
   RayCrossings(const Soup& soup, const std::vector<char>& flipped, const Index* faces_begin,
                const Index* faces_end);
 
-  //! The winding number at `p`; NaN (undecided) where the ray meets an edge or a corner of a
-  //! triangle (in projection, within 1e-12 relative) or `p` lies on the shell.
-  double at(const Point& p) const;
+  //! The winding number at `position`; NaN (undecided) where the ray meets an edge or a corner
+  //! of a triangle (in projection, within 1e-12 relative) or the point lies on the shell.
+  double at(const Point& position) const;
 
  private:
   struct Triangle {
