@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/ply_binary_blocks.h"
 
-#include "parallel_parts.h"
 #include "io/ply_sources.h"
+#include "parallel_parts.h"
 
 #include <atomic>
 #include <cstdint>

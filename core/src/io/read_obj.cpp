@@ -6,10 +6,10 @@
 #include "io/formats.h"
 #include "io/huge_pages.h"
 #include "io/obj_parts.h"
-#include "parallel_parts.h"
 #include "io/text_scanner.h"
 #include "meshbridge/counted.h"
 #include "meshbridge/errors.h"
+#include "parallel_parts.h"
 
 #include <algorithm>
 #include <cctype>

@@ -4,12 +4,12 @@
 // size. Per-vertex and per-face colours go to MeshAttributes.
 #include "io/formats.h"
 #include "io/huge_pages.h"
-#include "parallel_parts.h"
 #include "io/ply_ascii_lines.h"
 #include "io/ply_binary_blocks.h"
 #include "io/ply_header.h"
 #include "io/ply_roles.h"
 #include "io/ply_sources.h"
+#include "parallel_parts.h"
 
 #include "meshbridge/counted.h"
 #include "meshbridge/errors.h"

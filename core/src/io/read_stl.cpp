@@ -2,10 +2,10 @@
 // The STL reader: binary (decided by size: 84 + 50 n bytes, whatever the header says) and ascii,
 // corners welded by exact position into shared vertices in order of first appearance.
 #include "io/formats.h"
-#include "parallel_parts.h"
 #include "io/position_weld.h"
 #include "io/stl_facets.h"
 #include "io/text_scanner.h"
+#include "parallel_parts.h"
 
 #include "meshbridge/errors.h"
 
