@@ -4,6 +4,9 @@
 //
 //   make DIR                    writes the benchmark files: checkerboard 1M and 5M, clean torus
 //                               1M, each as .obj .off .ply (binary) .stl (binary)
+//   make-soup DIR               the 1M checkerboard as OBJ three ways: indexed, and written per
+//                               face vertex (every triangle with its own 3 vertices), in file
+//                               order and with the faces shuffled (scripts/bench_soup.sh)
 //   openmesh-read FILE          OpenMesh's stock read_mesh into a PolyMesh
 //   openmesh-readwrite IN OUT   OpenMesh's read_mesh + write_mesh (binary PLY and STL)
 //   parse FILE                  MeshBridge's read_soup (parse, validate, account)
@@ -37,6 +40,7 @@
 #include <cstring>
 #include <exception>
 #include <functional>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -67,6 +71,32 @@ int make(const std::string& dir) {
       std::printf("wrote %s (%zu faces)\n", path.c_str(), mesh.soup.num_faces());
     }
   }
+  return 0;
+}
+
+int make_soup(const std::string& dir) {
+  const Soup indexed = models::checkerboard_cubes(56);
+  std::vector<Index> order(indexed.num_faces());
+  for (std::size_t f = 0; f < order.size(); ++f)
+    order[f] = static_cast<Index>(f);
+  const auto per_face_vertex = [&](const std::vector<Index>& faces) {
+    IndexedMesh mesh;
+    for (Index f : faces) {
+      std::vector<Index> polygon;
+      for (Index v : indexed.polygon(f))
+        polygon.push_back(mesh.soup.add_vertex(indexed.positions[v]));
+      mesh.soup.add_polygon(polygon);
+    }
+    return mesh;
+  };
+  IndexedMesh mesh;
+  mesh.soup = indexed;
+  write_mesh(dir + "/checkerboard_1m.obj", mesh);
+  write_mesh(dir + "/checkerboard_1m_soup.obj", per_face_vertex(order));
+  std::mt19937 random(1);
+  std::shuffle(order.begin(), order.end(), random);
+  write_mesh(dir + "/checkerboard_1m_soup_shuffled.obj", per_face_vertex(order));
+  std::printf("wrote 3 files of %zu faces to %s\n", indexed.num_faces(), dir.c_str());
   return 0;
 }
 
@@ -228,6 +258,8 @@ int main(int argc, char** argv) {
   try {
     if (command == "make" && argc == 3)
       return make(argv[2]);
+    if (command == "make-soup" && argc == 3)
+      return make_soup(argv[2]);
     if (command == "openmesh-read" && argc == 3)
       return openmesh_read(argv[2]);
     if (command == "openmesh-readwrite" && argc == 4)
@@ -243,7 +275,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::fprintf(stderr,
-               "usage: meshbridge-io-bench make DIR | openmesh-read FILE | "
+               "usage: meshbridge-io-bench make DIR | make-soup DIR | openmesh-read FILE | "
                "openmesh-readwrite IN OUT | parse FILE | floor FILE | split FILE [RUNS]\n");
   return 2;
 }

@@ -194,6 +194,7 @@ PYBIND11_MODULE(_core, m) {
             info["empty_records"] = s.info.empty_records;
             info["trailing_bytes"] = s.info.trailing_bytes;
             info["color_map_indices"] = s.info.color_map_indices;
+            info["vertices_welded_by_position"] = s.info.vertices_welded_by_position;
             return std::move(info);
           })
       .def("__repr__",
@@ -310,7 +311,9 @@ PYBIND11_MODULE(_core, m) {
         std::string json;
         {
           py::gil_scoped_release release;
-          result = std::make_unique<RepairResult>(repair(soup.soup, options));
+          RepairOptions file_options = options;
+          file_options.close_gaps.float_coordinates = soup.info.float_coordinates;
+          result = std::make_unique<RepairResult>(repair(soup.soup, file_options));
           if (!soup.path.empty())
             count_records_without_corners(soup.info, result->report);
           json = repair_json(soup.path, result->report, soup.path.empty() ? nullptr : &soup.info,

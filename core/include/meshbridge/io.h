@@ -65,6 +65,14 @@ struct ReadInfo {
   //! OFF colours given as a single colour-map index (Geomview's colour map is a file of its own,
   //! not read): not kept, counted so that they are not lost without a word.
   std::size_t color_map_indices = 0;
+  //! The file repeats each vertex per face (no vertex record is used by two corners, as many
+  //! OBJ, PLY, OFF and 3MF exporters write triangles): its copies at one exact position were
+  //! welded into one vertex, as STL corners are, before anything else; this many vertex records
+  //! were merged away (0 for an indexed file, and for STL, whose corners always weld).
+  std::size_t vertices_welded_by_position = 0;
+  //! The coordinates were stored as 32-bit floats (STL, 3MF, PLY `float`): gap closing's
+  //! automatic tolerance then respects float rounding (CloseGapsOptions::float_coordinates).
+  bool float_coordinates = false;
   //! Declared faces OpenMesh's reader never passed on (only while a format still goes through
   //! OpenMesh; MeshBridge's own readers keep every record and leave this 0).
   std::size_t faces_dropped_by_reader = 0;

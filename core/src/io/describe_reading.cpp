@@ -26,6 +26,10 @@ std::string describe_reading(const ReadInfo& info) {
     if (info.faces_dropped_by_reader > 0)
       text += ", " + std::to_string(info.faces_dropped_by_reader) + " dropped by the reader";
   }
+  if (info.vertices_welded_by_position > 0) {
+    text += "; the file repeats each vertex per face: " +
+            counted(info.vertices_welded_by_position, "copy") + " welded by exact position";
+  }
   if (info.strip_joins > 0) {
     text +=
         " (" + counted(info.strip_joins, "degenerate strip triangle") + " linking runs skipped)";

@@ -8,6 +8,7 @@
 #include "io/atomic_write.h"
 #include "io/formats.h"
 #include "io/mapped_file.h"
+#include "io/repeated_vertices.h"
 #include "meshbridge/counted.h"
 #include "meshbridge/errors.h"
 
@@ -175,6 +176,9 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
              : std::string()) +
         looks_like);
   }
+  counts.float_coordinates = format == Format::stl || format == Format::threemf;
+  if (format != Format::stl)  // STL corners are welded by position already
+    counts.vertices_welded_by_position = detail::weld_repeated_vertices(soup, attributes);
   try {
     detail::account_faces(soup, counts);  // validates the soup on the way
   } catch (const InvalidSoupError& error) {

@@ -195,6 +195,8 @@ class PlyReader {
       if (roles[k] == Role::x || roles[k] == Role::y || roles[k] == Role::z) {
         if (e.properties[k].type == PlyScalar::f64 && attributes_ != nullptr)
           attributes_->double_precision = true;
+        if (e.properties[k].type != PlyScalar::f64)
+          info_.float_coordinates = true;  // float, or integers: float rounding at most
       }
     }
     if constexpr (std::is_same_v<Source, BinarySource>) {
