@@ -5,8 +5,10 @@
 #include "progress.h"
 #include "validators.h"
 
+#include "meshbridge/counted.h"
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
+#include "meshbridge/preview_repair.h"
 #include "meshbridge/read_accounting.h"
 #include "meshbridge/report_json.h"
 
@@ -25,24 +27,27 @@ struct CheckArguments {
   bool elements = false;
   bool progress = false;
   std::string weld = "auto";  //!< tolerance of the gap closing repair would do ("auto", 0 = off)
+  AmbiguousNesting nested = AmbiguousNesting::material;  //!< as repair's --nested-shells
 };
 
 int run_check(const CheckArguments& arguments) {
   const std::string& path = arguments.file;
   check_readable_file(path);
-  const CloseGapsOptions weld = parse_weld(arguments.weld);
+  CloseGapsOptions weld = parse_weld(arguments.weld);
   ReadInfo info;
   MeshAttributes attributes;  // for the faults among what the reader reads past
   DefectReport report;
   CloseGapsReport gaps;
-  std::string weld_hint;  // what a wider weld would close, when boundary edges are left
+  OrientationPreview orientation;  // what repair would reverse, on a watertight file
+  std::string weld_hint;           // what a wider weld would close, when boundary edges are left
   {
     ProgressDisplay progress(path, progress_wanted(arguments.progress), progress_wanted(false),
                              check_plan());
     progress.stage(Stage::read, 0);
     const Soup soup = read_soup(path, &info, &attributes);
+    weld.float_coordinates = info.float_coordinates;
     progress.stage(Stage::detect, 0);
-    report = detect_defects(soup);
+    report = detect_defects(soup, &orientation, arguments.nested);
     count_records_without_corners(info, report);  // face records with no corner: set aside too
     // What repair's gap closing would do (the report is of the file as read).
     gaps = preview_close_gaps(soup, weld, &report);
@@ -54,7 +59,7 @@ int run_check(const CheckArguments& arguments) {
   if (arguments.json) {
     ReportJsonOptions json;
     json.elements = arguments.elements;
-    std::cout << check_report_json(path, report, &info, json, &gaps) << "\n";
+    std::cout << check_report_json(path, report, &info, json, &gaps, &orientation) << "\n";
   } else {
     std::cout << path << "\n"
               << "  read: " << describe_reading(info) << "\n";
@@ -63,12 +68,26 @@ int run_check(const CheckArguments& arguments) {
                 << " (the 3MF model's; coordinates as written, in that unit)\n";
     }
     std::cout << to_text(report) << gaps_line(gaps, true) << weld_hint;
+    if (orientation.faces_flipped != 0) {
+      std::cout << "orientation: repair would reverse "
+                << counted(orientation.faces_flipped, "face")
+                << " (closed shells face outward, cavities toward the void)\n";
+    }
+    if (orientation.ambiguous_nested_shells != 0) {
+      std::cout << "nested shells: " << orientation.ambiguous_nested_shells
+                << " wound like the shell around them (an insert, or a cavity wound the wrong "
+                   "way): repair keeps them as written (--nested-shells cavity: voids)\n";
+    }
     if (report.has_defects())
       std::cout << "(`meshbridge explain` tells what these terms mean)\n";
   }
   // Every record not kept as a simple polygon is in the soup as a degenerate face, so
   // has_defects() covers it; dangling edges and lone points are not surface defects (warned).
-  return report.has_defects() || info.faces_dropped_by_reader > 0 ? kDefectsFound : kOk;
+  // A watertight file that repair would still turn (inside out, a cavity wound outward) is no
+  // clean file: check exits 0 exactly when repair would change nothing on it.
+  return report.has_defects() || info.faces_dropped_by_reader > 0 || orientation.faces_flipped > 0
+             ? kDefectsFound
+             : kOk;
 }
 
 //! run_check; with --json, an error is also a JSON object on stdout (for scripts that parse it),
@@ -110,6 +129,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
                    "tolerance (as in repair; 0 = off)")
       ->capture_default_str()
       ->check(distance_or_auto());
+  add_nested_shells_option(*command, arguments->nested);
   command->add_flag("--progress", arguments->progress,
                     "show the stage and a progress bar on stderr even when it is not a terminal "
                     "(on a terminal it shows anyway once the work takes over a second)");

@@ -13,6 +13,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <ostream>
 #include <sstream>
 
@@ -30,6 +31,18 @@ double parse_distance(const std::string& option, const std::string& text) {
 }
 
 }  // namespace
+
+void add_nested_shells_option(CLI::App& command, AmbiguousNesting& nested) {
+  const std::map<std::string, AmbiguousNesting> names{{"material", AmbiguousNesting::material},
+                                                      {"cavity", AmbiguousNesting::cavity}};
+  command
+      .add_option("--nested-shells", nested,
+                  "a closed shell inside another and wound the same way as it (an insert of an "
+                  "assembly, or a cavity wound the wrong way) is ambiguous: material = keep it "
+                  "as written, solid (default); cavity = turn it into a void")
+      ->transform(CLI::CheckedTransformer(names, CLI::ignore_case))
+      ->default_str("material");
+}
 
 void add_fill_holes_option(CLI::App& command, std::string& max_edges) {
   // A flag whose bare form means kDefaultFillHolesMaxEdges ({32}), that also takes a value

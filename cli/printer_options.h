@@ -6,6 +6,7 @@
 #include "meshbridge/close_gaps.h"
 #include "meshbridge/defect_report.h"
 #include "meshbridge/indexed_mesh.h"
+#include "meshbridge/pairing.h"
 
 #include <CLI/CLI.hpp>
 
@@ -22,6 +23,10 @@ CloseGapsOptions parse_weld(const std::string& text);
 //! `max_edges`: given without a number it is kDefaultFillHolesMaxEdges (32); absent it stays
 //! as it was (empty: off). Read it with parse_fill_holes().
 void add_fill_holes_option(CLI::App& command, std::string& max_edges);
+
+//! Adds `--nested-shells material|cavity` to `command` (check, repair): what a closed shell
+//! wound like the closed shell around it becomes (RepairOptions::nested_shells).
+void add_nested_shells_option(CLI::App& command, AmbiguousNesting& nested);
 
 //! The `max_edges` of FillHolesOptions from add_fill_holes_option's text (empty or "0": off).
 std::size_t parse_fill_holes(const std::string& text);

@@ -105,6 +105,7 @@ int run_repair(RepairArguments& arguments) {
     progress.stage(Stage::read, 0);
     MeshAttributes attributes;
     Soup soup = read_soup(in, &info, &attributes);
+    options.close_gaps.float_coordinates = info.float_coordinates;
     options.progress = progress.callback();
     // Only the picture reads the input again. Without one the soup is consumed: an input repair
     // leaves unchanged becomes the output (no copy), any other is freed before the writing.
@@ -233,6 +234,7 @@ void add_repair_command(CLI::App& app, int& exit_code) {
                     "also orient non-orientable components (Moebius strips): faces take the "
                     "orientation of a breadth-first spanning tree, and the edges that disagree "
                     "with it are cut (not necessarily the fewest)");
+  add_nested_shells_option(*command, options.nested_shells);
   command->add_flag("--remove-duplicates", options.remove_duplicate_faces,
                     "drop faces whose vertex set an earlier face has");
   command->add_flag("--remove-degenerate", options.remove_degenerate_faces,

@@ -146,16 +146,20 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
   if (input.vertices.size() != in.num_vertices() || input.faces.size() != in.num_faces()) {
     fail("input maps do not match the input soup");
   }
+  // kNoIndex: a vertex repair added in the middle of an edge (RepairReport::
+  // edges_split_to_stay_manifold), made from its position alone.
   for (std::size_t v = 0; v < out.num_vertices(); ++v) {
-    if (repaired.vertex_origin[v] >= in.num_vertices()) {
+    const Index origin = repaired.vertex_origin[v];
+    if (origin >= in.num_vertices() && origin != kNoIndex)
       fail("output vertex " + std::to_string(v) + " has no input vertex");
-    }
   }
 
   // Vertices: the core's, then copies needed by set-aside faces whose vertices the core dropped.
   std::vector<Index> vertex_source(repaired.vertex_origin.begin(), repaired.vertex_origin.end());
   std::vector<Index> first_copy(in.num_vertices(), kNoIndex);
   for (std::size_t v = 0; v < vertex_source.size(); ++v) {
+    if (vertex_source[v] == kNoIndex)
+      continue;
     Index& fc = first_copy[vertex_source[v]];
     if (fc == kNoIndex)
       fc = Index(v);
@@ -263,8 +267,15 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
 
   if (!vertex_source.empty()) {
     auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, vertex_source.size());
-    for (const Index src : vertex_source) {
-      vi->ImportData(old.vert[src]);
+    for (std::size_t v = 0; v < vertex_source.size(); ++v) {
+      const Index src = vertex_source[v];
+      if (src == kNoIndex) {
+        const Point& p = out.positions[v];
+        vi->P() = CMeshO::CoordType(CMeshO::ScalarType(p[0]), CMeshO::ScalarType(p[1]),
+                                    CMeshO::ScalarType(p[2]));
+      } else {
+        vi->ImportData(old.vert[src]);
+      }
       vi->ClearB();
       ++vi;
     }

@@ -222,6 +222,7 @@ ParameterSpec length_parameter(const char* name, double default_value, const cha
 CloseGapsOptions close_gaps_options(double weld_tolerance, bool close_t_junctions) {
   CloseGapsOptions options;
   options.tolerance = weld_tolerance < 0 ? kAutoWeldTolerance : weld_tolerance;
+  options.float_coordinates = true;  // CMeshO holds floats
   options.close_t_junctions = close_t_junctions;
   return options;
 }

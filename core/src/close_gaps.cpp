@@ -131,67 +131,6 @@ class PointTree {
   std::vector<Node> nodes_;
 };
 
-// A growing hash grid of points (open addressing over cell keys, one chain of points per cell):
-// welding inserts only surviving vertices, so many copies of one position cost one entry.
-class SurvivorGrid {
- public:
-  // Room for `points` points, numbered below `vertices`.
-  SurvivorGrid(std::size_t points, std::size_t vertices, double cell)
-      : cell_(cell), next_(vertices, kNoIndex) {
-    std::size_t capacity = 16;
-    while (capacity < 2 * points)
-      capacity *= 2;
-    keys_.assign(capacity, 0);
-    heads_.assign(capacity, kNoIndex);
-  }
-
-  void insert(const Point& p, Index v) {
-    const std::size_t slot = find_slot(key_of(p));
-    keys_[slot] = key_of(p) | 1;
-    next_[v] = heads_[slot];
-    heads_[slot] = v;
-  }
-
-  template <class Visit>
-  void for_each_near(const Point& p, double r, Visit&& visit) const {
-    std::int64_t lo[3], hi[3];
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = cell_coordinate(p[a] - r, cell_);
-      hi[a] = cell_coordinate(p[a] + r, cell_);
-    }
-    for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
-      for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
-        for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-          const std::size_t slot = find_slot(cell_key(x, y, z));
-          if (keys_[slot] == 0)
-            continue;  // empty cell
-          for (Index v = heads_[slot]; v != kNoIndex; v = next_[v])
-            visit(v);
-        }
-  }
-
- private:
-  std::uint64_t key_of(const Point& p) const {
-    return cell_key(cell_coordinate(p[0], cell_), cell_coordinate(p[1], cell_),
-                    cell_coordinate(p[2], cell_));
-  }
-  // The slot holding `key`, or the empty slot where it would go (key 0 marks empty slots; keys
-  // are made odd, and cells that share a key share a chain, which distance checks sort out).
-  std::size_t find_slot(std::uint64_t key) const {
-    key |= 1;
-    const std::size_t mask = keys_.size() - 1;
-    std::size_t slot = key & mask;
-    while (keys_[slot] != 0 && keys_[slot] != key)
-      slot = (slot + 1) & mask;
-    return slot;
-  }
-
-  double cell_;
-  std::vector<std::uint64_t> keys_;
-  std::vector<Index> heads_;
-  std::vector<Index> next_;
-};
-
 // Polygons around each vertex (CSR).
 struct VertexFaces {
   std::vector<Index> begin;
@@ -212,7 +151,8 @@ struct VertexFaces {
 struct Weld {
   std::vector<Index> survivor;  // #V: the vertex each vertex welds into (itself if it survives)
   std::size_t welded = 0;
-  std::size_t refused = 0;
+  std::size_t refused = 0;   // near pairs sharing a polygon
+  std::size_t too_long = 0;  // near pairs farther apart than a quarter of an edge at either
   double largest = 0;
 };
 
@@ -233,9 +173,83 @@ std::vector<Index> boundary_vertices(const Soup& soup, const std::vector<Index>&
   return vertices;
 }
 
+// Each vertex's own tolerance and the shortest edge at it (DESIGN 8a, gaps). Automatic: 2^-21
+// times the extent of the vertex's connected component (the largest side of its bounding box:
+// CAD rounding is relative to the part, not to where it sits), and at least 2^-21 times its own
+// largest coordinate when the coordinates were stored as 32-bit floats (8 units in the last
+// place: what the format itself rounds); never the file's largest coordinate, so a far stray
+// facet or a model far from the origin widens nothing. A weld or a T-junction closing moves a
+// vertex by at most a quarter of the shortest non-zero edge at it, so no feature collapses.
+class VertexScales {
+ public:
+  VertexScales(const Soup& soup, const CloseGapsOptions& options, double fixed)
+      : tolerance_(soup.num_vertices(), fixed),
+        shortest_(soup.num_vertices(), std::numeric_limits<double>::infinity()) {
+    const std::size_t n = soup.num_vertices();
+    for (Index f = 0; f < soup.num_faces(); ++f) {
+      for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
+        const Index a = soup.corner_vertices[c], b = soup.corner_vertices[soup.next_corner(c, f)];
+        const double length = (soup.positions[a] - soup.positions[b]).norm();
+        if (length > 0) {
+          shortest_[a] = std::min(shortest_[a], length);
+          shortest_[b] = std::min(shortest_[b], length);
+        }
+      }
+    }
+    if (fixed >= 0)
+      return;
+    // Components through shared vertices (union-find, path halving), then their boxes.
+    std::vector<Index> parent(n);
+    for (std::size_t v = 0; v < n; ++v)
+      parent[v] = static_cast<Index>(v);
+    const auto root = [&parent](Index v) {
+      while (parent[v] != v)
+        v = parent[v] = parent[parent[v]];
+      return v;
+    };
+    for (Index f = 0; f < soup.num_faces(); ++f) {
+      const Index first = root(soup.corner_vertices[soup.face_begin[f]]);
+      for (Index c = soup.face_begin[f] + 1; c < soup.face_begin[f + 1]; ++c) {
+        const Index r = root(soup.corner_vertices[c]);
+        if (r != first)
+          parent[r] = first;
+      }
+    }
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<Point> lo(n, Point(inf, inf, inf)), hi(n, Point(-inf, -inf, -inf));
+    for (std::size_t v = 0; v < n; ++v) {
+      const Index r = root(static_cast<Index>(v));
+      lo[r].minimize(soup.positions[v]);
+      hi[r].maximize(soup.positions[v]);
+    }
+    for (std::size_t v = 0; v < n; ++v) {
+      const Index r = root(static_cast<Index>(v));
+      const Point extent = hi[r] - lo[r];
+      double scale = std::max({extent[0], extent[1], extent[2]});
+      if (options.float_coordinates) {
+        for (int a = 0; a < 3; ++a)
+          scale = std::max(scale, std::abs(soup.positions[v][a]));
+      }
+      tolerance_[v] = std::isfinite(scale) ? std::ldexp(scale, -21) : 0.0;
+    }
+  }
+
+  // The distance two vertices may be welded across, or a vertex moved onto a side: the smaller
+  // of their tolerances.
+  double tolerance(Index v, Index u) const { return std::min(tolerance_[v], tolerance_[u]); }
+  double tolerance(Index v) const { return tolerance_[v]; }
+  // A quarter of the shortest non-zero edge at v (infinite if none).
+  double longest_move(Index v) const { return shortest_[v] / 4; }
+
+ private:
+  std::vector<double> tolerance_;
+  std::vector<double> shortest_;
+};
+
 // Welds boundary vertices only: a crack is where sides are open, and an edge that already has
 // two sides needs nothing (a closed mesh with near vertices stays exactly as it is).
-Weld weld_vertices(const Soup& soup, double tolerance, const std::vector<Index>& boundary) {
+Weld weld_vertices(const Soup& soup, const VertexScales& scales,
+                   const std::vector<Index>& boundary) {
   Weld weld;
   const std::size_t n = soup.num_vertices();
   weld.survivor.resize(n);
@@ -244,30 +258,33 @@ Weld weld_vertices(const Soup& soup, double tolerance, const std::vector<Index>&
   const std::vector<Index> open = boundary_vertices(soup, boundary);
   if (open.empty())
     return weld;
-  // Large cells: a tolerance box rarely straddles a cell face, and cells still hold about one
-  // vertex because the tolerance is far below the spacing of distinct vertices.
-  SurvivorGrid grid(open.size(), n, 64 * tolerance);
+  // Every boundary vertex in a kd-tree; a vertex welds into an earlier one (by index) that
+  // survives, so the result follows the index order alone.
+  const PointTree tree(soup.positions, open);
   std::unique_ptr<VertexFaces> around;
   std::vector<std::pair<double, Index>> candidates;
-  const double tolerance2 = tolerance * tolerance;
   for (const Index v : open) {
     const Point& p = soup.positions[v];
+    const double radius = scales.tolerance(v);
+    if (!(radius > 0))
+      continue;
     candidates.clear();
-    grid.for_each_near(p, tolerance, [&](Index u) {
+    tree.for_each_near_segment(p, p, radius, [&](Index u) {
+      if (u >= v || weld.survivor[u] != u)
+        return;
       const double d2 = (soup.positions[u] - p).sqrnorm();
+      const double t = scales.tolerance(v, u);
       // Beyond 1e154 the square overflows (and past 1.3e154 the tolerance's does too): an
       // infinite d2 is never a weld, so no move is larger than the tolerance it claims.
-      if (d2 > 0 && d2 <= tolerance2 && std::isfinite(d2))
+      if (d2 > 0 && d2 <= t * t && std::isfinite(d2))
         candidates.push_back({d2, u});
     });
-    if (candidates.empty()) {
-      grid.insert(p, static_cast<Index>(v));
+    if (candidates.empty())
       continue;
-    }
     if (!around)
       around = std::make_unique<VertexFaces>(soup);
     std::sort(candidates.begin(), candidates.end());
-    bool merged = false;
+    bool merged = false, too_long = false;
     for (const auto& [d2, r] : candidates) {
       // Refuse r if a polygon of v already holds r or a vertex welded into r.
       bool shares = false;
@@ -281,16 +298,19 @@ Weld weld_vertices(const Soup& soup, double tolerance, const std::vector<Index>&
       }
       if (shares)
         continue;
+      const double d = std::sqrt(d2);
+      if (d > scales.longest_move(v) || d > scales.longest_move(r)) {
+        too_long = true;  // would collapse a feature: an edge at v or r is not much longer
+        continue;
+      }
       weld.survivor[v] = r;
       ++weld.welded;
-      weld.largest = std::max(weld.largest, std::sqrt(d2));
+      weld.largest = std::max(weld.largest, d);
       merged = true;
       break;
     }
-    if (!merged) {
-      ++weld.refused;
-      grid.insert(p, static_cast<Index>(v));
-    }
+    if (!merged)
+      ++(too_long ? weld.too_long : weld.refused);
   }
   return weld;
 }
@@ -339,9 +359,11 @@ struct Insertion {
   Index vertex;
 };
 
-// Boundary vertices lying on boundary `sides` (within the tolerance, away from both ends).
-std::vector<Insertion> find_t_junctions(const Soup& soup, double tolerance,
-                                        const std::vector<Index>& sides) {
+// Boundary vertices lying on boundary `sides` (within the tolerance, away from both ends, and
+// no farther from the side than a quarter of the side or of the shortest edge at the vertex).
+// `refused` counts the vertices within the tolerance that the last rule kept off a side.
+std::vector<Insertion> find_t_junctions(const Soup& soup, const VertexScales& scales,
+                                        const std::vector<Index>& sides, std::size_t& refused) {
   if (sides.empty())
     return {};
   const auto face_of_corner = [&soup](Index c) {
@@ -359,21 +381,25 @@ std::vector<Insertion> find_t_junctions(const Soup& soup, double tolerance,
     const Point pa = soup.positions[a];
     const Point ab = soup.positions[b] - pa;
     const double length2 = ab.sqrnorm();
-    if (!(length2 > 4 * tolerance * tolerance))
+    const double side_tolerance = scales.tolerance(a, b);
+    if (!(side_tolerance > 0) || !(length2 > 4 * side_tolerance * side_tolerance))
       continue;
     seen.clear();
-    tree.for_each_near_segment(pa, soup.positions[b], tolerance, [&](Index w) {
+    tree.for_each_near_segment(pa, soup.positions[b], side_tolerance, [&](Index w) {
       if (w == a || w == b)
         return;
+      const double tolerance = std::min(side_tolerance, scales.tolerance(w));
+      const double tolerance2 = tolerance * tolerance;
       const Point aw = soup.positions[w] - pa;
       const double t = (aw | ab) / length2;
       if (!(t > 0 && t < 1))
         return;
-      if ((aw - ab * t).sqrnorm() > tolerance * tolerance)
+      const double gap2 = (aw - ab * t).sqrnorm();
+      if (gap2 > tolerance2)
         return;
       // Within the tolerance of an end, the gap is a weld's business, not a T-junction's.
-      if (aw.sqrnorm() <= tolerance * tolerance ||
-          (soup.positions[w] - soup.positions[b]).sqrnorm() <= tolerance * tolerance)
+      if (aw.sqrnorm() <= tolerance2 ||
+          (soup.positions[w] - soup.positions[b]).sqrnorm() <= tolerance2)
         return;
       if (std::find(seen.begin(), seen.end(), w) != seen.end())
         return;
@@ -381,6 +407,11 @@ std::vector<Insertion> find_t_junctions(const Soup& soup, double tolerance,
       for (Index u : soup.polygon(f))
         if (u == w)
           return;  // would repeat a corner of the polygon
+      const double longest = std::min(scales.longest_move(w), std::sqrt(length2) / 4);
+      if (std::sqrt(gap2) > longest) {
+        ++refused;  // the gap is a feature of the model's own size, not a crack
+        return;
+      }
       insertions.push_back({c, t, w});
     });
   }
@@ -402,22 +433,22 @@ std::vector<Insertion> find_t_junctions(const Soup& soup, double tolerance,
 
 }  // namespace
 
-double default_weld_tolerance(const Soup& soup) {
-  // Vertices that no face uses take no part in welding: a stray one far away (an OBJ `v` line
-  // nothing refers to) must not widen the tolerance for the rest.
+double default_weld_tolerance(const Soup& soup, bool float_coordinates) {
+  // Vertices that no face uses take no part in welding.
   std::vector<char> used(soup.num_vertices(), 0);
   for (const Index v : soup.corner_vertices) {
     if (v < used.size())
       used[v] = 1;
   }
+  CloseGapsOptions options;
+  options.float_coordinates = float_coordinates;
+  const VertexScales scales(soup, options, -1);
   double largest = 0;
   for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-    if (!used[v])
-      continue;
-    for (int a = 0; a < 3; ++a)
-      largest = std::max(largest, std::abs(soup.positions[v][a]));
+    if (used[v])
+      largest = std::max(largest, scales.tolerance(static_cast<Index>(v)));
   }
-  return std::ldexp(largest, -21);
+  return largest;
 }
 
 namespace detail {
@@ -428,18 +459,29 @@ bool close_gaps_if_any(const Soup& soup, const CloseGapsOptions& options, Closed
     throw std::invalid_argument("close_gaps: the tolerance must be a finite number");
   result = ClosedGaps();
   CloseGapsReport& report = result.report;
-  const double tolerance = options.tolerance < 0 ? default_weld_tolerance(soup) : options.tolerance;
-  report.tolerance = tolerance;
-  if (!(tolerance > 0) || soup.num_vertices() == 0)
+  const double fixed = options.tolerance < 0 ? -1.0 : options.tolerance;
+  if (fixed == 0 || soup.num_vertices() == 0)
     return false;
   const std::vector<Index> found = known_boundary ? std::vector<Index>() : boundary_sides(soup);
   const std::vector<Index>& boundary = known_boundary ? *known_boundary : found;
   if (boundary.empty())  // only boundary sides and their vertices take part
     return false;
+  report.automatic = fixed < 0;
+  const VertexScales scales(soup, options, fixed);
+  // The tolerance reported: the given one, or the largest automatic one of a boundary vertex.
+  if (fixed > 0) {
+    report.tolerance = fixed;
+  } else {
+    for (Index v : boundary_vertices(soup, boundary))
+      report.tolerance = std::max(report.tolerance, scales.tolerance(v));
+  }
+  if (!(report.tolerance > 0))
+    return false;
 
-  const Weld weld = weld_vertices(soup, tolerance, boundary);
+  const Weld weld = weld_vertices(soup, scales, boundary);
   report.vertices_welded = weld.welded;
   report.welds_refused = weld.refused;
+  report.welds_too_long = weld.too_long;
   report.largest_weld_distance = weld.largest;
   Soup welded;
   if (weld.welded != 0) {
@@ -459,9 +501,15 @@ bool close_gaps_if_any(const Soup& soup, const CloseGapsOptions& options, Closed
   }
   const Soup& base = weld.welded != 0 ? welded : soup;
   std::vector<Insertion> insertions;
-  if (options.close_t_junctions)
-    insertions =
-        find_t_junctions(base, tolerance, weld.welded != 0 ? boundary_sides(base) : boundary);
+  if (options.close_t_junctions) {
+    if (weld.welded != 0) {
+      const VertexScales welded_scales(base, options, fixed);
+      insertions =
+          find_t_junctions(base, welded_scales, boundary_sides(base), report.t_junctions_too_wide);
+    } else {
+      insertions = find_t_junctions(base, scales, boundary, report.t_junctions_too_wide);
+    }
+  }
   report.t_junctions_closed = insertions.size();
   if (!report.changed())
     return false;

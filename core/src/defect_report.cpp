@@ -53,6 +53,11 @@ std::string to_text(const DefectReport& r, std::size_t max_listed) {
   list(out, "isolated vertices", r.isolated_vertices, max_listed, index);
   list(out, "degenerate faces (repeated vertex)", r.degenerate_faces, max_listed, index);
   list(out, "faces set aside (< 3 distinct vertices)", r.excluded_faces, max_listed, index);
+  if (r.slits_set_aside > 0) {
+    out << "  keyhole slits (a polygon running a-b and later b-a; set aside by repair, their "
+           "edges counted): "
+        << r.slits_set_aside << "\n";
+  }
   if (r.records_without_corners > 0)
     out << "  face records without any corner (set aside, not in the list): "
         << r.records_without_corners << "\n";

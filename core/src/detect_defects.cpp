@@ -119,9 +119,19 @@ struct EdgeTally {
     report.num_faces = working.input().num_faces();
     report.degenerate_faces = working.degenerate_faces();
     report.excluded_faces = working.excluded_faces();
+    for (const WorkingSoup::Slit& s : working.slits())
+      slit_pairs.push_back({std::min(s.a, s.b), std::max(s.a, s.b)});
+    std::sort(slit_pairs.begin(), slit_pairs.end());
+    slit_pairs.erase(std::unique(slit_pairs.begin(), slit_pairs.end()), slit_pairs.end());
+    slit_is_edge.assign(slit_pairs.size(), 0);
   }
 
   void operator()(VertexPair pair, const Index* sides, Index k) {
+    if (!slit_pairs.empty()) {
+      const auto it = std::lower_bound(slit_pairs.begin(), slit_pairs.end(), pair);
+      if (it != slit_pairs.end() && *it == pair)
+        slit_is_edge[it - slit_pairs.begin()] = 1;
+    }
     if (k == 2) {
       const Index a = sides[0], b = sides[1];
       manifold_mate[a] = b;
@@ -149,6 +159,8 @@ struct EdgeTally {
   std::vector<Index> manifold_mate;                     // #C
   std::vector<char> on_singular_edge;                   // #V
   std::vector<std::pair<Index, Index>> singular_links;  // sides on one singular edge
+  std::vector<VertexPair> slit_pairs;                   // keyhole slits' edges, sorted
+  std::vector<char> slit_is_edge;                       // per slit pair: some side lies on it
 };
 
 // The checks of single faces: zero area (in input numbering: |vector area|^2 <= (1e-12 * sum of
@@ -195,7 +207,11 @@ DefectReport detect_tallied(const WorkingSoup& working, const CornerFaces& corne
       [&working] { return check_faces(working); });
   const Soup& soup = working.soup();
   DefectReport& report = tally.report;
+  // A keyhole's slit is an edge of the file, though no face of the working soup has it.
+  for (char is_edge : tally.slit_is_edge)
+    num_edges += is_edge ? 0 : 1;
   report.num_edges = num_edges;
+  report.slits_set_aside = working.slits().size();
   std::vector<Index>& manifold_mate = tally.manifold_mate;
   const std::vector<char>& on_singular_edge = tally.on_singular_edge;
   {
@@ -240,6 +256,12 @@ DefectReport detect_tallied(const WorkingSoup& working, const CornerFaces& corne
     }
     for (const auto& [a, b] : tally.singular_links)
       components.unite(corner_face[a], corner_face[b]);
+    // The loops of a polygon with a keyhole slit are joined through the slit.
+    for (const WorkingSoup::Slit& s : working.slits()) {
+      for (Index f = s.face + 1;
+           f < soup.num_faces() && working.face_origin(f) == working.face_origin(s.face); ++f)
+        components.unite(s.face, f);
+    }
     for (Index f = 0; f < soup.num_faces(); ++f) {
       if (components.find(f) == f)
         ++report.num_components;

@@ -243,7 +243,9 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     read = true;
     if (info.changed_anything())
       result.reading = describe_reading(info);
-    RepairResult repaired = repair(std::move(soup), options.repair);  // unchanged: no copy
+    RepairOptions repair_options = options.repair;
+    repair_options.close_gaps.float_coordinates = info.float_coordinates;
+    RepairResult repaired = repair(std::move(soup), repair_options);  // unchanged: no copy
     soup = Soup();
     count_records_without_corners(info, repaired.report);  // face records with no corner
     const fs::path folder = fs::path(job.output).parent_path();

@@ -86,8 +86,31 @@ struct KnownInput {
   detail::GroupedSides grouped;  //!< its grouping; no contenders: group again
 };
 
+// What the no-new-defects rule compares (DESIGN 8a): the input's open edges (one side), its
+// singular edges with an odd number of sides (each may leave one side open), and the output's
+// open edges and non-orientable components.
+struct DefectBalance {
+  std::size_t open_edges_in = 0;
+  std::size_t odd_singular_edges_in = 0;
+  std::size_t open_edges_out = 0;
+  std::size_t nonorientable_out = 0;
+};
+
+DefectBalance input_balance(const detail::GroupedSides& grouped) {
+  DefectBalance balance;
+  const EdgeBridges& bridges = grouped.bridges;
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    const Index k = bridges.num_contenders(e);
+    balance.open_edges_in += k == 1 ? 1 : 0;
+    balance.odd_singular_edges_in += k > 2 && k % 2 == 1 ? 1 : 0;
+  }
+  return balance;
+}
+
 // Everything repair() does, on a valid soup; `known` holds what was already made of `input`.
-RepairResult repair_valid(const Soup& input, const RepairOptions& options, KnownInput&& known) {
+// `balance`, when given, gets the counts the no-new-defects rule compares.
+RepairResult repair_valid(const Soup& input, const RepairOptions& options, KnownInput&& known,
+                          DefectBalance* balance = nullptr) {
   tell(options, Stage::group, 0);
   RepairResult result;
   RepairReport& report = result.report;
@@ -102,6 +125,8 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
   detail::GroupedSides grouped = known.grouped.bridges.contenders.empty()
                                      ? detail::group_sides(input_simple.soup())
                                      : std::move(known.grouped);
+  if (balance != nullptr)
+    *balance = input_balance(grouped);
   ClosedGaps gaps;
   bool gaps_closed = false;
   if (input_simple.is_identity()) {
@@ -170,6 +195,7 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
   pipeline_options.orient = options.orient;
   pipeline_options.cut_nonorientable = options.cut_nonorientable;
   pipeline_options.stitch = options.stitch;
+  pipeline_options.nested = options.nested_shells;
   pipeline_options.keep_state = false;  // only the mesh and the counts are read below
   detail::PipelineResult pipeline =
       detail::run_pipeline(working, std::move(grouped), pipeline_options);
@@ -186,7 +212,7 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
   }
   if (gaps_closed) {
     for (Index& v : mesh.vertex_origin)
-      v = gaps.vertex_origin[v];
+      v = v == kNoIndex ? kNoIndex : gaps.vertex_origin[v];  // kNoIndex: a midpoint vertex
     for (Index& c : mesh.corner_origin)
       c = gaps.corner_origin[c];
   }
@@ -204,6 +230,7 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
     report.degenerate_faces_removed += simple.excluded_faces().size();
   report.faces_split = simple.faces_split();
   report.faces_added_by_split = simple.faces_added_by_split();
+  report.slits_set_aside = simple.slits().size();
   report.vertices_out = mesh.soup.num_vertices();
   report.vertices_split = pipeline.counts.vertices_split;
   report.sides_cut = pipeline.counts.sides_cut;
@@ -212,7 +239,13 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
   report.faces_flipped = pipeline.counts.faces_flipped;
   report.sides_cut_to_stay_manifold = pipeline.counts.sides_cut_to_stay_manifold;
   report.sides_paired_with_copies = pipeline.counts.sides_paired_with_copies;
+  report.edges_split_to_stay_manifold = pipeline.counts.edges_split_at_midpoint;
   report.nonorientable_components = pipeline.counts.nonorientable_components;
+  report.ambiguous_nested_shells = pipeline.counts.ambiguous_nested_shells;
+  if (balance != nullptr) {
+    balance->open_edges_out = pipeline.counts.open_sides;
+    balance->nonorientable_out = pipeline.counts.nonorientable_components;
+  }
   // The pipeline's grouping and pairing (about 20 bytes per side) are not needed any more: free
   // them before the second detection allocates its own.
   pipeline = detail::PipelineResult();
@@ -265,17 +298,19 @@ std::optional<RepairReport> report_if_unchanged(const Soup& soup,
       (options.remove_duplicate_faces && !before.duplicate_faces.empty()) ||
       (options.remove_isolated_vertices && !before.isolated_vertices.empty()))
     return std::nullopt;
+  std::size_t ambiguous = 0;
   if (options.orient) {
     detail::SidePairing pairing;
     pairing.mate = std::move(mate);
     pairing.flipped.assign(soup.num_faces(), 0);
     const detail::GroupedSides grouped{detail::CornerFaces(soup), EdgeBridges()};
-    detail::orient_components(soup, grouped, pairing);
+    ambiguous = detail::orient_components(soup, grouped, pairing, options.nested_shells);
     if (std::find(pairing.flipped.begin(), pairing.flipped.end(), 1) != pairing.flipped.end())
       return std::nullopt;
   }
   mate = std::vector<Index>();
   RepairReport report;
+  report.ambiguous_nested_shells = ambiguous;
   ClosedGaps gaps;
   const std::vector<Index> no_boundary;
   detail::close_gaps_if_any(soup, options.close_gaps, gaps, &no_boundary);  // the tolerance
@@ -289,11 +324,48 @@ std::optional<RepairReport> report_if_unchanged(const Soup& soup,
   return report;
 }
 
+// repair_valid() held to the no-new-defects rule for gap closing (DESIGN 8a): welds and
+// T-junction closings stay only if the repaired mesh has fewer open edges with them than the
+// input has (pairing alone never closes an edge that has one side), or, when not, fewer than the
+// repair without them, and no more non-orientable components. Otherwise the repair runs again
+// without gap closing, and the report says what was refused and why. Gap closing that is kept
+// costs nothing more; a refused one costs a second repair.
+RepairResult repair_guarded(const Soup& input, const RepairOptions& options, KnownInput&& known) {
+  DefectBalance closed;
+  RepairResult result = repair_valid(input, options, std::move(known), &closed);
+  const CloseGapsReport tried = result.report.gaps;
+  if (!tried.changed() ||
+      (closed.open_edges_out < closed.open_edges_in && closed.nonorientable_out == 0))
+    return result;
+  RepairOptions without = options;
+  without.close_gaps.tolerance = 0;
+  DefectBalance open;
+  RepairResult plain = repair_valid(input, without, KnownInput(), &open);
+  if (closed.open_edges_out < open.open_edges_out &&
+      closed.nonorientable_out <= open.nonorientable_out)
+    return result;
+  CloseGapsReport& gaps = plain.report.gaps;
+  gaps = CloseGapsReport();
+  gaps.tolerance = tried.tolerance;
+  gaps.welds_refused = tried.welds_refused;
+  gaps.welds_undone = tried.vertices_welded;
+  gaps.t_junctions_undone = tried.t_junctions_closed;
+  std::ostringstream why;
+  why << "with them the repaired mesh would have " << counted(closed.open_edges_out, "open edge")
+      << " (without: " << open.open_edges_out << ")";
+  if (closed.nonorientable_out > open.nonorientable_out) {
+    why << " and " << counted(closed.nonorientable_out, "non-orientable component")
+        << " (without: " << open.nonorientable_out << ")";
+  }
+  gaps.refused_reason = why.str();
+  return plain;
+}
+
 }  // namespace
 
 RepairResult repair(const Soup& input, const RepairOptions& options) {
   validate_soup(input);
-  return repair_valid(input, options, KnownInput());
+  return repair_guarded(input, options, KnownInput());
 }
 
 RepairResult repair(Soup&& soup, const RepairOptions& options) {
@@ -308,7 +380,7 @@ RepairResult repair(Soup&& soup, const RepairOptions& options) {
     known.before_later = &before_later;
     unchanged = report_if_unchanged(soup, working, options, before, known);
     if (!unchanged)
-      return repair_valid(soup, options, std::move(known));
+      return repair_guarded(soup, options, std::move(known));
   }
   for (Stage stage : {Stage::group, Stage::pair, Stage::detect}) {
     tell(options, stage, 0);
@@ -339,18 +411,26 @@ std::string to_text(const RepairReport& r) {
   } else {
     out << "gaps: not closed (tolerance 0)\n";
   }
+  if (g.welds_undone != 0 || g.t_junctions_undone != 0) {
+    out << "gaps refused: " << counted(g.welds_undone, "weld") << " and "
+        << counted(g.t_junctions_undone, "T-junction closing") << " undone: " << g.refused_reason
+        << "\n";
+  }
   out << "faces: " << r.faces_in << " in, " << r.faces_out << " out (" << r.faces_set_aside
-      << " set aside, " << r.faces_split << " split into " << r.faces_added_by_split << " more, "
-      << counted(r.duplicate_faces_removed, "duplicate") << " and " << r.degenerate_faces_removed
-      << " degenerate removed, " << r.faces_flipped << " flipped, " << r.faces_detached
-      << " detached)\n";
+      << " set aside, " << r.faces_split << " split into " << r.faces_added_by_split << " more"
+      << (r.slits_set_aside != 0 ? " (" + counted(r.slits_set_aside, "keyhole slit") + " set aside)"
+                                 : std::string())
+      << ", " << counted(r.duplicate_faces_removed, "duplicate") << " and "
+      << r.degenerate_faces_removed << " degenerate removed, " << r.faces_flipped << " flipped, "
+      << r.faces_detached << " detached)\n";
   out << "vertices: " << r.vertices_in << " in, " << r.vertices_out << " out ("
       << counted(r.vertices_split, "copy") << " from split fans, " << r.isolated_vertices_removed
       << " isolated removed)\n";
   out << "sides: " << r.sides_cut << " cut on singular edges, " << r.sides_cut_for_orientation
       << " cut for orientation, " << r.sides_cut_to_stay_manifold << " cut to stay manifold ("
-      << r.sides_paired_with_copies << " paired with copies instead), " << r.sides_stitched
-      << " stitched\n";
+      << r.sides_paired_with_copies << " paired with copies and "
+      << counted(r.edges_split_to_stay_manifold, "edge") << " split at the midpoint instead), "
+      << r.sides_stitched << " stitched\n";
   const FillHolesReport& h = r.holes;
   if (h.max_edges > 0) {
     out << "holes (up to " << h.max_edges << " edges): " << h.holes_filled << " filled with "
@@ -361,6 +441,11 @@ std::string to_text(const RepairReport& r) {
   out << "components: " << r.components_before << " -> " << r.components_after
       << "; boundary edges: " << r.boundary_edges_before << " -> " << r.boundary_edges_after
       << "; non-orientable components met by orientation: " << r.nonorientable_components << "\n";
+  if (r.ambiguous_nested_shells != 0) {
+    out << "nested shells: " << r.ambiguous_nested_shells
+        << " wound like the shell around them (an insert, or a cavity wound the wrong way): "
+           "left as written\n";
+  }
   out << "after: singular edges " << r.after.singular_edges.size() << ", singular vertices "
       << r.after.num_singular_vertices() << ", non-orientable components "
       << r.after.num_nonorientable_components << ", watertight "

@@ -30,7 +30,8 @@ Json read_json(const ReadInfo& info) {
               {"unknown_records", info.unknown_records},
               {"empty_records", info.empty_records},
               {"trailing_bytes", info.trailing_bytes},
-              {"color_map_indices", info.color_map_indices}};
+              {"color_map_indices", info.color_map_indices},
+              {"vertices_welded_by_position", info.vertices_welded_by_position}};
 }
 
 //! What writing the output made of the mesh (repair and batch records), when given.
@@ -90,9 +91,15 @@ Json gaps_json(const CloseGapsReport& g) {
   return Json{{"tolerance", g.tolerance},
               {"vertices_welded", g.vertices_welded},
               {"largest_weld_distance", g.largest_weld_distance},
+              {"automatic", g.automatic},
               {"welds_refused", g.welds_refused},
+              {"welds_too_long", g.welds_too_long},
               {"t_junctions_closed", g.t_junctions_closed},
-              {"sides_split", g.sides_split}};
+              {"t_junctions_too_wide", g.t_junctions_too_wide},
+              {"sides_split", g.sides_split},
+              {"welds_undone", g.welds_undone},
+              {"t_junctions_undone", g.t_junctions_undone},
+              {"refused_reason", g.refused_reason}};
 }
 
 Json holes_json(const FillHolesReport& h) {
@@ -108,6 +115,7 @@ void add_repair(Json& out, const RepairReport& r, bool elements, const DefectRep
   out["faces_set_aside"] = r.faces_set_aside;
   out["faces_split"] = r.faces_split;
   out["faces_added_by_split"] = r.faces_added_by_split;
+  out["slits_set_aside"] = r.slits_set_aside;
   out["faces_flipped"] = r.faces_flipped;
   out["faces_detached"] = r.faces_detached;
   out["duplicate_faces_removed"] = r.duplicate_faces_removed;
@@ -120,7 +128,9 @@ void add_repair(Json& out, const RepairReport& r, bool elements, const DefectRep
   out["sides_cut_for_orientation"] = r.sides_cut_for_orientation;
   out["sides_cut_to_stay_manifold"] = r.sides_cut_to_stay_manifold;
   out["sides_paired_with_copies"] = r.sides_paired_with_copies;
+  out["edges_split_to_stay_manifold"] = r.edges_split_to_stay_manifold;
   out["sides_stitched"] = r.sides_stitched;
+  out["ambiguous_nested_shells"] = r.ambiguous_nested_shells;
   out["gaps"] = gaps_json(r.gaps);
   if (r.holes.max_edges > 0)  // only when asked for: reports of a default repair stay as they were
     out["holes"] = holes_json(r.holes);
@@ -157,13 +167,17 @@ Json figures(const BuildFigures& f) {
 
 std::string check_report_json(const std::string& file, const DefectReport& report,
                               const ReadInfo* read, const ReportJsonOptions& options,
-                              const CloseGapsReport* gaps) {
+                              const CloseGapsReport* gaps, const OrientationPreview* orientation) {
   Json out = header("check", file);
   if (read)
     out["read"] = read_json(*read);
   add_defects(out, report, options.elements);
   if (gaps)
     out["gaps"] = gaps_json(*gaps);
+  if (orientation != nullptr && orientation->computed) {
+    out["orientation"] = Json{{"faces_flipped", orientation->faces_flipped},
+                              {"ambiguous_nested_shells", orientation->ambiguous_nested_shells}};
+  }
   return dump(out, options.indent);
 }
 

@@ -18,11 +18,14 @@ std::size_t separate_split_vertices(IndexedMesh& mesh, double distance) {
     throw std::invalid_argument("separate_split_vertices: distance must be finite and >= 0");
   }
   std::size_t max_origin = 0;
+  for (Index o : mesh.vertex_origin) {
+    if (o != kNoIndex)  // kNoIndex: a vertex repair added (a midpoint), no copy of anything
+      max_origin = std::max<std::size_t>(max_origin, std::size_t(o) + 1);
+  }
+  std::vector<Index> copies(max_origin + 1, 0);  // the last slot: kNoIndex's, never >= 2
   for (Index o : mesh.vertex_origin)
-    max_origin = std::max<std::size_t>(max_origin, o + 1);
-  std::vector<Index> copies(max_origin, 0);
-  for (Index o : mesh.vertex_origin)
-    ++copies[o];
+    ++copies[o == kNoIndex ? max_origin : o];
+  copies[max_origin] = 0;
 
   std::vector<Point> target(soup.num_vertices(), Point(0, 0, 0));
   std::vector<Index> count(soup.num_vertices(), 0);
@@ -39,7 +42,8 @@ std::size_t separate_split_vertices(IndexedMesh& mesh, double distance) {
   }
   std::size_t moved = 0;
   for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-    if (copies[mesh.vertex_origin[v]] < 2 || count[v] == 0 || distance == 0)
+    const Index o = mesh.vertex_origin[v];
+    if (o == kNoIndex || copies[o] < 2 || count[v] == 0 || distance == 0)
       continue;
     Point direction = target[v] / static_cast<double>(count[v]) - soup.positions[v];
     const double length = direction.norm();

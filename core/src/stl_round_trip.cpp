@@ -69,11 +69,13 @@ double smallest_separation(const IndexedMesh& mesh, const char* caller, Survives
                                 std::to_string(mesh.soup.num_vertices()) + " vertices");
   }
   std::map<Index, Index> copies;
-  for (Index o : mesh.vertex_origin)
-    ++copies[o];
+  for (Index o : mesh.vertex_origin) {
+    if (o != kNoIndex)  // a vertex repair added (a midpoint) is no copy
+      ++copies[o];
+  }
   bool any = false;
   for (std::size_t v = 0; v < mesh.soup.num_vertices() && !any; ++v)
-    any = copies[mesh.vertex_origin[v]] >= 2;
+    any = mesh.vertex_origin[v] != kNoIndex && copies[mesh.vertex_origin[v]] >= 2;
   if (!any)
     return 0;
   // The model's scale, not the copies' own coordinates: copies at the origin would otherwise be
@@ -108,7 +110,8 @@ double stl_separation_surviving_weld(const IndexedMesh& mesh, const CloseGapsOpt
   // Copies of one split vertex, as lists of vertices (groups of 2 or more).
   std::map<Index, std::vector<Index>> groups;
   for (std::size_t v = 0; v < mesh.vertex_origin.size(); ++v)
-    groups[mesh.vertex_origin[v]].push_back(static_cast<Index>(v));
+    if (mesh.vertex_origin[v] != kNoIndex)
+      groups[mesh.vertex_origin[v]].push_back(static_cast<Index>(v));
   const auto as_float = [](const Point& p) {
     return Point(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]));
   };
@@ -117,7 +120,8 @@ double stl_separation_surviving_weld(const IndexedMesh& mesh, const CloseGapsOpt
       return false;
     // Gap closing welds vertices closer than its tolerance: no two copies may be that close once
     // rounded to the floats of the file.
-    const double tolerance = weld.tolerance < 0 ? default_weld_tolerance(moved) : weld.tolerance;
+    const double tolerance =
+        weld.tolerance < 0 ? default_weld_tolerance(moved, true) : weld.tolerance;  // STL: floats
     for (const auto& [origin, copies] : groups) {
       for (std::size_t i = 0; i < copies.size(); ++i) {
         for (std::size_t j = i + 1; j < copies.size(); ++j) {

@@ -42,7 +42,15 @@ WorkingSoup::WorkingSoup(const Soup& input) : input_(input) {
       std::vector<Index> corners(last - first);
       for (Index c = first; c < last; ++c)
         corners[c - first] = c;
-      loops = simple_loops(std::move(corners), [&](Index c) { return input.corner_vertices[c]; });
+      std::vector<std::pair<Index, Index>> slits;
+      loops = simple_loops(
+          std::move(corners), [&](Index c) { return input.corner_vertices[c]; }, &slits);
+      for (const auto& [a, b] : slits) {
+        if (!loops.empty()) {  // a polygon with no loop left is set aside whole
+          slits_.push_back({static_cast<Index>(face_origin_.size()), input.corner_vertices[a],
+                            input.corner_vertices[b]});
+        }
+      }
       if (loops.empty()) {
         excluded_.push_back(static_cast<Index>(f));
         continue;

@@ -5,6 +5,7 @@
 #include "meshbridge/soup.h"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace meshbridge::detail {
@@ -28,6 +29,14 @@ class WorkingSoup {
   const std::vector<Index>& excluded_faces() const { return excluded_; }
   std::size_t faces_split() const { return faces_split_; }
   std::size_t faces_added_by_split() const { return faces_added_by_split_; }
+  //! Keyhole slits set aside: two-corner loops of pinched polygons (the polygon runs a -> b and
+  //! later b -> a), as (face of the working soup's first loop of that polygon, a, b) with a, b
+  //! vertices. No half-edge face can hold them; detection still counts their edge and joins the
+  //! polygon's loops through them, as the file joins them.
+  struct Slit {
+    Index face, a, b;
+  };
+  const std::vector<Slit>& slits() const { return slits_; }
 
  private:
   const Soup& input_;
@@ -39,6 +48,7 @@ class WorkingSoup {
   std::vector<Index> excluded_;
   std::size_t faces_split_ = 0;
   std::size_t faces_added_by_split_ = 0;
+  std::vector<Slit> slits_;
 };
 
 //! True if the polygon repeats a vertex index.
@@ -49,8 +59,12 @@ bool has_repeated_vertex(PolygonView polygon);
 //! of that vertex staying. `ids` are the polygon's corners in order (corner ids, or vertex indices
 //! themselves), `vertex(id)` their vertex; returns the loops as lists of ids (none if no loop of 3
 //! distinct corners is left). The one rule for repair (WorkingSoup) and the writers of triangles.
+//! `slits`, when given, gets the two ids of each loop of two corners that is left out: a keyhole's
+//! slit, where the polygon runs a -> b and later b -> a.
 template <class VertexOf>
-std::vector<std::vector<Index>> simple_loops(std::vector<Index> ids, VertexOf vertex) {
+std::vector<std::vector<Index>> simple_loops(
+    std::vector<Index> ids, VertexOf vertex,
+    std::vector<std::pair<Index, Index>>* slits = nullptr) {
   std::vector<Index> collapsed;
   for (Index c : ids) {
     if (collapsed.empty() || vertex(collapsed.back()) != vertex(c))
@@ -67,6 +81,8 @@ std::vector<std::vector<Index>> simple_loops(std::vector<Index> ids, VertexOf ve
       std::vector<Index> loop(again, stack.end());
       if (loop.size() >= 3)
         loops.push_back(std::move(loop));
+      else if (loop.size() == 2 && slits != nullptr)
+        slits->emplace_back(loop[0], loop[1]);
       stack.erase(again + 1, stack.end());
       continue;  // keep the earlier corner of the revisited vertex
     }
@@ -74,6 +90,8 @@ std::vector<std::vector<Index>> simple_loops(std::vector<Index> ids, VertexOf ve
   }
   if (stack.size() >= 3)
     loops.push_back(std::move(stack));
+  else if (stack.size() == 2 && slits != nullptr)
+    slits->emplace_back(stack[0], stack[1]);
   return loops;
 }
 

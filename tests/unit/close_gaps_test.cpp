@@ -52,6 +52,19 @@ double float_ulp_at_110() {
   return static_cast<double>(std::nextafter(110.0f, 200.0f)) - 110.0;
 }
 
+// Gap closing for coordinates that came from float32 (an STL): the automatic tolerance respects
+// float rounding at the vertex's own coordinates.
+CloseGapsOptions from_floats() {
+  CloseGapsOptions options;
+  options.float_coordinates = true;
+  return options;
+}
+RepairOptions repair_from_floats() {
+  RepairOptions options;
+  options.close_gaps = from_floats();
+  return options;
+}
+
 // Box [0,2]x[0,1]x[0,1] of 7 quads, outward. Its top is two quads that meet at x = 1 (vertices 8
 // and 9), while the front (y = 0) and back (y = 1) are one quad each: vertices 8 and 9 lie on
 // their top sides (T-junction crack). `lift` moves vertex 8 up off the front's side.
@@ -97,20 +110,24 @@ void expect_closed_solid(const Soup& input, const RepairResult& result, double v
     EXPECT_EQ(mesh.face_origin[f], f);
 }
 
-TEST(CloseGaps, default_tolerance_is_four_float_ulps_of_the_largest_coordinate) {
+TEST(CloseGaps, default_tolerance_is_four_float_ulps_of_a_float_coordinate_else_of_the_part) {
   const Soup soup = cube_written_twice(0);
-  EXPECT_EQ(default_weld_tolerance(soup), 110.0 / (1 << 21));
-  EXPECT_GE(default_weld_tolerance(soup), 4 * float_ulp_at_110() / 2);
+  // From floats: 2^-21 x the vertex's largest coordinate.
+  EXPECT_EQ(default_weld_tolerance(soup, true), 110.0 / (1 << 21));
+  EXPECT_GE(default_weld_tolerance(soup, true), 4 * float_ulp_at_110() / 2);
+  // Doubles: 2^-21 x the extent of the vertex's part (each half of this cube spans 10).
+  EXPECT_EQ(default_weld_tolerance(soup), 10.0 / (1 << 21));
   EXPECT_EQ(default_weld_tolerance(Soup()), 0.0);
   // A stray vertex that no face uses, far away, does not widen it (it would weld small parts).
   Soup stray = soup;
   stray.add_vertex({1e9, 0, 0});
-  EXPECT_EQ(default_weld_tolerance(stray), 110.0 / (1 << 21));
+  EXPECT_EQ(default_weld_tolerance(stray, true), 110.0 / (1 << 21));
+  EXPECT_EQ(default_weld_tolerance(stray), 10.0 / (1 << 21));
 }
 
 TEST(CloseGaps, cube_with_corners_written_twice_welds_six_and_closes) {
   const Soup input = cube_written_twice(float_ulp_at_110());
-  const ClosedGaps closed = close_gaps(input);
+  const ClosedGaps closed = close_gaps(input, from_floats());
   EXPECT_EQ(closed.report.vertices_welded, 6u);
   EXPECT_EQ(closed.report.welds_refused, 0u);
   EXPECT_DOUBLE_EQ(closed.report.largest_weld_distance, std::sqrt(3.0) * float_ulp_at_110());
@@ -122,7 +139,7 @@ TEST(CloseGaps, cube_with_corners_written_twice_welds_six_and_closes) {
   EXPECT_EQ(closed.vertex_origin[8], 8u);   // copy of corner 0: isolated
   EXPECT_EQ(closed.vertex_origin[9], 15u);  // copy of corner 7: only on +sides
 
-  const RepairResult result = repair(input);
+  const RepairResult result = repair(input, repair_from_floats());
   EXPECT_EQ(result.report.gaps.vertices_welded, 6u);
   EXPECT_EQ(result.report.boundary_edges_before, 12u);  // the input as read
   EXPECT_EQ(result.report.vertices_in, 16u);
@@ -231,8 +248,8 @@ TEST(CloseGaps, refuses_a_nan_tolerance) {
 }
 
 TEST(CloseGaps, closing_twice_changes_nothing_more) {
-  const ClosedGaps once = close_gaps(cube_written_twice(float_ulp_at_110()));
-  const ClosedGaps twice = close_gaps(once.soup);
+  const ClosedGaps once = close_gaps(cube_written_twice(float_ulp_at_110()), from_floats());
+  const ClosedGaps twice = close_gaps(once.soup, from_floats());
   EXPECT_FALSE(twice.report.changed());
   EXPECT_EQ(twice.soup.corner_vertices, once.soup.corner_vertices);
   const ClosedGaps box_once = close_gaps(box_with_t_junction());
@@ -261,14 +278,16 @@ TEST(CloseGaps, preview_reports_what_close_gaps_would_do) {
   };
   CloseGapsOptions off;
   off.tolerance = 0;
-  for (const CloseGapsOptions& options : {CloseGapsOptions(), off}) {
+  for (const CloseGapsOptions& options : {CloseGapsOptions(), from_floats(), off}) {
     expect_same(cube_written_twice(float_ulp_at_110()), options);  // welds
     expect_same(cube_written_twice(1e-3), options);                // crack stays open
     expect_same(box_with_t_junction(), options);                   // T-junctions
     expect_same(close_gaps(box_with_t_junction()).soup, options);  // closed: nothing to do
     expect_same(Soup(), options);
   }
-  EXPECT_EQ(preview_close_gaps(cube_written_twice(float_ulp_at_110())).vertices_welded, 6u);
+  EXPECT_EQ(
+      preview_close_gaps(cube_written_twice(float_ulp_at_110()), from_floats()).vertices_welded,
+      6u);
   CloseGapsOptions nan;
   nan.tolerance = std::nan("");
   EXPECT_THROW(preview_close_gaps(test_support::triangle(), nan), std::invalid_argument);

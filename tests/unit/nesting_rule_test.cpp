@@ -39,8 +39,9 @@ void add_cube(Soup& soup, double lo, double size, bool outward) {
 }
 
 void expect_volumes(const Soup& soup, const std::vector<Index>& to_original,
-                    const std::vector<double>& volume_of_original_face) {
-  const Outcome o = repair_and_label(soup);
+                    const std::vector<double>& volume_of_original_face,
+                    const RepairOptions& options = {}) {
+  const Outcome o = repair_and_label(soup, options);
   test_support::expect_repair_invariants(soup, o.result);
   EXPECT_EQ(o.result.report.vertices_split, 0u);
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
@@ -60,16 +61,25 @@ TEST(Orientation, cavity_stays_toward_void) {
   });
 }
 
-TEST(Orientation, cavity_wound_outward_is_turned_toward_void) {
+TEST(Orientation, cavity_wound_outward_is_ambiguous_and_turned_toward_void_on_request) {
+  // Outward inside outward: an insert, or a cavity wound the wrong way. By default it stays as
+  // written (material); with AmbiguousNesting::cavity it is turned toward the void.
   Soup soup = from_off(kTetrahedronWithCavity);
   for (std::size_t f = 4; f < 8; ++f)
     soup = with_face_reversed(soup, f);
-  std::vector<double> expected(8, 64.0 / 6);
-  for (int f = 4; f < 8; ++f)
+  RepairOptions cavity;
+  cavity.nested_shells = AmbiguousNesting::cavity;
+  std::vector<double> as_written(8, 64.0 / 6), expected(8, 64.0 / 6);
+  for (int f = 4; f < 8; ++f) {
+    as_written[f] = 1.0 / 6;
     expected[f] = -1.0 / 6;
+  }
   for_face_orders(soup, 200, [&](const Soup& s, const std::vector<Index>& to_original) {
-    expect_volumes(s, to_original, expected);
-    EXPECT_EQ(repair(s).report.faces_flipped, 4u);
+    expect_volumes(s, to_original, as_written);
+    expect_volumes(s, to_original, expected, cavity);
+    EXPECT_EQ(repair(s).report.faces_flipped, 0u);
+    EXPECT_EQ(repair(s).report.ambiguous_nested_shells, 1u);
+    EXPECT_EQ(repair(s, cavity).report.faces_flipped, 4u);
   });
 }
 
@@ -82,8 +92,10 @@ TEST(Orientation, cube_with_cubic_cavity_in_either_winding) {
     std::vector<double> expected(12, 27.0);
     for (int f = 6; f < 12; ++f)
       expected[f] = -1.0;
+    RepairOptions options;  // outward inside outward is ambiguous: asked to be a cavity
+    options.nested_shells = AmbiguousNesting::cavity;
     for_face_orders(soup, 200, [&](const Soup& s, const std::vector<Index>& to_original) {
-      expect_volumes(s, to_original, expected);
+      expect_volumes(s, to_original, expected, options);
     });
   }
 }
@@ -280,7 +292,10 @@ TEST(Orientation, cavity_on_the_grid_lines_of_a_finely_divided_block_faces_the_v
     expected.insert(expected.end(), 6, -1000.0);
     std::vector<Index> identity(soup.num_faces());
     std::iota(identity.begin(), identity.end(), Index(0));
-    expect_volumes(soup, identity, expected);
-    EXPECT_EQ(repair(soup).report.faces_flipped, cavity_outward ? 6u : 0u);
+    RepairOptions cavity;  // outward inside outward is ambiguous: asked to be a cavity
+    cavity.nested_shells = AmbiguousNesting::cavity;
+    expect_volumes(soup, identity, expected, cavity);
+    EXPECT_EQ(repair(soup, cavity).report.faces_flipped, cavity_outward ? 6u : 0u);
+    EXPECT_EQ(repair(soup).report.ambiguous_nested_shells, cavity_outward ? 1u : 0u);
   }
 }

@@ -150,14 +150,21 @@ TEST(RepairToOpenMesh, one_inward_component_among_others_is_flipped) {
 }
 
 TEST(RepairToOpenMesh, a_cavity_wound_outward_is_turned_inward_as_repair_does) {
-  // A hollow ball: both shells outward, so the inner one faces into the material.
+  // A hollow ball: both shells outward, so the inner one faces into the material. Ambiguous
+  // (an insert, or a cavity wound the wrong way): kept as written by default, turned inward
+  // when asked for cavities, as repair does either way.
   Soup soup;
   append_part(soup, models::icosphere(1), 2.0, 0, false);
   append_part(soup, models::icosphere(1), 1.0, 0, false);
-  const OpenMeshRepair r = repair_to_openmesh(soup, lean());
+  RepairOptions cavity = lean();
+  cavity.nested_shells = AmbiguousNesting::cavity;
+  const OpenMeshRepair r = repair_to_openmesh(soup, cavity);
   EXPECT_FALSE(r.fast_path);
   EXPECT_EQ(r.report.faces_flipped, models::icosphere(1).num_faces());
-  expect_same_as_reference(soup, r);
+  EXPECT_EQ(r.report.ambiguous_nested_shells, 1u);
+  const OpenMeshRepair kept = repair_to_openmesh(soup, lean());
+  EXPECT_EQ(kept.report.faces_flipped, 0u);
+  expect_same_as_reference(soup, kept);
 }
 
 TEST(RepairToOpenMesh, a_crack_is_welded_as_repair_does) {

@@ -76,10 +76,17 @@ inline void expect_repair_invariants(const Soup& input, const RepairResult& resu
   EXPECT_TRUE(report.after.singular_edges.empty());
   EXPECT_EQ(report.after.num_singular_vertices(), 0u);
   EXPECT_TRUE(report.after.inconsistent_edges.empty());
+  // Vertices with no origin: one at the middle of each edge split to stay manifold.
+  std::size_t midpoints = 0;
   for (std::size_t v = 0; v < mesh.soup.num_vertices(); ++v) {
+    if (mesh.vertex_origin[v] == kNoIndex) {
+      ++midpoints;
+      continue;
+    }
     ASSERT_LT(mesh.vertex_origin[v], input.num_vertices());
     EXPECT_EQ(mesh.soup.positions[v], input.positions[mesh.vertex_origin[v]]);
   }
+  EXPECT_EQ(midpoints, report.edges_split_to_stay_manifold);
   // Gap closing welds corners into a survivor within its tolerance and inserts T-junction
   // corners (which take the corner starting their side as origin); otherwise corners map exactly.
   std::size_t moved_corners = 0;
@@ -93,7 +100,7 @@ inline void expect_repair_invariants(const Soup& input, const RepairResult& resu
     ASSERT_LT(mesh.corner_origin[c], input.num_corners());
     const Index from = input.corner_vertices[mesh.corner_origin[c]];
     const Index to = mesh.vertex_origin[mesh.soup.corner_vertices[c]];
-    if (to == from)
+    if (to == from || to == kNoIndex)  // kNoIndex: a midpoint corner, counted above
       continue;
     ++moved_corners;
     if ((input.positions[to] - input.positions[from]).norm() > report.gaps.tolerance)

@@ -18,6 +18,9 @@ struct VertexPair {
   friend bool operator==(const VertexPair& a, const VertexPair& b) {
     return a.v0 == b.v0 && a.v1 == b.v1;
   }
+  friend bool operator<(const VertexPair& a, const VertexPair& b) {
+    return a.v0 != b.v0 ? a.v0 < b.v0 : a.v1 < b.v1;
+  }
 };
 
 //! An edge with more than two polygon sides on it.
@@ -32,14 +35,19 @@ struct DefectReport {
   std::size_t num_faces = 0;     //!< polygons in the soup
   std::size_t num_edges = 0;     //!< distinct vertex pairs carrying at least one polygon side
 
-  std::vector<SingularEdge> singular_edges;      //!< edges with > 2 contenders
-  std::vector<Index> singular_edge_vertices;     //!< endpoints of singular edges
-  std::vector<Index> pinch_vertices;             //!< singular vertices on no singular edge
-  std::vector<VertexPair> boundary_edges;        //!< edges with exactly 1 contender
-  std::size_t num_boundary_loops = 0;            //!< holes: connected chains of boundary edges
-  std::vector<Index> isolated_vertices;          //!< vertices used by no polygon
-  std::vector<Index> degenerate_faces;           //!< polygons with a repeated vertex index
-  std::vector<Index> excluded_faces;             //!< degenerate ones with < 3 distinct corners
+  std::vector<SingularEdge> singular_edges;   //!< edges with > 2 contenders
+  std::vector<Index> singular_edge_vertices;  //!< endpoints of singular edges
+  std::vector<Index> pinch_vertices;          //!< singular vertices on no singular edge
+  std::vector<VertexPair> boundary_edges;     //!< edges with exactly 1 contender
+  std::size_t num_boundary_loops = 0;         //!< holes: connected chains of boundary edges
+  std::vector<Index> isolated_vertices;       //!< vertices used by no polygon
+  std::vector<Index> degenerate_faces;        //!< polygons with a repeated vertex index
+  std::vector<Index> excluded_faces;          //!< degenerate ones with < 3 distinct corners
+  //! Keyhole slits: two-corner pieces of pinched polygons (the polygon runs a -> b and later
+  //! b -> a). No face can hold one, so repair sets them aside (counted here and in
+  //! RepairReport::slits_set_aside); their edge counts in num_edges and joins the polygon's loops
+  //! in num_components, as in the file.
+  std::size_t slits_set_aside = 0;
   std::vector<Index> zero_area_faces;            //!< polygons whose area is ~0 (see detect_defects)
   std::vector<Index> duplicate_faces;            //!< polygons whose vertex set an earlier one has
   std::vector<VertexPair> inconsistent_edges;    //!< 2-sided edges whose sides run the same way

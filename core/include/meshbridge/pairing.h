@@ -43,4 +43,13 @@ enum class PairingPolicy {
   combinatorial,
 };
 
+//! What repair makes of a closed shell nested inside another closed shell when both are
+//! consistently wound as written and the same way (outward inside outward, or inward inside
+//! inward): an insert of an assembly, or a cavity wound the wrong way. Either way it is counted
+//! as ambiguous (DESIGN 8a, intent).
+enum class AmbiguousNesting {
+  material,  //!< as written: the inner shell runs like its container (solid material, an insert)
+  cavity,    //!< even-odd nesting: the inner shell is turned against its container (a void)
+};
+
 }  // namespace meshbridge

@@ -28,6 +28,10 @@ struct RepairOptions {
   //! every inconsistent edge of theirs is cut.
   bool cut_nonorientable = false;
   bool stitch = true;  //!< glue boundary sides on one vertex pair back when that stays manifold
+  //! A closed shell inside another, both consistently wound the same way as written (an insert,
+  //! or a cavity wound the wrong way): kept as written (material, default) or turned into a
+  //! cavity (even-odd nesting). Counted either way in RepairReport::ambiguous_nested_shells.
+  AmbiguousNesting nested_shells = AmbiguousNesting::material;
   bool remove_duplicate_faces = false;    //!< drop polygons whose vertex set an earlier one has
   bool remove_degenerate_faces = false;   //!< drop polygons that repeat a vertex index
   bool remove_isolated_vertices = false;  //!< drop vertices that no kept polygon uses
@@ -52,6 +56,9 @@ struct RepairReport {
   std::size_t faces_set_aside = 0;       //!< degenerate, < 3 distinct corners (listed in `before`)
   std::size_t faces_split = 0;           //!< pinched polygons split into simple ones
   std::size_t faces_added_by_split = 0;  //!< extra polygons those splits made
+  //! Keyhole slits of those polygons set aside (DefectReport::slits_set_aside): a polygon that
+  //! runs a -> b and later b -> a keeps its loops; the two-corner piece between is no face.
+  std::size_t slits_set_aside = 0;
   std::size_t duplicate_faces_removed = 0;    //!< by `remove_duplicate_faces`
   std::size_t degenerate_faces_removed = 0;   //!< by `remove_degenerate_faces`
   std::size_t isolated_vertices_removed = 0;  //!< by `remove_isolated_vertices`
@@ -62,8 +69,10 @@ struct RepairReport {
   std::size_t sides_cut_for_orientation = 0;  //!< sides unpaired because orientation conflicts
   std::size_t sides_stitched = 0;             //!< unpaired sides glued back in pairs (counts sides)
   std::size_t faces_flipped = 0;              //!< polygons whose corner order was reversed
-  //! Sides unpaired because their fan wound twice around a vertex, putting two pairs on one
-  //! output edge (self-intersecting input); stitches undone for that are not counted here.
+  //! Sides left unpaired because their fan wound twice around a vertex, putting two pairs on one
+  //! output edge. Always 0 now (DESIGN 8a, closed stays closed): such pairs are cut only where
+  //! their sides are glued again in the new fans, and otherwise split at their midpoint
+  //! (`edges_split_to_stay_manifold`). Kept so reports keep their fields.
   std::size_t sides_cut_to_stay_manifold = 0;
   //! Sides given another mate instead of being cut to stay manifold: where two pairs would share
   //! one output edge and the faces of two of those sides are copies of one polygon (a face given
@@ -71,6 +80,13 @@ struct RepairReport {
   //! back to back and their former mates glued to each other (4 sides per exchange). Nothing is
   //! unpaired, so no boundary edge is made.
   std::size_t sides_paired_with_copies = 0;
+  //! Pairs split at their midpoint instead of cut to stay manifold (DESIGN 8a, closed stays
+  //! closed): where two pairs, or a pair and an unpaired side, would share one output edge (the
+  //! umbrella of a vertex passes the same neighbour twice), the pair's two faces get a new vertex
+  //! in the middle of the edge, so the sheets touch without sharing an edge. Nothing is unpaired.
+  //! Each adds one vertex (its IndexedMesh::vertex_origin is kNoIndex: no input vertex) and one
+  //! corner to each of the two faces.
+  std::size_t edges_split_to_stay_manifold = 0;
   //! Always 0: no face is ever cut loose (the pipeline proves every output edge manifold
   //! without it); kept so reports keep their fields.
   std::size_t faces_detached = 0;
@@ -81,6 +97,9 @@ struct RepairReport {
   //! Components that orientation found non-orientable (after pairing, before any cut): with
   //! `cut_nonorientable` they were oriented by cutting, otherwise left as they were.
   std::size_t nonorientable_components = 0;
+  //! Closed shells nested in a closed shell and wound like it as written (see
+  //! RepairOptions::nested_shells): ambiguous between an insert and a wrongly wound cavity.
+  std::size_t ambiguous_nested_shells = 0;
   CloseGapsReport gaps;   //!< what gap closing did before pairing
   FillHolesReport holes;  //!< what hole filling did after pairing (all 0 when off)
   DefectReport before;    //!< detection on the input (before gap closing)

@@ -15,6 +15,7 @@
 
 #include "meshbridge/defect_report.h"
 #include "meshbridge/io.h"
+#include "meshbridge/preview_repair.h"
 #include "meshbridge/repair.h"
 #include "meshbridge/stock_build.h"
 
@@ -42,7 +43,8 @@ struct ReportJsonOptions {
 //! repair report's `gaps`) when `gaps` is null.
 std::string check_report_json(const std::string& file, const DefectReport& report,
                               const ReadInfo* read = nullptr, const ReportJsonOptions& options = {},
-                              const CloseGapsReport* gaps = nullptr);
+                              const CloseGapsReport* gaps = nullptr,
+                              const OrientationPreview* orientation = nullptr);
 
 //! `{"schema_version":1,"kind":"check","file":...,"status":"failed","reason":...}`: what
 //! `check --json` prints instead of the report when FILE cannot be checked (`reason`: the error

@@ -11,9 +11,12 @@
 
 namespace meshbridge::detail {
 
-//! The working faces in order, each corner on its output vertex, reversed where `flipped`
-//! (reversal keeps the first corner); origins refer to the *input* soup of `working`.
-IndexedMesh emit_mesh(const WorkingSoup& working, VertexSplit split,
-                      const std::vector<char>& flipped);
+//! The working faces in order, each corner on its output vertex, reversed where
+//! `pairing.flipped` (reversal keeps the first corner); origins refer to the *input* soup of
+//! `working`. A pair marked in `pairing.midpoint` (make_output_edges_manifold()) gets one new
+//! vertex at the middle of its edge, appended after the split vertices with origin kNoIndex and
+//! inserted as a corner into both faces of the pair (the corner's origin is the corner that
+//! starts the side, as a T-junction split's); `pairing.mate` is read only for those.
+IndexedMesh emit_mesh(const WorkingSoup& working, VertexSplit split, const SidePairing& pairing);
 
 }  // namespace meshbridge::detail

@@ -16,10 +16,13 @@ namespace {
 // per such crowded output edge
 // with its paired sides (the smaller side of each pair) and its unpaired sides. Only sides on
 // singular edges or unpaired sides of 2-sided edges can land on one output edge with others.
+// Pairs split at their midpoint are on output edges of their own and take no part.
 template <class Visit>
 std::size_t for_each_crowded_output_edge(const Soup& soup, const GroupedSides& grouped,
                                          const std::vector<Index>& corner_vertex,
-                                         const std::vector<Index>& mate, Visit visit) {
+                                         const SidePairing& pairing, Visit visit) {
+  const std::vector<Index>& mate = pairing.mate;
+  const std::vector<char>& midpoint = pairing.midpoint;
   const CornerFaces& corner_face = grouped.corner_face;
   const EdgeBridges& bridges = grouped.bridges;
   std::vector<std::tuple<Index, Index, Index>> keyed;  // (out low, out high, side)
@@ -32,6 +35,8 @@ std::size_t for_each_crowded_output_edge(const Soup& soup, const GroupedSides& g
     keyed.clear();
     for (Index i = bridges.begin[e]; i < bridges.begin[e + 1]; ++i) {
       const Index c = bridges.contenders[i];
+      if (!midpoint.empty() && midpoint[c])
+        continue;
       const Index a = corner_vertex[c];
       const Index b = corner_vertex[soup.next_corner(c, corner_face[c])];
       keyed.emplace_back(std::min(a, b), std::max(a, b), c);
@@ -103,7 +108,7 @@ std::size_t pair_copies(const Soup& soup, const GroupedSides& grouped, const Ver
   std::vector<std::pair<std::vector<Index>, Index>> keyed;  // (copy key, side)
   std::size_t exchanges = 0;
   crowded = for_each_crowded_output_edge(
-      soup, grouped, split.corner_vertex, mate,
+      soup, grouped, split.corner_vertex, pairing,
       [&](const std::vector<Index>& pairs, const std::vector<Index>&) {
         if (pairs.size() < 2)
           return;
@@ -152,6 +157,55 @@ std::size_t pair_copies(const Soup& soup, const GroupedSides& grouped, const Ver
   return exchanges;
 }
 
+// One round of splits: per output edge holding two or more pairs, all but one are split at the
+// edge's midpoint (stitched ones first; among equals the one whose faces' keys are smallest is
+// kept); a pair sharing its output edge with unpaired sides is split. A split pair stays a pair:
+// its two faces get a new vertex at the middle of the edge (emit_mesh()), so its sides run
+// through that vertex and no longer share an output edge with anything (DESIGN 8a, closed stays
+// closed). Returns the number of pairs split.
+std::size_t split_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
+                                 const std::vector<Index>& corner_vertex, SidePairing& pairing,
+                                 ManifoldEdgeCounts& counts, std::size_t& crowded) {
+  const std::vector<Index>& mate = pairing.mate;
+  const std::vector<char>& stitched = pairing.stitched;
+  if (pairing.midpoint.empty())
+    pairing.midpoint.assign(mate.size(), 0);
+  // Choices are made by face keys, which do not depend on face order or polygon start.
+  const auto key_of = [&](Index side) {
+    std::vector<Index> key;
+    face_key(soup, grouped.corner_face[side], key);
+    return key;
+  };
+  const auto pair_key = [&](Index side) {
+    auto a = key_of(side), b = key_of(mate[side]);
+    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+  };
+  std::size_t split = 0;
+  crowded = for_each_crowded_output_edge(
+      soup, grouped, corner_vertex, pairing,
+      [&](const std::vector<Index>& pairs, const std::vector<Index>& open) {
+        if (pairs.empty() || (pairs.size() == 1 && open.empty()))
+          return;
+        Index keep = kNoIndex;  // kept only if no unpaired side shares the edge
+        if (open.empty()) {
+          for (Index p : pairs) {
+            const bool better = keep == kNoIndex || (stitched[keep] && !stitched[p]) ||
+                                (stitched[keep] == stitched[p] && pair_key(p) < pair_key(keep));
+            if (better)
+              keep = p;
+          }
+        }
+        for (Index p : pairs) {
+          if (p == keep)
+            continue;
+          pairing.midpoint[p] = pairing.midpoint[mate[p]] = 1;
+          ++counts.pairs_split;
+          ++split;
+        }
+      });
+  return split;
+}
+
 // One round of cuts: per output edge holding two or more pairs, all but one are cut (stitched
 // ones first; among equals the one whose faces' keys are smallest is kept); a pair sharing its
 // output edge with unpaired sides is cut. Returns the number of pairs cut.
@@ -172,7 +226,7 @@ std::size_t cut_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
   };
   std::size_t cut = 0;
   crowded = for_each_crowded_output_edge(
-      soup, grouped, corner_vertex, mate,
+      soup, grouped, corner_vertex, pairing,
       [&](const std::vector<Index>& pairs, const std::vector<Index>& open) {
         if (pairs.empty() || (pairs.size() == 1 && open.empty()))
           return;
@@ -197,24 +251,31 @@ std::size_t cut_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
   return cut;
 }
 
-}  // namespace
+enum class Crowding { cut, split_at_midpoint };
 
-ManifoldEdgeCounts make_output_edges_manifold(const Soup& soup, const GroupedSides& grouped,
-                                              SidePairing& pairing, VertexSplit& split) {
+// Rounds until no pair crowds an output edge, resolving it as `how` says, then the unpaired sides
+// left on one output edge glued (see make_output_edges_manifold()).
+ManifoldEdgeCounts resolve_crowding(const Soup& soup, const GroupedSides& grouped,
+                                    SidePairing& pairing, VertexSplit& split, Crowding how) {
   ManifoldEdgeCounts counts;
-  // 1. Rounds until no pair crowds an output edge: where copies of one polygon can trade
-  //    partners (pair_copies) they do, and nothing is cut in that round; otherwise extra pairs are
-  //    cut. An exchange keeps the number of pairs and adds a pair of copies (one pair that was
-  //    not); a cut removes a pair: so 2 x pairs + pairs not of copies falls in every round, and
-  //    there are at most 3 x pairs rounds (one or two in practice).
+  // 1. Where copies of one polygon can trade partners (pair_copies) they do, and nothing else
+  //    changes in that round; otherwise extra pairs are cut, or split at their midpoint (which
+  //    takes them off the crowded edges for good). An exchange keeps the number of pairs and
+  //    adds a pair of copies; a cut or a split takes a pair away: so 2 x pairs + pairs not of
+  //    copies falls in every round, and there are at most 3 x pairs rounds (one or two in
+  //    practice).
   const std::size_t most_rounds = 3 * (pairing.mate.size() / 2) + 1;
   std::size_t crowded = 0;
   for (;;) {
     std::size_t changed = pair_copies(soup, grouped, split, pairing, counts, crowded);
     if (crowded == 0)
       return counts;  // no output edge is shared
-    if (changed == 0)
-      changed = cut_crowding_pairs(soup, grouped, split.corner_vertex, pairing, counts, crowded);
+    if (changed == 0) {
+      changed =
+          how == Crowding::cut
+              ? cut_crowding_pairs(soup, grouped, split.corner_vertex, pairing, counts, crowded)
+              : split_crowding_pairs(soup, grouped, split.corner_vertex, pairing, counts, crowded);
+    }
     if (changed == 0)
       break;
     if (++counts.rounds > most_rounds)
@@ -233,7 +294,7 @@ ManifoldEdgeCounts make_output_edges_manifold(const Soup& soup, const GroupedSid
     return split.corner_vertex[pairing.flipped[f] ? soup.next_corner(c, f) : c];
   };
   for_each_crowded_output_edge(
-      soup, grouped, split.corner_vertex, mate,
+      soup, grouped, split.corner_vertex, pairing,
       [&](const std::vector<Index>& pairs, const std::vector<Index>& open) {
         if (!pairs.empty() || open.size() != 2 || start(open[0]) == start(open[1])) {
           throw std::logic_error(
@@ -245,6 +306,33 @@ ManifoldEdgeCounts make_output_edges_manifold(const Soup& soup, const GroupedSid
         counts.implicitly_stitched += 2;
       });
   return counts;
+}
+
+}  // namespace
+
+ManifoldEdgeCounts make_output_edges_manifold(const Soup& soup, const GroupedSides& grouped,
+                                              SidePairing& pairing, VertexSplit& split) {
+  std::size_t crowded =
+      for_each_crowded_output_edge(soup, grouped, split.corner_vertex, pairing,
+                                   [](const std::vector<Index>&, const std::vector<Index>&) {});
+  if (crowded == 0)
+    return ManifoldEdgeCounts();
+  // First as the fans suggest: cut, and glue again what then lands on one output edge (three
+  // tetrahedra on one edge come apart, each closed). If that leaves open a side that was paired,
+  // start again and split pairs at their midpoint instead: nothing opens (DESIGN 8a).
+  const std::vector<Index> mate_before = pairing.mate;
+  const std::vector<char> stitched_before = pairing.stitched;
+  VertexSplit split_before = split;
+  ManifoldEdgeCounts counts = resolve_crowding(soup, grouped, pairing, split, Crowding::cut);
+  bool opened = false;
+  for (std::size_t c = 0; c < mate_before.size() && !opened; ++c)
+    opened = mate_before[c] != kNoIndex && pairing.mate[c] == kNoIndex;
+  if (!opened)
+    return counts;
+  pairing.mate = mate_before;
+  pairing.stitched = stitched_before;
+  split = std::move(split_before);
+  return resolve_crowding(soup, grouped, pairing, split, Crowding::split_at_midpoint);
 }
 
 }  // namespace meshbridge::detail

@@ -175,9 +175,19 @@ double winding_number(const Soup& soup, const std::vector<char>& flipped, const 
 
 std::vector<Index> nesting_depths(const Soup& soup, const std::vector<char>& flipped,
                                   const std::vector<Index>& face_shell, std::size_t num_shells) {
-  std::vector<Index> depth(num_shells, 0);
+  return shell_nesting(soup, flipped, face_shell, num_shells).depth;
+}
+
+Nesting shell_nesting(const Soup& soup, const std::vector<char>& flipped,
+                      const std::vector<Index>& face_shell, std::size_t num_shells) {
+  Nesting nesting;
+  nesting.depth.assign(num_shells, 0);
+  nesting.parent.assign(num_shells, kNoIndex);
   if (num_shells < 2)
-    return depth;
+    return nesting;
+  std::vector<Index>& depth = nesting.depth;
+  // The shells that contain each shell (few: its nesting depth).
+  std::vector<std::vector<Index>> containers(num_shells);
   // Faces of each shell (CSR) and the shells' boxes.
   std::vector<Index> shell_begin(num_shells + 1, 0);
   for (Index s : face_shell)
@@ -252,11 +262,19 @@ std::vector<Index> nesting_depths(const Soup& soup, const std::vector<char>& fli
             break;
           }
         }
-        depth[s] += inside ? 1 : 0;
+        if (inside)
+          containers[s].push_back(t);
       }
+      depth[s] = static_cast<Index>(containers[s].size());
     }
   });
-  return depth;
+  for (Index s = 0; s < num_shells; ++s) {
+    for (Index t : containers[s]) {
+      if (nesting.parent[s] == kNoIndex || depth[t] > depth[nesting.parent[s]])
+        nesting.parent[s] = t;
+    }
+  }
+  return nesting;
 }
 
 }  // namespace meshbridge::detail

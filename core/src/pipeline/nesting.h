@@ -32,6 +32,17 @@ namespace meshbridge::detail {
 std::vector<Index> nesting_depths(const Soup& soup, const std::vector<char>& flipped,
                                   const std::vector<Index>& face_shell, std::size_t num_shells);
 
+//! The nesting of closed shells: depth (as nesting_depths()) and the innermost shell that
+//! contains each one (its parent: the container of largest depth), kNoIndex at depth 0.
+struct Nesting {
+  std::vector<Index> depth;   //!< #shells
+  std::vector<Index> parent;  //!< #shells: innermost container, or kNoIndex
+};
+
+//! nesting_depths() with each shell's parent; same parameters, same cost.
+Nesting shell_nesting(const Soup& soup, const std::vector<char>& flipped,
+                      const std::vector<Index>& face_shell, std::size_t num_shells);
+
 //! Generalized winding number (Jacobson et al. 2013) of the given faces of `soup`, face f
 //! reversed where flipped[f], at `p`; NaN if `p` lies on one of them (within rounding).
 double winding_number(const Soup& soup, const std::vector<char>& flipped, const Index* faces_begin,

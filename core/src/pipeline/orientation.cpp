@@ -186,7 +186,9 @@ OrientationCounts orient_consistently(const Soup& soup, const CornerFaces& corne
   return counts;
 }
 
-void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing) {
+std::size_t orient_components(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing,
+                              AmbiguousNesting nested) {
+  std::size_t ambiguous = 0;
   const CornerFaces& corner_face = grouped.corner_face;
   const std::vector<Index>& mate = pairing.mate;
   std::vector<char>& flipped = pairing.flipped;
@@ -249,17 +251,58 @@ void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairin
   }
   std::vector<char> reverse(num_components, 0);
   if (num_shells > 0) {
-    // One shell nests in nothing (depth 0): no per-face shell numbers needed.
-    std::vector<Index> depth(num_shells, 0);
+    // A shell's own winding is its intent when it is consistent as written (every face of it
+    // reversed alike, or none): then only its sense relative to its container's counts, so a
+    // global flip of the input changes nothing. Outermost shells face outward.
+    std::vector<char> written(num_components, 2), mixed(num_components, 0);
+    for (Index f = 0; f < num_faces; ++f) {
+      const Index k = component[f];
+      if (written[k] == 2)
+        written[k] = flipped[f];
+      else if (written[k] != flipped[f])
+        mixed[k] = 1;
+    }
+    std::vector<Index> component_of(num_shells);
+    for (Index k = 0; k < num_components; ++k) {
+      if (shell[k] != kNoIndex)
+        component_of[shell[k]] = k;
+    }
+    // Outward as written: positive volume once the reversals orientation made are undone.
+    const auto written_outward = [&](Index k) { return (volume[k] > 0) != (written[k] == 1); };
+    Nesting nesting;
     if (num_shells > 1) {
       std::vector<Index> face_shell(num_faces);
       for (Index f = 0; f < num_faces; ++f)
         face_shell[f] = shell[component[f]];
-      depth = nesting_depths(soup, flipped, face_shell, num_shells);
+      nesting = shell_nesting(soup, flipped, face_shell, num_shells);
+    } else {
+      nesting.depth.assign(1, 0);
+      nesting.parent.assign(1, kNoIndex);
     }
-    for (Index k = 0; k < num_components; ++k) {
-      if (shell[k] != kNoIndex)
-        reverse[k] = (volume[k] < 0) != (depth[shell[k]] % 2 == 1);
+    // Containers first (by depth), so each shell's parent is decided before it.
+    std::vector<Index> order(num_shells);
+    for (Index s = 0; s < num_shells; ++s)
+      order[s] = s;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](Index a, Index b) { return nesting.depth[a] < nesting.depth[b]; });
+    std::vector<char> outward(num_shells, 1);
+    for (Index s : order) {
+      const Index p = nesting.parent[s];
+      if (p == kNoIndex)
+        continue;  // outermost: outward
+      const Index k = component_of[s], q = component_of[p];
+      // Even-odd: a cavity runs against its container.
+      outward[s] = !outward[p];
+      if (!mixed[k] && !mixed[q] && written_outward(k) == written_outward(q)) {
+        // Written like its container (an insert, or a cavity wound the wrong way): ambiguous.
+        ++ambiguous;
+        if (nested == AmbiguousNesting::material)
+          outward[s] = outward[p];
+      }
+    }
+    for (Index s = 0; s < num_shells; ++s) {
+      const Index k = component_of[s];
+      reverse[k] = (volume[k] > 0) != (outward[s] != 0);
     }
   }
   if (num_undecided > 0) {
@@ -273,6 +316,7 @@ void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairin
   }
   for (Index f = 0; f < num_faces; ++f)
     flipped[f] ^= reverse[component[f]];
+  return ambiguous;
 }
 
 }  // namespace meshbridge::detail

@@ -3,6 +3,7 @@
 // Stage 3, orientation: faces connected through paired sides made consistent (before
 // stitching), then each component turned as a whole (after stitching).
 
+#include "meshbridge/pairing.h"
 #include "meshbridge/soup.h"
 
 #include "pipeline/grouping.h"
@@ -33,15 +34,22 @@ std::size_t cut_inconsistent_pairs(const Soup& soup, std::vector<Index>& mate);
 bool has_inconsistent_pair(const Soup& soup, const std::vector<Index>& mate);
 
 //! Reverses whole components (faces joined through `pairing.mate`):
-//! - closed shells with a volume by their nesting depth (nesting_depths()): outer boundaries
-//!   outward (positive volume), cavities toward the void (negative), islands inside cavities
-//!   outward again;
+//! - closed shells with a volume by their nesting (shell_nesting()) and their own winding
+//!   (DESIGN 8a, intent): an outermost shell faces outward; a shell inside another runs against
+//!   its container (a cavity toward the void, an island in a cavity outward again), except that
+//!   a shell consistently wound as written the same way as its consistently wound container (an
+//!   insert, or a cavity wound the wrong way) is *ambiguous*: counted, and with
+//!   AmbiguousNesting::material kept running like its container (as written), with
+//!   AmbiguousNesting::cavity turned against it. Only relative windings count, so reversing every
+//!   face of the input gives the same result;
 //! - open components, and closed ones of no volume (|volume| <= 1e-9 times the sum of its terms'
 //!   magnitudes, or within a bound on its rounding error: two faces glued back to back, a
 //!   zero-area sliver pair), on their best evidence: their volume when capping their holes could
 //!   not change its sign and it is far above its rounding error, otherwise the area-weighted
 //!   majority of their faces' windings as given (see orientation.cpp). Rounding noise never
 //!   decides, so repairing the output again reverses nothing.
-void orient_components(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing);
+//! Returns the number of ambiguous shells.
+std::size_t orient_components(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing,
+                              AmbiguousNesting nested = AmbiguousNesting::material);
 
 }  // namespace meshbridge::detail

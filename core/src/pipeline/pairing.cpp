@@ -71,18 +71,69 @@ Index cw_face_side(const OrderedSide& c, Index face) {
 }
 
 // Pairs cyclic neighbours (in `cycle`) whose wedge lies behind both faces: the first runs against
-// the axis, the next along it.
-void pair_behind_neighbours(const std::vector<OrderedSide>& cycle, std::vector<Index>& mate) {
+// the axis, the next along it. In an inside-out component (`inside_out`, per face) behind and in
+// front swap: its faces are read as if reversed.
+void pair_behind_neighbours(const std::vector<OrderedSide>& cycle, const CornerFaces& corner_face,
+                            const std::vector<char>& inside_out, std::vector<Index>& mate) {
   const std::size_t m = cycle.size();
   if (m < 2)
     return;
+  const auto along = [&](const OrderedSide& o) {
+    return o.along != (inside_out[corner_face[o.side]] != 0);
+  };
   for (std::size_t t = 0; t < m; ++t) {
     const OrderedSide& a = cycle[t];
     const OrderedSide& b = cycle[(t + 1) % m];
-    if (!a.along && b.along && mate[a.side] == kNoIndex && mate[b.side] == kNoIndex) {
+    if (!along(a) && along(b) && mate[a.side] == kNoIndex && mate[b.side] == kNoIndex) {
       pair(mate, a.side, b.side);
     }
   }
+}
+
+// Per face: 1 if its component (faces joined through any edge) is closed (an even number of
+// sides on every edge, so its signed volume does not depend on where it is measured from) and
+// encloses a negative volume as written (far above rounding: |volume| > 1e-9 x the sum of the
+// terms' magnitudes). Open components are read as written. Such a component is inside out as a
+// whole; pairing reads it as if reversed, so that reversing every face of the input pairs the same
+// sides (DESIGN 8a, intent: the space around a model is void, whichever way the file winds it).
+std::vector<char> inside_out_faces(const Soup& soup, const GroupedSides& grouped) {
+  const CornerFaces& corner_face = grouped.corner_face;
+  const EdgeBridges& bridges = grouped.bridges;
+  const std::size_t num_faces = soup.num_faces();
+  UnionFind components(num_faces);
+  std::vector<Index> odd_edge_face;  // a face on each edge with an odd number of sides
+  for (std::size_t e = 0; e < bridges.num_edges(); ++e) {
+    const Index first = corner_face[bridges.contenders[bridges.begin[e]]];
+    for (Index i = bridges.begin[e] + 1; i < bridges.begin[e + 1]; ++i)
+      components.unite(first, corner_face[bridges.contenders[i]]);
+    if (bridges.num_contenders(e) % 2 == 1)
+      odd_edge_face.push_back(first);
+  }
+  std::vector<Index> root(num_faces);
+  std::vector<double> volume(num_faces, 0.0), magnitude(num_faces, 0.0);
+  std::vector<Index> reference(num_faces, kNoIndex);  // a vertex of each component
+  for (Index f = 0; f < num_faces; ++f) {
+    const Index r = root[f] = components.find(f);
+    const PolygonView p = soup.polygon(f);
+    if (reference[r] == kNoIndex)
+      reference[r] = p[0];
+    const Point o = soup.positions[reference[r]];
+    const Point a = soup.positions[p[0]] - o;
+    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+      const double term = (a | ((soup.positions[p[i]] - o) % (soup.positions[p[i + 1]] - o)));
+      volume[r] += term;
+      magnitude[r] += std::abs(term);
+    }
+  }
+  std::vector<char> open(num_faces, 0);  // per root
+  for (Index f : odd_edge_face)
+    open[components.find(f)] = 1;
+  std::vector<char> inside_out(num_faces, 0);
+  for (Index f = 0; f < num_faces; ++f) {
+    const Index r = root[f];
+    inside_out[f] = !open[r] && volume[r] < -1e-9 * magnitude[r];
+  }
+  return inside_out;
 }
 
 // Per face: 1 if it separates no material from void (see pair_contenders). Consumes `regions`:
@@ -225,6 +276,7 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
   // of the same kind (a membrane between two solids, a sheet in the open), separates nothing:
   // it is a sheet.
   const std::vector<char> sheet = sheets(soup, std::move(regions));
+  const std::vector<char> inside_out = inside_out_faces(soup, grouped);
 
   // Each edge's pairs touch only its own sides: the edges are paired in the same shares.
   run_parts(parts, [&](unsigned t) {
@@ -240,13 +292,13 @@ std::vector<Index> pair_contenders(const Soup& soup, const GroupedSides& grouped
       for (const auto& c : order)
         if (!sheet[corner_face[c.side]])
           cycle.push_back(c);
-      pair_behind_neighbours(cycle, mate);
+      pair_behind_neighbours(cycle, corner_face, inside_out, mate);
       // (b) everything still unpaired.
       cycle.clear();
       for (const auto& c : order)
         if (mate[c.side] == kNoIndex)
           cycle.push_back(c);
-      pair_behind_neighbours(cycle, mate);
+      pair_behind_neighbours(cycle, corner_face, inside_out, mate);
       // (c) elimination, opposite-running only: what is left in cyclic order, then the sides
       //     without a direction, in face-key order.
       edge_sides.clear();

@@ -23,7 +23,9 @@ namespace meshbridge::detail {
 //! (angular_order.h: local directions, flat faces set apart, ties by face key); regions of space
 //! joined across every wedge, each voted material or void by the area of the faces around it;
 //! sheets (same region, or same kind, on both sides: ribs, fins, membranes); then per edge
-//! (a) non-sheet cyclic neighbours with the wedge behind both, (b) the same among the rest,
+//! (a) non-sheet cyclic neighbours with the wedge behind both (in a component that encloses a
+//! negative volume as written, in front of both: it is read as if reversed, so reversing every
+//! face of the input pairs the same sides), (b) the same among the rest,
 //! (c) elimination of what is left, opposite-running only, the flat faces last.
 //!
 //! These pairs are final except where two of them would share an output edge: stage 6

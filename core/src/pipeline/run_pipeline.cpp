@@ -60,32 +60,35 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
   if (options.stitch)
     counts.sides_stitched = stitch(soup, grouped, pairing, options.orient);
   if (options.orient)
-    orient_components(soup, grouped, pairing);
+    counts.ambiguous_nested_shells = orient_components(soup, grouped, pairing, options.nested);
 
   // 5. Fans: one vertex copy per fan.  6. Manifold edges: a fan winding twice around a vertex
   //    (or both layers of a doubled sheet) can still crowd an output edge; resolving that (copies
-  //    of one face glued back to back, else pairs cut) re-splits the fans.
+  //    of one face glued back to back, else pairs split at their midpoint) re-splits the fans.
   VertexSplit split = split_fans(soup, grouped.corner_face, pairing.mate);
   const ManifoldEdgeCounts crowded = make_output_edges_manifold(soup, grouped, pairing, split);
   counts.sides_stitched += crowded.implicitly_stitched;
   counts.sides_stitched -= crowded.unstitched;
-  counts.sides_cut_to_stay_manifold = crowded.pairs_cut;
   counts.sides_paired_with_copies = crowded.sides_paired_with_copies;
-  // Cuts can leave a closed part of a component that was open: orient again (fans do not
-  // depend on orientation).
+  counts.edges_split_at_midpoint = crowded.pairs_split;
+  // Cuts (glued again in their new fans) can leave a closed part of a component that was open:
+  // orient again (fans do not depend on orientation).
   if (crowded.rounds > 0 && options.orient)
-    orient_components(soup, grouped, pairing);
+    counts.ambiguous_nested_shells = orient_components(soup, grouped, pairing, options.nested);
 
   // 7. Emit the output polygons once.
   counts.vertices_split = split.vertex_origin.size() - soup.num_vertices();
   for (char f : pairing.flipped)
     counts.faces_flipped += f;
+  for (Index m : pairing.mate)
+    counts.open_sides += m == kNoIndex ? 1 : 0;
   if (!options.keep_state) {
     grouped = GroupedSides();
-    pairing.mate = std::vector<Index>();
     pairing.stitched = std::vector<char>();
   }
-  result.mesh = emit_mesh(working, std::move(split), pairing.flipped);
+  result.mesh = emit_mesh(working, std::move(split), pairing);
+  if (!options.keep_state)
+    pairing.mate = std::vector<Index>();
   if (options.keep_state)
     result.grouped = std::move(grouped);
   else

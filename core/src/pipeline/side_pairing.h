@@ -11,11 +11,14 @@ namespace meshbridge::detail {
 //! Which sides are glued to which, and which faces are reversed. Pairing fills `mate`;
 //! orientation fills `flipped` and may cut pairs; stitching glues more pairs (marking them
 //! `stitched`); making output edges manifold exchanges partners between copies of one polygon
-//! or cuts some again.
+//! or splits pairs at their midpoint.
 struct SidePairing {
   std::vector<Index> mate;     //!< #C: side paired with side c, or kNoIndex (a boundary side)
   std::vector<char> stitched;  //!< #C: 1 if c's pair was made by stitching, not by pairing
   std::vector<char> flipped;   //!< #F: 1 if the face's corner order is to be reversed
+  //! #C, or empty when none: 1 if c's pair is split at its midpoint to stay manifold (its two
+  //! faces get a new vertex in the middle of the edge when emitted)
+  std::vector<char> midpoint;
 };
 
 //! Output vertices: one per fan of every input vertex.
