@@ -86,6 +86,10 @@ CloseGapsOptions parse_weld(const std::string& text) {
 
 std::string gaps_line(const CloseGapsReport& g, bool would) {
   std::ostringstream out;
+  if (!(g.tolerance > 0) && g.automatic) {
+    out << "gaps: none to close (no boundary edge)\n";
+    return out.str();
+  }
   if (!(g.tolerance > 0)) {
     out << "gaps: not closed (weld tolerance 0: --weld 0, or every coordinate is 0)\n";
     return out.str();

@@ -460,13 +460,14 @@ bool close_gaps_if_any(const Soup& soup, const CloseGapsOptions& options, Closed
   result = ClosedGaps();
   CloseGapsReport& report = result.report;
   const double fixed = options.tolerance < 0 ? -1.0 : options.tolerance;
+  report.automatic = fixed < 0;
+  report.tolerance = std::max(fixed, 0.0);
   if (fixed == 0 || soup.num_vertices() == 0)
     return false;
   const std::vector<Index> found = known_boundary ? std::vector<Index>() : boundary_sides(soup);
   const std::vector<Index>& boundary = known_boundary ? *known_boundary : found;
   if (boundary.empty())  // only boundary sides and their vertices take part
     return false;
-  report.automatic = fixed < 0;
   const VertexScales scales(soup, options, fixed);
   // The tolerance reported: the given one, or the largest automatic one of a boundary vertex.
   if (fixed > 0) {

@@ -408,6 +408,8 @@ std::string to_text(const RepairReport& r) {
         << " welded (largest move " << g.largest_weld_distance << ", " << g.welds_refused
         << " refused: same polygon), " << counted(g.t_junctions_closed, "T-junction") << " closed ("
         << counted(g.sides_split, "side") << " split)\n";
+  } else if (g.automatic) {
+    out << "gaps: none to close (no boundary edge)\n";
   } else {
     out << "gaps: not closed (tolerance 0)\n";
   }
