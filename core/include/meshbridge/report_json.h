@@ -16,6 +16,7 @@
 #include "meshbridge/defect_report.h"
 #include "meshbridge/io.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/self_intersections.h"
 #include "meshbridge/stock_build.h"
 
 #include <cstddef>
@@ -39,10 +40,12 @@ struct ReportJsonOptions {
 //! `{"schema_version":1,"kind":"check","file":...,"read":{...},<counts>[,"gaps":{...}]
 //! [,"elements":{...}]}`. `file` is written as given. `read` (the read accounting of ReadInfo)
 //! is left out when `read` is null; `gaps` (what repair's gap closing would do, the keys of a
-//! repair report's `gaps`) when `gaps` is null.
+//! repair report's `gaps`) when `gaps` is null; `self_intersections` (the counts of
+//! find_self_intersections(), its lists under its own `elements` on request) when that is null.
 std::string check_report_json(const std::string& file, const DefectReport& report,
                               const ReadInfo* read = nullptr, const ReportJsonOptions& options = {},
-                              const CloseGapsReport* gaps = nullptr);
+                              const CloseGapsReport* gaps = nullptr,
+                              const SelfIntersectionReport* self_intersections = nullptr);
 
 //! `{"schema_version":1,"kind":"check","file":...,"status":"failed","reason":...}`: what
 //! `check --json` prints instead of the report when FILE cannot be checked (`reason`: the error
