@@ -47,9 +47,20 @@ std::vector<Index> ids_by_position(const Soup& soup) {
   return id;
 }
 
+//! A triangle's bounding box in floats, rounded outward (half the memory of doubles; the
+//! broad phase only needs boxes that contain the triangle).
 struct Box {
-  double lo[3], hi[3];
+  float lo[3], hi[3];
 };
+
+float round_down(double x) {
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) > x ? std::nextafter(f, -HUGE_VALF) : f;
+}
+float round_up(double x) {
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) < x ? std::nextafter(f, HUGE_VALF) : f;
+}
 
 //! The soup's triangles (corners as position ids), the face of each and its bounding box.
 struct Triangles {
@@ -74,8 +85,8 @@ Triangles cut_into_triangles(const Soup& soup, const std::vector<Index>& id) {
     }
     Box b;
     for (int i = 0; i < 3; ++i) {
-      b.lo[i] = std::min({positions[t[0]][i], positions[t[1]][i], positions[t[2]][i]});
-      b.hi[i] = std::max({positions[t[0]][i], positions[t[1]][i], positions[t[2]][i]});
+      b.lo[i] = round_down(std::min({positions[t[0]][i], positions[t[1]][i], positions[t[2]][i]}));
+      b.hi[i] = round_up(std::max({positions[t[0]][i], positions[t[1]][i], positions[t[2]][i]}));
     }
     out.corners.push_back(t);
     out.face.push_back(static_cast<Index>(f));
@@ -103,8 +114,8 @@ class Grid {
       lo_[i] = HUGE_VAL;
       double hi = -HUGE_VAL;
       for (const Box& b : boxes) {
-        lo_[i] = std::min(lo_[i], b.lo[i]);
-        hi = std::max(hi, b.hi[i]);
+        lo_[i] = std::min<double>(lo_[i], b.lo[i]);
+        hi = std::max<double>(hi, b.hi[i]);
       }
       extent_[i] = boxes.empty() ? 0 : hi - lo_[i];
     }
@@ -118,17 +129,30 @@ class Grid {
     }
     for (;;) {
       set_size(high);
-      if (high <= 0 || fill(boxes) <= 16 * std::max<std::size_t>(boxes.size(), 1))
+      if (high <= 0 || !too_many_entries(boxes))
         break;
       high *= 2;
     }
   }
 
-  std::size_t num_cells() const { return begin_.size() - 1; }
+  std::size_t num_cells() const { return cells_[0] * cells_[1] * cells_[2]; }
+  //! Lists every box in every cell it overlaps (counting sort).
+  void fill(const std::vector<Box>& boxes) {
+    const std::size_t n = cells_[0] * cells_[1] * cells_[2];
+    begin_.assign(n + 1, 0);
+    for (const Box& b : boxes)
+      for_cells(b, [&](std::size_t c) { ++begin_[c + 1]; });
+    for (std::size_t c = 0; c < n; ++c)
+      begin_[c + 1] += begin_[c];
+    listed_.resize(begin_[n]);
+    std::vector<std::size_t> next(begin_.begin(), begin_.end() - 1);
+    for (std::size_t t = 0; t < boxes.size(); ++t)
+      for_cells(boxes[t], [&](std::size_t c) { listed_[next[c]++] = static_cast<Index>(t); });
+  }
   const Index* cell_begin(std::size_t c) const { return listed_.data() + begin_[c]; }
   const Index* cell_end(std::size_t c) const { return listed_.data() + begin_[c + 1]; }
   //! The cell of a point.
-  std::size_t cell_of(const double* p) const {
+  std::size_t cell_of(const float* p) const {
     return (index(p[2], 2) * cells_[1] + index(p[1], 1)) * cells_[0] + index(p[0], 0);
   }
 
@@ -150,44 +174,65 @@ class Grid {
     const double k = (x - lo_[axis]) / size_;  // monotone in x: a box's cells are a range
     return std::min(cells_[axis] - 1, static_cast<std::size_t>(std::max(0.0, k)));
   }
-  //! Lists every box in every cell it overlaps (counting sort); returns the entries.
-  std::size_t fill(const std::vector<Box>& boxes) {
-    const std::size_t n = cells_[0] * cells_[1] * cells_[2];
-    begin_.assign(n + 1, 0);
-    std::size_t entries = 0;
-    const auto for_cells = [&](const Box& b, auto&& visit) {
-      const std::size_t x0 = index(b.lo[0], 0), x1 = index(b.hi[0], 0);
-      const std::size_t y0 = index(b.lo[1], 1), y1 = index(b.hi[1], 1);
-      const std::size_t z0 = index(b.lo[2], 2), z1 = index(b.hi[2], 2);
-      for (std::size_t z = z0; z <= z1; ++z)
-        for (std::size_t y = y0; y <= y1; ++y)
-          for (std::size_t x = x0; x <= x1; ++x)
-            visit((z * cells_[1] + y) * cells_[0] + x);
-    };
+  template <class Visit>
+  void for_cells(const Box& b, Visit&& visit) const {
+    const std::size_t x0 = index(b.lo[0], 0), x1 = index(b.hi[0], 0);
+    const std::size_t y0 = index(b.lo[1], 1), y1 = index(b.hi[1], 1);
+    const std::size_t z0 = index(b.lo[2], 2), z1 = index(b.hi[2], 2);
+    for (std::size_t z = z0; z <= z1; ++z)
+      for (std::size_t y = y0; y <= y1; ++y)
+        for (std::size_t x = x0; x <= x1; ++x)
+          visit((z * cells_[1] + y) * cells_[0] + x);
+  }
+  //! True if the boxes would fill more than 16 cells per box on average.
+  bool too_many_entries(const std::vector<Box>& boxes) const {
     const std::size_t limit = 16 * std::max<std::size_t>(boxes.size(), 1);
+    std::size_t entries = 0;
     for (const Box& b : boxes) {
-      for_cells(b, [&](std::size_t c) { ++begin_[c + 1]; });
       entries += (index(b.hi[0], 0) - index(b.lo[0], 0) + 1) *
                  (index(b.hi[1], 1) - index(b.lo[1], 1) + 1) *
                  (index(b.hi[2], 2) - index(b.lo[2], 2) + 1);
-      if (entries > limit && size_ > 0)
-        return entries;  // too fine: the caller coarsens
+      if (entries > limit)
+        return true;
     }
-    for (std::size_t c = 0; c < n; ++c)
-      begin_[c + 1] += begin_[c];
-    listed_.resize(entries);
-    std::vector<std::size_t> next(begin_.begin(), begin_.end() - 1);
-    for (std::size_t t = 0; t < boxes.size(); ++t)
-      for_cells(boxes[t], [&](std::size_t c) { listed_[next[c]++] = static_cast<Index>(t); });
-    return entries;
+    return false;
   }
 
   double lo_[3] = {0, 0, 0}, extent_[3] = {0, 0, 0};
   double size_ = 0;
   std::size_t cells_[3] = {1, 1, 1};
-  std::vector<std::size_t> begin_{0, 0};  //!< cell -> first entry in listed_ (CSR)
+  std::vector<std::size_t> begin_{0, 0};  //!< cell -> first entry in listed_ (CSR), by fill()
   std::vector<Index> listed_;             //!< triangles of each cell
 };
+
+//! Puts the triangles in the order of the grid cell of their box's low corner, so that those
+//! of one cell lie together in memory (the file's face order may be any), then lists them.
+void order_by_cell(Triangles& triangles, Grid& grid) {
+  const std::size_t n = triangles.box.size();
+  std::vector<Index> count(grid.num_cells() + 1, 0);
+  std::vector<Index> cell(n);
+  for (std::size_t t = 0; t < n; ++t) {
+    cell[t] = static_cast<Index>(grid.cell_of(triangles.box[t].lo));
+    ++count[cell[t] + 1];
+  }
+  for (std::size_t c = 0; c + 1 < count.size(); ++c)
+    count[c + 1] += count[c];
+  std::vector<Index> order(n);
+  for (std::size_t t = 0; t < n; ++t)
+    order[count[cell[t]]++] = static_cast<Index>(t);
+  Triangles sorted;
+  sorted.degenerate = triangles.degenerate;
+  sorted.corners.reserve(n);
+  sorted.face.reserve(n);
+  sorted.box.reserve(n);
+  for (Index t : order) {
+    sorted.corners.push_back(triangles.corners[t]);
+    sorted.face.push_back(triangles.face[t]);
+    sorted.box.push_back(triangles.box[t]);
+  }
+  triangles = std::move(sorted);
+  grid.fill(triangles.box);
+}
 
 bool boxes_overlap(const Box& a, const Box& b) {
   for (int i = 0; i < 3; ++i)
@@ -205,22 +250,30 @@ std::vector<FacePair> intersecting_pairs(const Soup& soup, const Triangles& tria
   std::vector<std::vector<FacePair>> found(threads);
   detail::run_parts(threads, [&](unsigned part) {
     std::vector<FacePair>& mine = found[part];
+    std::vector<Index> in_cell;
     for (;;) {
       const std::size_t first = next_chunk.fetch_add(kChunk);
       if (first >= grid.num_cells())
         break;
       const std::size_t last = std::min(grid.num_cells(), first + kChunk);
       for (std::size_t c = first; c < last; ++c) {
-        const Index* begin = grid.cell_begin(c);
-        const Index* end = grid.cell_end(c);
-        for (const Index* i = begin; i != end; ++i) {
+        // The cell's boxes by their low x, swept: a box meets those starting before it ends.
+        in_cell.assign(grid.cell_begin(c), grid.cell_end(c));
+        if (in_cell.size() < 2)
+          continue;
+        std::sort(in_cell.begin(), in_cell.end(), [&](Index a, Index b) {
+          return triangles.box[a].lo[0] < triangles.box[b].lo[0];
+        });
+        for (auto i = in_cell.begin(); i != in_cell.end(); ++i) {
           const Box& bi = triangles.box[*i];
-          for (const Index* j = i + 1; j != end; ++j) {
+          for (auto j = i + 1; j != in_cell.end(); ++j) {
             const Box& bj = triangles.box[*j];
+            if (bj.lo[0] > bi.hi[0])
+              break;
             if (!boxes_overlap(bi, bj) || triangles.face[*i] == triangles.face[*j])
               continue;
-            const double low[3] = {std::max(bi.lo[0], bj.lo[0]), std::max(bi.lo[1], bj.lo[1]),
-                                   std::max(bi.lo[2], bj.lo[2])};
+            const float low[3] = {std::max(bi.lo[0], bj.lo[0]), std::max(bi.lo[1], bj.lo[1]),
+                                  std::max(bi.lo[2], bj.lo[2])};
             if (grid.cell_of(low) != c)
               continue;  // tested in another cell
             if (!detail::triangles_intersect(positions, triangles.corners[*i],
@@ -309,9 +362,10 @@ SelfIntersectionReport find_self_intersections(const Soup& soup,
   }
   SelfIntersectionReport report;
   const std::vector<Index> id = ids_by_position(soup);
-  const Triangles triangles = cut_into_triangles(soup, id);
+  Triangles triangles = cut_into_triangles(soup, id);
   report.degenerate_triangles = triangles.degenerate;
-  const Grid grid(triangles.box);
+  Grid grid(triangles.box);
+  order_by_cell(triangles, grid);
   const unsigned threads =
       std::max(1u, std::min<unsigned>(options.threads ? options.threads : detail::worker_threads(),
                                       static_cast<unsigned>(grid.num_cells() / 1024 + 1)));

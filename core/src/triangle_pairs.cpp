@@ -9,6 +9,7 @@
 #include <CGAL/intersections.h>
 #endif
 
+#include <cmath>
 #include <stdexcept>
 
 namespace meshbridge::detail {
@@ -58,6 +59,17 @@ bool triangle_predicates_available() {
 bool is_degenerate_triangle(const Point* positions, const TriangleCorners& t) {
   if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
     return true;
+  // A component of the cross product far above its rounding error settles it without CGAL:
+  // the differences and products are each within 2^-53 relative, so 1e-14 of the terms' size
+  // bounds the error of the double result by a wide margin.
+  const Point& a = positions[t[0]];
+  const Point u = positions[t[1]] - a, v = positions[t[2]] - a;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const double l = u[j] * v[k], r = u[k] * v[j];
+    if (std::abs(l - r) > 1e-14 * (std::abs(l) + std::abs(r)))
+      return false;
+  }
   return CGAL::collinear(point(positions, t[0]), point(positions, t[1]), point(positions, t[2]));
 }
 
