@@ -67,7 +67,8 @@ bool is_degenerate_triangle(const Point* positions, const TriangleCorners& t) {
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     const double l = u[j] * v[k], r = u[k] * v[j];
-    if (std::abs(l - r) > 1e-14 * (std::abs(l) + std::abs(r)))
+    const double size = std::abs(l) + std::abs(r);
+    if (size > 1e-250 && std::abs(l - r) > 1e-14 * size)  // (far from underflow)
       return false;
   }
   return CGAL::collinear(point(positions, t[0]), point(positions, t[1]), point(positions, t[2]));
