@@ -70,10 +70,13 @@ struct Triangles {
   std::size_t degenerate = 0;
 };
 
-Triangles cut_into_triangles(const Soup& soup, const std::vector<Index>& id) {
+//! The triangles of faces [first, last).
+Triangles cut_faces(const Soup& soup, const std::vector<Index>& id, std::size_t first,
+                    std::size_t last) {
   Triangles out;
-  out.corners.reserve(soup.num_faces());
-  out.face.reserve(soup.num_faces());
+  out.corners.reserve(last - first);
+  out.face.reserve(last - first);
+  out.box.reserve(last - first);
   detail::Triangulation cut;
   const Point* positions = soup.positions.data();
   const auto keep = [&](TriangleCorners t, std::size_t f) {
@@ -92,7 +95,7 @@ Triangles cut_into_triangles(const Soup& soup, const std::vector<Index>& id) {
     out.face.push_back(static_cast<Index>(f));
     out.box.push_back(b);
   };
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+  for (std::size_t f = first; f < last; ++f) {
     const PolygonView polygon = soup.polygon(f);
     if (polygon.size() == 3) {
       keep({polygon[0], polygon[1], polygon[2]}, f);
@@ -101,6 +104,34 @@ Triangles cut_into_triangles(const Soup& soup, const std::vector<Index>& id) {
     detail::triangulate_polygon(soup, f, cut);
     for (const auto& t : cut.triangles)
       keep(t, f);
+  }
+  return out;
+}
+
+//! The soup's triangles in face order, the faces cut in `threads` parts side by side.
+Triangles cut_into_triangles(const Soup& soup, const std::vector<Index>& id, unsigned threads) {
+  const std::size_t faces = soup.num_faces();
+  const unsigned parts =
+      std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(faces / 65536 + 1)));
+  std::vector<Triangles> part(parts);
+  detail::run_parts(parts, [&](unsigned k) {
+    part[k] = cut_faces(soup, id, detail::part_begin(faces, parts, k),
+                        detail::part_begin(faces, parts, k + 1));
+  });
+  if (parts == 1)
+    return std::move(part[0]);
+  Triangles out;
+  std::size_t total = 0;
+  for (const Triangles& p : part)
+    total += p.box.size();
+  out.corners.reserve(total);
+  out.face.reserve(total);
+  out.box.reserve(total);
+  for (const Triangles& p : part) {
+    out.corners.insert(out.corners.end(), p.corners.begin(), p.corners.end());
+    out.face.insert(out.face.end(), p.face.begin(), p.face.end());
+    out.box.insert(out.box.end(), p.box.begin(), p.box.end());
+    out.degenerate += p.degenerate;
   }
   return out;
 }
@@ -145,7 +176,7 @@ class Grid {
     for (std::size_t c = 0; c < n; ++c)
       begin_[c + 1] += begin_[c];
     listed_.resize(begin_[n]);
-    std::vector<std::size_t> next(begin_.begin(), begin_.end() - 1);
+    std::vector<Index> next(begin_.begin(), begin_.end() - 1);
     for (std::size_t t = 0; t < boxes.size(); ++t)
       for_cells(boxes[t], [&](std::size_t c) { listed_[next[c]++] = static_cast<Index>(t); });
   }
@@ -186,7 +217,9 @@ class Grid {
   }
   //! True if the boxes would fill more than 16 cells per box on average.
   bool too_many_entries(const std::vector<Box>& boxes) const {
-    const std::size_t limit = 16 * std::max<std::size_t>(boxes.size(), 1);
+    // (and never more than 32-bit offsets hold)
+    const std::size_t limit =
+        std::min<std::size_t>(16 * std::max<std::size_t>(boxes.size(), 1), kNoIndex - 1);
     std::size_t entries = 0;
     for (const Box& b : boxes) {
       entries += (index(b.hi[0], 0) - index(b.lo[0], 0) + 1) *
@@ -201,13 +234,13 @@ class Grid {
   double lo_[3] = {0, 0, 0}, extent_[3] = {0, 0, 0};
   double size_ = 0;
   std::size_t cells_[3] = {1, 1, 1};
-  std::vector<std::size_t> begin_{0, 0};  //!< cell -> first entry in listed_ (CSR), by fill()
-  std::vector<Index> listed_;             //!< triangles of each cell
+  std::vector<Index> begin_{0, 0};  //!< cell -> first entry in listed_ (CSR), by fill()
+  std::vector<Index> listed_;       //!< triangles of each cell
 };
 
 //! Puts the triangles in the order of the grid cell of their box's low corner, so that those
 //! of one cell lie together in memory (the file's face order may be any), then lists them.
-void order_by_cell(Triangles& triangles, Grid& grid) {
+void order_by_cell(Triangles& triangles, Grid& grid, unsigned threads) {
   const std::size_t n = triangles.box.size();
   std::vector<Index> count(grid.num_cells() + 1, 0);
   std::vector<Index> cell(n);
@@ -222,14 +255,17 @@ void order_by_cell(Triangles& triangles, Grid& grid) {
     order[count[cell[t]]++] = static_cast<Index>(t);
   Triangles sorted;
   sorted.degenerate = triangles.degenerate;
-  sorted.corners.reserve(n);
-  sorted.face.reserve(n);
-  sorted.box.reserve(n);
-  for (Index t : order) {
-    sorted.corners.push_back(triangles.corners[t]);
-    sorted.face.push_back(triangles.face[t]);
-    sorted.box.push_back(triangles.box[t]);
-  }
+  sorted.corners.resize(n);
+  sorted.face.resize(n);
+  sorted.box.resize(n);
+  detail::run_parts(threads, [&](unsigned k) {
+    const std::size_t last = detail::part_begin(n, threads, k + 1);
+    for (std::size_t i = detail::part_begin(n, threads, k); i < last; ++i) {
+      sorted.corners[i] = triangles.corners[order[i]];
+      sorted.face[i] = triangles.face[order[i]];
+      sorted.box[i] = triangles.box[order[i]];
+    }
+  });
   triangles = std::move(sorted);
   grid.fill(triangles.box);
 }
@@ -361,15 +397,17 @@ SelfIntersectionReport find_self_intersections(const Soup& soup,
         "was built without CGAL, whose exact predicates they need; Debian: libcgal-dev)");
   }
   SelfIntersectionReport report;
+  const unsigned threads =
+      std::max(1u, options.threads ? options.threads : detail::worker_threads());
   const std::vector<Index> id = ids_by_position(soup);
-  Triangles triangles = cut_into_triangles(soup, id);
+  Triangles triangles = cut_into_triangles(soup, id, threads);
   report.degenerate_triangles = triangles.degenerate;
   Grid grid(triangles.box);
-  order_by_cell(triangles, grid);
-  const unsigned threads =
-      std::max(1u, std::min<unsigned>(options.threads ? options.threads : detail::worker_threads(),
-                                      static_cast<unsigned>(grid.num_cells() / 1024 + 1)));
-  report.face_pairs = intersecting_pairs(soup, triangles, grid, threads);
+  // Small meshes on one thread: starting threads would cost more than it saves.
+  const unsigned share =
+      std::min<unsigned>(threads, static_cast<unsigned>(triangles.box.size() / 65536 + 1));
+  order_by_cell(triangles, grid, share);
+  report.face_pairs = intersecting_pairs(soup, triangles, grid, share);
 
   for (const FacePair& p : report.face_pairs) {
     report.faces.push_back(p.f0);
