@@ -152,6 +152,8 @@ class Grid {
     }
     const double target = 2.0 * std::max<std::size_t>(boxes.size(), 1);
     double low = 0, high = std::max({extent_[0], extent_[1], extent_[2]});
+    if (!std::isfinite(high))
+      high = 0;  // coordinates apart by more than a double holds: one cell (slow, but right)
     if (high > 0) {
       for (int step = 0; step < 64; ++step) {  // the smallest cell size within the target
         const double mid = 0.5 * (low + high);
