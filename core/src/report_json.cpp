@@ -204,7 +204,8 @@ std::string check_failed_json(const std::string& file, const std::string& reason
 std::string repair_report_json(const std::string& file, const std::string& output,
                                const RepairReport& report, const ReadInfo* read,
                                const ReportJsonOptions& options, const DefectReport* reread,
-                               const WrittenOutput* written) {
+                               const WrittenOutput* written,
+                               const SelfIntersectionReport* self_intersections) {
   Json out = header("repair", file);
   if (!output.empty())
     out["output"] = output;
@@ -212,6 +213,8 @@ std::string repair_report_json(const std::string& file, const std::string& outpu
     out["read"] = read_json(*read);
   add_repair(out, report, options.elements, reread);
   add_written(out, written);
+  if (self_intersections)
+    out["self_intersections"] = self_intersections_json(*self_intersections, options.elements);
   return dump(out, options.indent);
 }
 

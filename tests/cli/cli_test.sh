@@ -777,6 +777,17 @@ OBJ
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/fixed.obj"
   expect_exit 0 "$mb" check "$work/fixed.obj" --self-intersections
   expect_in "$work/out" "self-intersecting face pairs: 0"
+  # repair --self-intersections: the counts of the result, in the summary and the report.
+  expect_exit 0 "$mb" repair "$work/crossing.obj" "$work/crossing_fixed.obj" --self-intersections \
+    --report "$work/crossing.json"
+  expect_in "$work/out" "self-intersections of the result:"
+  expect_in "$work/out" "self-intersecting face pairs: 6"
+  [ "$(json_field "$work/crossing.json" self_intersections.face_pairs)" = 6 ] || fail "repair face_pairs"
+  [ "$(json_field "$work/crossing.json" self_intersections.component_pairs)" = 1 ] ||
+    fail "repair component_pairs"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/fixed2.obj" --self-intersections \
+    --report -
+  [ "$(json_field "$work/out" self_intersections.face_pairs)" = 0 ] || fail "repaired twocubes"
   expect_exit 0 "$mb" explain self-intersection
   expect_in "$work/out" "shared"
   ;;

@@ -59,12 +59,14 @@ std::string check_failed_json(const std::string& file, const std::string& reason
 //! with `options.elements` the `before`, `after` (and `reread`) objects carry their `elements`.
 //! `output` is left out when empty, `read` when null. `reread` (the written file as a reader
 //! gets it back: STL welds split vertex copies by position) is written exactly when `reread` is
-//! not null, `written` exactly when `written` is not null.
+//! not null, `written` exactly when `written` is not null; `self_intersections` (those of the
+//! repaired mesh as written, the object of check_report_json()) exactly when it is not null.
 std::string repair_report_json(const std::string& file, const std::string& output,
                                const RepairReport& report, const ReadInfo* read = nullptr,
                                const ReportJsonOptions& options = {},
                                const DefectReport* reread = nullptr,
-                               const WrittenOutput* written = nullptr);
+                               const WrittenOutput* written = nullptr,
+                               const SelfIntersectionReport* self_intersections = nullptr);
 
 //! What one way of building an OpenMesh mesh from a soup kept (for `compare`).
 struct BuildFigures {
