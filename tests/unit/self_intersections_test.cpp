@@ -7,6 +7,9 @@
 #include "meshbridge/models/canonical_models.h"
 #include "meshbridge/repair.h"
 
+#include "meshbridge/io.h"
+
+#include "scratch_folder.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -235,6 +238,58 @@ TEST(SelfIntersections, same_result_on_any_number_of_threads) {
   EXPECT_GT(a.face_pairs.size(), 0u);
   EXPECT_EQ(a.face_pairs, b.face_pairs);
   EXPECT_EQ(a.component_pairs, (std::vector<FacePair>{{0, 1}}));
+}
+
+//! The same counts after a round trip through every format MeshBridge writes.
+class SelfIntersectionFormats : public test_support::ScratchFolderTest {
+ protected:
+  SelfIntersectionFormats() : ScratchFolderTest("selfx") {}
+  //! `soup` written as `name` and read back.
+  Soup round_trip(const Soup& soup, const std::string& name) const {
+    IndexedMesh mesh;
+    mesh.soup = soup;
+    for (Index v = 0; v < soup.num_vertices(); ++v)
+      mesh.vertex_origin.push_back(v);
+    for (Index f = 0; f < soup.num_faces(); ++f)
+      mesh.face_origin.push_back(f);
+    for (Index c = 0; c < soup.num_corners(); ++c)
+      mesh.corner_origin.push_back(c);
+    write_mesh(path(name), mesh);
+    return read_soup(path(name));
+  }
+};
+
+TEST_F(SelfIntersectionFormats, crossing_cubes_in_every_format) {
+  Soup quads;
+  add_box(quads, {0, 0, 0}, {1, 1, 1}, false);
+  add_box(quads, {0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}, false);
+  const std::vector<Index> faces = {1, 3, 5, 6, 8, 10};
+  for (const char* name : {"cubes.obj", "cubes.off", "cubes.ply"}) {
+    const SelfIntersectionReport r = find_self_intersections(round_trip(quads, name));
+    EXPECT_EQ(r.face_pairs.size(), 6u) << name;
+    EXPECT_EQ(r.faces, faces) << name;
+    EXPECT_EQ(r.component_pairs.size(), 1u) << name;
+  }
+  // STL holds triangles: each square becomes two, and every one of the 12 is crossed (either
+  // diagonal of a crossed square runs through the corner of the L the crossing draws): 18 pairs.
+  Soup triangles;
+  add_box(triangles, {0, 0, 0}, {1, 1, 1}, true);
+  add_box(triangles, {0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}, true);
+  EXPECT_EQ(find_self_intersections(triangles).face_pairs.size(), 18u);
+  const SelfIntersectionReport stl = find_self_intersections(round_trip(quads, "cubes.stl"));
+  EXPECT_EQ(stl.face_pairs.size(), 18u);
+  EXPECT_EQ(stl.faces.size(), 12u);
+  EXPECT_EQ(stl.component_pairs.size(), 1u);
+}
+
+TEST_F(SelfIntersectionFormats, repaired_two_cubes_stay_clean_in_every_format) {
+  const RepairResult repaired = repair(models::two_cubes_sharing_edge());
+  for (const char* name : {"fixed.obj", "fixed.off", "fixed.ply", "fixed.stl"}) {
+    IndexedMesh mesh = repaired.mesh;
+    write_mesh(path(name), mesh);
+    const SelfIntersectionReport r = find_self_intersections(read_soup(path(name)));
+    EXPECT_EQ(r.face_pairs.size(), 0u) << name;
+  }
 }
 
 TEST(SelfIntersections, bad_input_is_named) {
