@@ -11,6 +11,7 @@
 #include "meshbridge/preview_repair.h"
 #include "meshbridge/read_accounting.h"
 #include "meshbridge/report_json.h"
+#include "meshbridge/self_intersections.h"
 
 #include <CLI/CLI.hpp>
 
@@ -26,6 +27,7 @@ struct CheckArguments {
   bool json = false;
   bool elements = false;
   bool progress = false;
+  bool self_intersections = false;  //!< also find the faces that cross (find_self_intersections)
   std::string weld = "auto";  //!< tolerance of the gap closing repair would do ("auto", 0 = off)
   AmbiguousNesting nested = AmbiguousNesting::material;  //!< as repair's --nested-shells
 };
@@ -40,6 +42,7 @@ int run_check(const CheckArguments& arguments) {
   CloseGapsReport gaps;
   OrientationPreview orientation;  // what repair would reverse, on a watertight file
   std::string weld_hint;           // what a wider weld would close, when boundary edges are left
+  std::unique_ptr<SelfIntersectionReport> crossings;  // with --self-intersections
   {
     ProgressDisplay progress(path, progress_wanted(arguments.progress), progress_wanted(false),
                              check_plan());
@@ -53,13 +56,17 @@ int run_check(const CheckArguments& arguments) {
     gaps = preview_close_gaps(soup, weld, &report);
     if (!arguments.json)
       weld_hint = wider_weld_hint(soup, weld, gaps, report);
+    if (arguments.self_intersections)
+      crossings = std::make_unique<SelfIntersectionReport>(find_self_intersections(soup));
   }
   warn_about_reader(path, info);
   warn_about_file_faults(path, attributes);
   if (arguments.json) {
     ReportJsonOptions json;
     json.elements = arguments.elements;
-    std::cout << check_report_json(path, report, &info, json, &gaps, &orientation) << "\n";
+    std::cout << check_report_json(path, report, &info, json, &gaps, crossings.get(),
+                                   &orientation)
+              << "\n";
   } else {
     std::cout << path << "\n"
               << "  read: " << describe_reading(info) << "\n";
@@ -67,7 +74,10 @@ int run_check(const CheckArguments& arguments) {
       std::cout << "  unit: " << attributes.length_unit
                 << " (the 3MF model's; coordinates as written, in that unit)\n";
     }
-    std::cout << to_text(report) << gaps_line(gaps, true) << weld_hint;
+    std::cout << to_text(report);
+    if (crossings)
+      std::cout << to_text(*crossings, arguments.elements ? crossings->face_pairs.size() : 10);
+    std::cout << gaps_line(gaps, true) << weld_hint;
     if (orientation.faces_flipped != 0) {
       std::cout << "orientation: repair would reverse "
                 << counted(orientation.faces_flipped, "face")
@@ -78,14 +88,17 @@ int run_check(const CheckArguments& arguments) {
                 << " wound like the shell around them (an insert, or a cavity wound the wrong "
                    "way): repair keeps them as written (--nested-shells cavity: voids)\n";
     }
-    if (report.has_defects())
+    if (report.has_defects() || (crossings && crossings->has_self_intersections()))
       std::cout << "(`meshbridge explain` tells what these terms mean)\n";
   }
   // Every record not kept as a simple polygon is in the soup as a degenerate face, so
   // has_defects() covers it; dangling edges and lone points are not surface defects (warned).
   // A watertight file that repair would still turn (inside out, a cavity wound outward) is no
-  // clean file: check exits 0 exactly when repair would change nothing on it.
-  return report.has_defects() || info.faces_dropped_by_reader > 0 || orientation.faces_flipped > 0
+  // clean file: check exits 0 exactly when repair would change nothing on it. Self-intersections,
+  // when looked for, are defects too.
+  const bool crossing = crossings && crossings->has_self_intersections();
+  return report.has_defects() || crossing || info.faces_dropped_by_reader > 0 ||
+                 orientation.faces_flipped > 0
              ? kDefectsFound
              : kOk;
 }
@@ -122,7 +135,13 @@ void add_check_command(CLI::App& app, int& exit_code) {
       "cannot be checked prints {..., \"status\": \"failed\", \"reason\": MESSAGE} and exits 2");
   command->add_flag("--elements", arguments->elements,
                     "with --json: also list the defective elements (vertex indices, edges); "
-                    "default counts only");
+                    "default counts only. With --self-intersections: every crossing face pair "
+                    "(text and JSON)");
+  command->add_flag("--self-intersections", arguments->self_intersections,
+                    "also find the faces that cross or overlap each other (exact predicates; "
+                    "touching at a shared vertex or edge is not crossing): face pairs, faces, "
+                    "and pairs of shells that cross. Off by default: it costs about as much as "
+                    "the rest of check (README, 'Self-intersections')");
   command
       ->add_option("--weld", arguments->weld,
                    "TOL|auto: also say what repair's gap closing would weld and close with this "

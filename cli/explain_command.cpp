@@ -96,6 +96,12 @@ const std::vector<Entry> kEntries = {
     {"isolated vertex",
      "A vertex no face uses. Listed, not a defect (check can exit 0): repair keeps them; "
      "--remove-isolated drops them."},
+    {"self-intersection",
+     "Two faces that cross each other, or overlap when they lie in one plane: shells of an\n"
+     "assembly pushed into each other, or a fold. `check --self-intersections` counts the\n"
+     "face pairs [f0-f1], the faces in them, and the pairs of components (shells) that cross.\n"
+     "Faces that only touch at a vertex or an edge they share (compared by position, so the\n"
+     "copies repair splits count as shared) are not counted. Repair does not resolve them."},
     {"detached",
      "Last resort: faces cut loose (given their own vertices) because OpenMesh could not\n"
      "represent them otherwise. Normally 0."},

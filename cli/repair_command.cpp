@@ -13,6 +13,7 @@
 #include "meshbridge/io.h"
 #include "meshbridge/repair.h"
 #include "meshbridge/report_json.h"
+#include "meshbridge/self_intersections.h"
 #include "meshbridge/separate_copies.h"
 
 #include <CLI/CLI.hpp>
@@ -41,7 +42,8 @@ struct RepairArguments {
   bool no_orient = false, no_stitch = false;
   bool elements = false;
   bool progress = false;
-  bool in_place = false;  //!< OUT may be IN itself
+  bool in_place = false;            //!< OUT may be IN itself
+  bool self_intersections = false;  //!< also find the crossing faces of the result
   std::string before_after;
   RepairOptions options;
   std::string separate = "0";  //!< "auto" or a distance >= 0 (0 = off)
@@ -99,6 +101,7 @@ int run_repair(RepairArguments& arguments) {
   std::ostringstream separate_summary;
   std::optional<DefectReport> reread;  // STL output as a reader gets it back
   WrittenOutput written;               // triangles fanned, what the output format could not hold
+  std::unique_ptr<SelfIntersectionReport> crossings;  // of the result, with --self-intersections
   {
     ProgressDisplay progress(in, progress_wanted(arguments.progress), progress_wanted(false),
                              repair_plan());
@@ -119,6 +122,9 @@ int run_repair(RepairArguments& arguments) {
     progress.stage(Stage::write, 0);
     apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
                    separate_summary);
+    if (arguments.self_intersections)  // of the mesh as written (copies moved apart included)
+      crossings =
+          std::make_unique<SelfIntersectionReport>(find_self_intersections(result.mesh.soup));
     write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
     written =
         describe_written(out, result.mesh.soup, attributes, result.report.gaps.vertices_welded);
@@ -133,9 +139,10 @@ int run_repair(RepairArguments& arguments) {
     if (!arguments.report.empty()) {
       ReportJsonOptions json;
       json.elements = arguments.elements;
-      const std::string text = repair_report_json(in, out, result.report, &info, json,
-                                                  reread ? &*reread : nullptr, &written) +
-                               "\n";
+      const std::string text =
+          repair_report_json(in, out, result.report, &info, json, reread ? &*reread : nullptr,
+                             &written, crossings.get()) +
+          "\n";
       if (report_to_stdout) {
         std::cout << text << std::flush;
       } else {
@@ -172,6 +179,8 @@ int run_repair(RepairArguments& arguments) {
 
   std::ostream& summary = report_to_stdout ? std::cerr : std::cout;
   summary << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
+  if (crossings)
+    summary << "self-intersections of the result:\n" << to_text(*crossings);
   if (written.polygons_fanned != 0) {
     summary << "written as " << written.triangles
             << " triangles: " << counted(written.polygons_fanned, "polygon")
@@ -257,6 +266,10 @@ void add_repair_command(CLI::App& app, int& exit_code) {
       ->capture_default_str()
       ->check(distance_or_auto());
   add_fill_holes_option(*command, arguments->fill_holes);
+  command->add_flag("--self-intersections", arguments->self_intersections,
+                    "also find the faces of the result that cross or overlap each other (as "
+                    "`check --self-intersections`; repair does not resolve them): in the summary "
+                    "and the report's self_intersections");
   command->add_option("--before-after", arguments->before_after,
                       "also draw the input and the result side by side into this PNG (as "
                       "`snapshot` draws them, same framing)");

@@ -3,6 +3,8 @@
 // nlohmann::ordered_json, so equal reports give equal bytes.
 #include "meshbridge/report_json.h"
 
+#include "meshbridge/self_intersections.h"
+
 #include <nlohmann/json.hpp>
 
 namespace meshbridge {
@@ -41,6 +43,27 @@ void add_written(Json& out, const WrittenOutput* written) {
   out["written"] = Json{{"triangles", written->triangles},
                         {"polygons_fanned", written->polygons_fanned},
                         {"left_out", written->left_out}};
+}
+
+Json face_pair_list(const std::vector<FacePair>& pairs) {
+  Json list = Json::array();
+  for (const FacePair& p : pairs)
+    list.push_back({p.f0, p.f1});
+  return list;
+}
+
+//! `self_intersections`: the counts of find_self_intersections(), its lists on request.
+Json self_intersections_json(const SelfIntersectionReport& r, bool elements) {
+  Json out{{"face_pairs", r.face_pairs.size()},
+           {"faces", r.faces.size()},
+           {"component_pairs", r.component_pairs.size()},
+           {"degenerate_triangles", r.degenerate_triangles}};
+  if (elements) {
+    out["elements"] = Json{{"face_pairs", face_pair_list(r.face_pairs)},
+                           {"faces", r.faces},
+                           {"component_pairs", face_pair_list(r.component_pairs)}};
+  }
+  return out;
 }
 
 //! The counts of a detection report, then its element lists on request.
@@ -167,7 +190,9 @@ Json figures(const BuildFigures& f) {
 
 std::string check_report_json(const std::string& file, const DefectReport& report,
                               const ReadInfo* read, const ReportJsonOptions& options,
-                              const CloseGapsReport* gaps, const OrientationPreview* orientation) {
+                              const CloseGapsReport* gaps,
+                              const SelfIntersectionReport* self_intersections,
+                              const OrientationPreview* orientation) {
   Json out = header("check", file);
   if (read)
     out["read"] = read_json(*read);
@@ -178,6 +203,8 @@ std::string check_report_json(const std::string& file, const DefectReport& repor
     out["orientation"] = Json{{"faces_flipped", orientation->faces_flipped},
                               {"ambiguous_nested_shells", orientation->ambiguous_nested_shells}};
   }
+  if (self_intersections)
+    out["self_intersections"] = self_intersections_json(*self_intersections, options.elements);
   return dump(out, options.indent);
 }
 
@@ -192,7 +219,8 @@ std::string check_failed_json(const std::string& file, const std::string& reason
 std::string repair_report_json(const std::string& file, const std::string& output,
                                const RepairReport& report, const ReadInfo* read,
                                const ReportJsonOptions& options, const DefectReport* reread,
-                               const WrittenOutput* written) {
+                               const WrittenOutput* written,
+                               const SelfIntersectionReport* self_intersections) {
   Json out = header("repair", file);
   if (!output.empty())
     out["output"] = output;
@@ -200,6 +228,8 @@ std::string repair_report_json(const std::string& file, const std::string& outpu
     out["read"] = read_json(*read);
   add_repair(out, report, options.elements, reread);
   add_written(out, written);
+  if (self_intersections)
+    out["self_intersections"] = self_intersections_json(*self_intersections, options.elements);
   return dump(out, options.indent);
 }
 

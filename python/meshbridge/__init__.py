@@ -206,16 +206,20 @@ def check(
     faces: Optional[Faces] = None,
     *,
     elements: bool = False,
+    self_intersections: bool = False,
 ) -> Dict[str, Any]:
     """Detects every defect without changing anything.
 
     ``vertices`` (n, 3) and ``faces`` (m, k) or polygons, or a :class:`Soup` alone. Returns the
     report of ``meshbridge check --json`` as a dict: counts (singular edges and vertices,
     boundary edges and loops, components, ...) and, with ``elements=True``, the element lists.
+    With ``self_intersections=True`` (off by default: it costs about twice the rest), also the
+    ``self_intersections`` object of ``check --self-intersections``: crossing face pairs, faces
+    in them, pairs of components that cross.
 
     Raises :class:`InvalidMeshError` naming the offending face, corner or vertex.
     """
-    return json.loads(_core.check(_soup(vertices, faces), elements))
+    return json.loads(_core.check(_soup(vertices, faces), elements, self_intersections))
 
 
 def repair(

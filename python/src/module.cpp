@@ -13,6 +13,7 @@
 #include "meshbridge/io.h"
 #include "meshbridge/read_accounting.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/self_intersections.h"
 #include "meshbridge/stl_round_trip.h"
 #include "meshbridge/validate.h"
 
@@ -294,15 +295,19 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "check",
-      [](const PySoup& soup, bool elements) {
+      [](const PySoup& soup, bool elements, bool self_intersections) {
         py::gil_scoped_release release;
         validate_soup(soup.soup);
         DefectReport report = detect_defects(soup.soup);
         if (!soup.path.empty())
           count_records_without_corners(soup.info, report);
-        return check_json(soup.path, report, soup.path.empty() ? nullptr : &soup.info, elements);
+        std::unique_ptr<SelfIntersectionReport> crossings;
+        if (self_intersections)
+          crossings = std::make_unique<SelfIntersectionReport>(find_self_intersections(soup.soup));
+        return check_json(soup.path, report, soup.path.empty() ? nullptr : &soup.info, elements,
+                          crossings.get());
       },
-      py::arg("soup"), py::arg("elements") = false);
+      py::arg("soup"), py::arg("elements") = false, py::arg("self_intersections") = false);
 
   m.def(
       "repair",

@@ -8,10 +8,10 @@
 namespace meshbridge::python {
 
 std::string check_json(const std::string& file, const DefectReport& report, const ReadInfo* read,
-                       bool elements) {
+                       bool elements, const SelfIntersectionReport* self_intersections) {
   ReportJsonOptions options;
   options.elements = elements;
-  return check_report_json(file, report, read, options);
+  return check_report_json(file, report, read, options, nullptr, self_intersections);
 }
 
 std::string repair_json(const std::string& file, const RepairReport& report, const ReadInfo* read,

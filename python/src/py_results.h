@@ -7,6 +7,7 @@
 #include "meshbridge/defect_report.h"
 #include "meshbridge/io.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/self_intersections.h"
 
 #include <pybind11/pybind11.h>
 
@@ -19,9 +20,9 @@ namespace py = pybind11;
 
 //! The check report of `meshbridge check --json` (report_json.h, one line) for `report`; `file`
 //! empty for arrays, `read` null when the soup did not come from a file. Element lists only with
-//! `elements`.
+//! `elements`; `self_intersections` adds its object when not null.
 std::string check_json(const std::string& file, const DefectReport& report, const ReadInfo* read,
-                       bool elements);
+                       bool elements, const SelfIntersectionReport* self_intersections = nullptr);
 
 //! The repair report of `meshbridge repair --report`, same conventions as check_json.
 std::string repair_json(const std::string& file, const RepairReport& report, const ReadInfo* read,

@@ -723,6 +723,74 @@ arguments)
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/g.obj" --pairing Geometric
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/c.obj" --pairing=COMBINATORIAL
   ;;
+check_self_intersections)
+  # Two unit cubes as quads, the second moved by (0.5, 0.5, 0.5): its three low faces cross the
+  # first one's three high faces, two each.
+  cat >"$work/crossing.obj" <<'OBJ'
+v 0 0 0
+v 1 0 0
+v 0 1 0
+v 1 1 0
+v 0 0 1
+v 1 0 1
+v 0 1 1
+v 1 1 1
+v 0.5 0.5 0.5
+v 1.5 0.5 0.5
+v 0.5 1.5 0.5
+v 1.5 1.5 0.5
+v 0.5 0.5 1.5
+v 1.5 0.5 1.5
+v 0.5 1.5 1.5
+v 1.5 1.5 1.5
+f 1 3 4 2
+f 5 6 8 7
+f 1 2 6 5
+f 3 7 8 4
+f 1 5 7 3
+f 2 4 8 6
+f 9 11 12 10
+f 13 14 16 15
+f 9 10 14 13
+f 11 15 16 12
+f 9 13 15 11
+f 10 12 16 14
+OBJ
+  # Without the flag: no word about them (two closed cubes: exit 0, no key).
+  expect_exit 0 "$mb" check "$work/crossing.obj" --json
+  grep -q '"self_intersections"' "$work/out" && fail "self_intersections without the flag"
+  expect_exit 1 "$mb" check "$work/crossing.obj" --self-intersections
+  expect_in "$work/out" "self-intersecting face pairs: 6  [1-8 1-10 3-6 3-10 5-6 5-8]"
+  expect_in "$work/out" "faces in them: 6"
+  expect_in "$work/out" "pairs of components (shells) crossing: 1  [0-1]"
+  expect_exit 1 "$mb" check "$work/crossing.obj" --self-intersections --json
+  [ "$(json_field "$work/out" self_intersections.face_pairs)" = 6 ] || fail "face_pairs"
+  [ "$(json_field "$work/out" self_intersections.faces)" = 6 ] || fail "faces"
+  [ "$(json_field "$work/out" self_intersections.component_pairs)" = 1 ] || fail "component_pairs"
+  grep -q '"elements"' "$work/out" && fail "element lists without --elements"
+  expect_exit 1 "$mb" check "$work/crossing.obj" --self-intersections --json --elements
+  [ "$(json_field "$work/out" 'self_intersections.elements.face_pairs#')" = 6 ] || fail "6 pairs listed"
+  [ "$(json_field "$work/out" 'self_intersections.elements.faces#')" = 6 ] || fail "6 faces listed"
+  # Two cubes on one edge, and their repair (split copies at equal positions): touching only.
+  expect_exit 1 "$mb" check "$models/twocubes.obj" --self-intersections
+  expect_in "$work/out" "self-intersecting face pairs: 0"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/fixed.obj"
+  expect_exit 0 "$mb" check "$work/fixed.obj" --self-intersections
+  expect_in "$work/out" "self-intersecting face pairs: 0"
+  # repair --self-intersections: the counts of the result, in the summary and the report.
+  expect_exit 0 "$mb" repair "$work/crossing.obj" "$work/crossing_fixed.obj" --self-intersections \
+    --report "$work/crossing.json"
+  expect_in "$work/out" "self-intersections of the result:"
+  expect_in "$work/out" "self-intersecting face pairs: 6"
+  [ "$(json_field "$work/crossing.json" self_intersections.face_pairs)" = 6 ] || fail "repair face_pairs"
+  [ "$(json_field "$work/crossing.json" self_intersections.component_pairs)" = 1 ] ||
+    fail "repair component_pairs"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/fixed2.obj" --self-intersections \
+    --report -
+  [ "$(json_field "$work/out" self_intersections.face_pairs)" = 0 ] || fail "repaired twocubes"
+  expect_exit 0 "$mb" explain self-intersection
+  expect_in "$work/out" "shared"
+  ;;
 explain)
   expect_exit 0 "$mb" explain
   for term in "singular edge" contender "sides cut" fan "pinch vertex" "set aside" watertight; do

@@ -414,3 +414,27 @@ def test_fill_holes_closes_the_cube_and_marks_the_new_triangles():
     assert meshbridge.repair(vertices, quads, fill_holes=3).report["holes"]["holes_left"] == 1
     with pytest.raises(ValueError, match="fill_holes must be"):
         meshbridge.repair(vertices, quads, fill_holes=-1)
+
+
+def test_check_self_intersections_counts():
+    """check(self_intersections=True): the counts of `check --self-intersections`, opt-in."""
+    # Two unit cubes, the second moved by (0.5, 0.5, 0.5): its three low faces cross the first
+    # one's three high faces.
+    corners = mesh_models.CUBE_CORNERS
+    vertices = np.vstack([corners, corners + 0.5])
+    faces = np.vstack([mesh_models.CUBE_TRIANGLES, mesh_models.CUBE_TRIANGLES + 8])
+    assert "self_intersections" not in meshbridge.check(vertices, faces)
+    report = meshbridge.check(vertices, faces, self_intersections=True)
+    assert report["self_intersections"]["component_pairs"] == 1
+    assert report["self_intersections"]["faces"] == 12  # both triangles of 6 squares
+    assert "elements" not in report["self_intersections"]
+    listed = meshbridge.check(vertices, faces, elements=True, self_intersections=True)
+    pairs = listed["self_intersections"]["elements"]["face_pairs"]
+    assert len(pairs) == report["self_intersections"]["face_pairs"]
+    # Two cubes on one edge, before and after repair: touching, never crossing.
+    vertices, faces = mesh_models.two_cubes_sharing_an_edge()
+    assert meshbridge.check(vertices, faces, self_intersections=True)["self_intersections"] == {
+        "face_pairs": 0, "faces": 0, "component_pairs": 0, "degenerate_triangles": 0}
+    result = meshbridge.repair(vertices, faces)
+    after = meshbridge.check(result.vertices, result.faces, self_intersections=True)
+    assert after["self_intersections"]["face_pairs"] == 0

@@ -17,6 +17,7 @@
 #include "meshbridge/io.h"
 #include "meshbridge/preview_repair.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/self_intersections.h"
 #include "meshbridge/stock_build.h"
 
 #include <cstddef>
@@ -40,10 +41,12 @@ struct ReportJsonOptions {
 //! `{"schema_version":1,"kind":"check","file":...,"read":{...},<counts>[,"gaps":{...}]
 //! [,"elements":{...}]}`. `file` is written as given. `read` (the read accounting of ReadInfo)
 //! is left out when `read` is null; `gaps` (what repair's gap closing would do, the keys of a
-//! repair report's `gaps`) when `gaps` is null.
+//! repair report's `gaps`) when `gaps` is null; `self_intersections` (the counts of
+//! find_self_intersections(), its lists under its own `elements` on request) when that is null.
 std::string check_report_json(const std::string& file, const DefectReport& report,
                               const ReadInfo* read = nullptr, const ReportJsonOptions& options = {},
                               const CloseGapsReport* gaps = nullptr,
+                              const SelfIntersectionReport* self_intersections = nullptr,
                               const OrientationPreview* orientation = nullptr);
 
 //! `{"schema_version":1,"kind":"check","file":...,"status":"failed","reason":...}`: what
@@ -58,12 +61,14 @@ std::string check_failed_json(const std::string& file, const std::string& reason
 //! with `options.elements` the `before`, `after` (and `reread`) objects carry their `elements`.
 //! `output` is left out when empty, `read` when null. `reread` (the written file as a reader
 //! gets it back: STL welds split vertex copies by position) is written exactly when `reread` is
-//! not null, `written` exactly when `written` is not null.
+//! not null, `written` exactly when `written` is not null; `self_intersections` (those of the
+//! repaired mesh as written, the object of check_report_json()) exactly when it is not null.
 std::string repair_report_json(const std::string& file, const std::string& output,
                                const RepairReport& report, const ReadInfo* read = nullptr,
                                const ReportJsonOptions& options = {},
                                const DefectReport* reread = nullptr,
-                               const WrittenOutput* written = nullptr);
+                               const WrittenOutput* written = nullptr,
+                               const SelfIntersectionReport* self_intersections = nullptr);
 
 //! What one way of building an OpenMesh mesh from a soup kept (for `compare`).
 struct BuildFigures {
