@@ -109,3 +109,16 @@ def run_file_job(
 
 def skipped_record(name: str, reason: str) -> str: ...
 def failed_record(name: str, output_name: str, reason: str) -> str: ...
+def batch_log_line(
+    record: str, job: Tuple[str, str, str, str], options: FileJobOptions
+) -> str:
+    """The batch log's line of a finished job: its record with the options and input stamp."""
+
+def record_of_log_line(line: str) -> str: ...
+def batch_options_text(options: FileJobOptions) -> str: ...
+def is_done_in_log(
+    line: str, job: Tuple[str, str, str, str], options: FileJobOptions
+) -> Tuple[bool, str]:
+    """(True, "") when a rerun may skip the job, else (False, what changed)."""
+
+def write_batch_log(path: str, lines: List[str]) -> None: ...
