@@ -5,6 +5,7 @@
 #include "validators.h"
 
 #include "meshbridge/batch_log.h"
+#include "meshbridge/batch_warnings.h"
 #include "meshbridge/file_job.h"
 
 #include <CLI/CLI.hpp>
@@ -74,9 +75,7 @@ struct Entry {
 void take_result(Entry& entry, const FileJobResult& result, const FileJob& job) {
   entry.status = result.status;
   entry.reason = result.reason;
-  entry.warnings = result.reading.empty() ? "" : result.reading + "\n";
-  for (const std::string& what : result.written.left_out)
-    entry.warnings += "output " + job.output_name + ": " + what + "\n";
+  entry.warnings = batch_warning_lines(result, job);
   entry.record = result.record;
   const RepairReport& p = result.report;
   // An STL output counts as it will be re-read (split vertex copies weld again).

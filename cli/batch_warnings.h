@@ -11,10 +11,7 @@
 
 namespace meshbridge::cli {
 
-//! The harmless kind a warning line is of (its text without the file's own numbers), or "" when
-//! the line reports lost data or a change and must be printed for its file.
-std::string harmless_warning_kind(const std::string& line);
-
+//! Prints the warnings of a batch's files (meshbridge/batch_warnings.h says which are harmless).
 class BatchWarnings {
  public:
   explicit BatchWarnings(bool quiet) : quiet_(quiet) {}

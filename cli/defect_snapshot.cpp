@@ -114,6 +114,12 @@ Frame make_frame(const Soup& soup, const DefectReport& report, const SnapshotOpt
                  const QRectF& area) {
   Frame frame;
   frame.axes = screen_axes(options.view);
+  if (options.y_up) {
+    // Drawn as if the model were turned by R: (x, y, z) -> (x, -z, y), +y to +z; projecting R p
+    // on an axis a is projecting p on R^T a = (a.x, a.z, -a.y).
+    for (Point* a : {&frame.axes.right, &frame.axes.up})
+      *a = Point((*a)[0], (*a)[2], -(*a)[1]);
+  }
   frame.forward = frame.axes.right % frame.axes.up;
   frame.area = area;
   std::vector<char> used(soup.num_vertices(), 0);

@@ -5,6 +5,10 @@
 
 #include <string>
 
+namespace CLI {
+class App;
+}
+
 namespace meshbridge::cli {
 
 //! The direction the orthographic camera looks from (always toward the model's centre).
@@ -29,6 +33,13 @@ SnapshotView parse_snapshot_view(const std::string& text);
 //! "iso", "x", "y" or "z".
 const char* to_string(SnapshotView view);
 
+//! Adds `--view iso|x|y|z`, `--focus whole|defects` and `--up z|y` to `command` (snapshot, and
+//! repair for --before-after), storing their text; read them with parse_snapshot_view,
+//! parse_snapshot_focus and `up == "y"`.
+void add_view_options(CLI::App& command, std::string& view, std::string& focus, std::string& up);
+//! Parses "whole" or "defects". \throw std::invalid_argument naming the text otherwise
+SnapshotFocus parse_snapshot_focus(const std::string& text);
+
 //! Options of draw_defect_snapshot, every default documented.
 struct SnapshotOptions {
   //! Width and height of the square image in pixels (default 800); kMinSize .. kMaxSize.
@@ -39,6 +50,9 @@ struct SnapshotOptions {
   //! Blank border on every side, as a fraction of `size` (default 0.05).
   double margin = 0.05;
   SnapshotFocus focus = SnapshotFocus::whole;  //!< default whole
+  //! The model's up axis is +y (as Blender's OBJ export, glTF, many scanners write it), not +z:
+  //! the views turn with it (`z` still looks down on the model). Default false: +z up.
+  bool y_up = false;
   //! Draw the legend line of counts at the top (default true). It is left out anyway when no
   //! QGuiApplication exists or text does not render (no font found offscreen).
   bool legend = true;

@@ -23,10 +23,11 @@ cmake --build build/release --parallel "$jobs" >/dev/null
 tool=build/release/cli/meshbridge
 # meshbridge on PATH: as root, a symbolic link /usr/local/bin/meshbridge to the built CLI (it
 # finds its pictures module through the link); otherwise the line that puts it on PATH is printed
-# at the end. An installed meshbridge that is not our link is left alone.
-link=/usr/local/bin/meshbridge
+# at the end. An installed meshbridge that is not our link is left alone. MESHBRIDGE_BIN_DIR
+# puts the link elsewhere (default /usr/local/bin).
+link="${MESHBRIDGE_BIN_DIR:-/usr/local/bin}/meshbridge"
 on_path="to put meshbridge on PATH: export PATH=\"$root/build/release/cli:\$PATH\""
-if [ -w /usr/local/bin ] && { [ ! -e "$link" ] || [ -L "$link" ]; }; then
+if [ -w "$(dirname "$link")" ] && { [ ! -e "$link" ] || [ -L "$link" ]; }; then
   ln -sfn "$root/$tool" "$link"
   on_path="meshbridge is on PATH: $link -> $root/$tool"
 fi

@@ -41,7 +41,7 @@ from typing import Any, Callable, Dict, Iterable, List, Optional, Tuple
 
 from . import _core
 
-__all__ = ["BatchSummary", "main", "run_batch"]
+__all__ = ["BatchSummary", "BatchWarnings", "main", "run_batch"]
 
 #: Default log name inside OUTDIR.
 LOG_NAME = ".meshbridge-batch.jsonl"
@@ -111,9 +111,9 @@ def _job_options(options: Dict[str, Any]) -> "_core.FileJobOptions":
     return native
 
 
-def run_file(job: Tuple[str, str, str, str], options: Dict[str, Any]) -> Tuple[str, str, str]:
+def run_file(job: Tuple[str, str, str, str], options: Dict[str, Any]) -> Tuple[str, str, str, str]:
     """One task: read -> repair -> write ``job`` = (input, output, name, output_name) with the
-    core's run_file_job; returns (status, reason, record). Runs on a Dask worker; the GIL is
+    core's run_file_job; returns (status, reason, record, warning lines). Runs on a Dask worker; the GIL is
     released while the core works. The files are the parallel work: the core uses one thread
     per file unless MESHBRIDGE_THREADS says otherwise."""
     os.environ.setdefault("MESHBRIDGE_THREADS", "1")
@@ -158,6 +158,7 @@ def run_batch(
     in_flight: Optional[int] = None,
     in_place: bool = False,
     progress: Optional[Callable[[int, int, str, str], None]] = None,
+    warnings: Optional[Callable[[str, str], None]] = None,
 ) -> BatchSummary:
     """Repairs every mesh below ``in_dir`` into ``out_dir`` on the Dask ``client``.
 
@@ -168,7 +169,9 @@ def run_batch(
     ``log_path`` (default ``out_dir/.meshbridge-batch.jsonl``) makes the run resumable.
     ``in_place``: as ``meshbridge batch --in-place`` (OUTDIR may be INDIR or inside it).
     ``repair``: options of :func:`meshbridge.repair`. ``in_flight``: tasks submitted at once
-    (default 4 per worker thread). ``progress(done, total, name, status)`` is called per file.
+    (default 4 per worker thread). ``progress(done, total, name, status)`` is called per file,
+    ``warnings(name, lines)`` per file this run finished with warnings (lines as the CLI prints
+    them; :class:`BatchWarnings` prints them as the CLI does).
     Raises ValueError for a missing INDIR, OUTDIR inside INDIR, a bad format or a corrupt log.
     """
     from distributed import as_completed
@@ -250,14 +253,17 @@ def run_batch(
         try:
             for future in futures:
                 job = by_key.pop(future.key)
+                lines = ""
                 try:
-                    status, _reason, record = future.result()
+                    status, _reason, record, lines = future.result()
                 except Exception as error:  # the worker died on it (e.g. memory limit), etc.
                     status = "failed"
                     record = _core.failed_record(
                         job[2], job[3], f"{job[0]}: the Dask task failed ({type(error).__name__}: {error})"
                     )
                 future.release()
+                if lines and warnings:
+                    warnings(job[2], lines)
                 finish(job, status, record)
                 submit_next()
         finally:
@@ -267,6 +273,31 @@ def run_batch(
                 own_cluster.close()
     summary.seconds = time.perf_counter() - start
     return _count(summary)
+
+
+class BatchWarnings:
+    """The CLI's way with a batch's warnings on stderr: lost data (texture coordinates, normals,
+    groups, colours, ...) one line per file, each harmless kind (STL solid names, float rounding)
+    once at the end with the number of files (``finish()``)."""
+
+    def __init__(self, stream: Any = None) -> None:
+        self.stream = stream or sys.stderr
+        self.files: Dict[str, int] = {}  # kind -> files, in order of first sight
+
+    def __call__(self, name: str, lines: str) -> None:
+        seen = set()
+        for line in lines.splitlines():
+            kind = _core.harmless_warning_kind(line)
+            if not kind:
+                print(f"meshbridge.batch: warning: {name}: {line}", file=self.stream, flush=True)
+            elif kind not in seen:
+                seen.add(kind)
+                self.files[kind] = self.files.get(kind, 0) + 1
+
+    def finish(self) -> None:
+        for kind, n in self.files.items():
+            print(f"meshbridge.batch: warning: {n} file{'s' if n != 1 else ''}: {kind}",
+                  file=self.stream)
 
 
 def _count(summary: BatchSummary) -> BatchSummary:
@@ -356,6 +387,7 @@ def main(argv: Optional[List[str]] = None) -> int:
         rate = finished_here[0] / max(time.perf_counter() - started, 1e-9)
         print(f"[{done}/{total}] {name}: {status} ({rate:.1f} files/s)", file=sys.stderr, flush=True)
 
+    warnings = None if arguments.quiet else BatchWarnings()
     try:
         summary = run_batch(
             arguments.in_dir,
@@ -372,11 +404,14 @@ def main(argv: Optional[List[str]] = None) -> int:
             repair={"pairing": arguments.pairing, "weld": arguments.weld,
                     "fill_holes": arguments.fill_holes},
             progress=progress,
+            warnings=warnings,
         )
     except (ValueError, OSError, TimeoutError) as error:
         print(f"meshbridge.batch: {error}", file=sys.stderr)
         return 2
 
+    if warnings:
+        warnings.finish()
     sys.stdout.write(summary.json_lines() if arguments.json else summary.table())
     if not arguments.quiet:
         rate = summary.done_now / summary.seconds if summary.seconds > 0 else 0.0

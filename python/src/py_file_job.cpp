@@ -2,6 +2,7 @@
 #include "py_file_job.h"
 
 #include "meshbridge/batch_log.h"
+#include "meshbridge/batch_warnings.h"
 #include "meshbridge/file_job.h"
 
 #include <pybind11/stl.h>
@@ -46,7 +47,8 @@ void bind_file_job(py::module_& m) {
       },
       py::arg("in_dir"), py::arg("out_dir"), py::arg("options"), py::arg("in_place") = false);
 
-  // (status, reason, record): never raises for a bad file (its record says `failed`).
+  // (status, reason, record, warnings): never raises for a bad file (its record says `failed`);
+  // warnings as batch_warning_lines.
   m.def(
       "run_file_job",
       [](const std::string& input, const std::string& output, const std::string& name,
@@ -56,8 +58,10 @@ void bind_file_job(py::module_& m) {
           py::gil_scoped_release release;
           result = run_file_job(FileJob{input, output, name, output_name}, options);
         }
+        std::string warnings =
+            batch_warning_lines(result, FileJob{input, output, name, output_name});
         return std::make_tuple(std::string(to_string(result.status)), std::move(result.reason),
-                               std::move(result.record));
+                               std::move(result.record), std::move(warnings));
       },
       py::arg("input"), py::arg("output"), py::arg("name"), py::arg("output_name"),
       py::arg("options"));
@@ -92,6 +96,7 @@ void bind_file_job(py::module_& m) {
       },
       py::arg("line"), py::arg("job"), py::arg("options"));
   m.def("write_batch_log", &write_batch_log, py::arg("path"), py::arg("lines"));
+  m.def("harmless_warning_kind", &harmless_warning_kind, py::arg("line"));
 
   // The `failed` record of a job that ended without a result of its own (its worker died).
   m.def(

@@ -886,6 +886,31 @@ snapshot_views)
   expect_exit 2 "$mb" repair "$models/prisms24.obj" "$work/q.obj" --before-after "$work/ba.jpg"
   expect_in "$work/err" "name it .png"
   [ ! -e "$work/q.obj" ] || fail "repair wrote its output despite a bad --before-after"
+  # --view and --focus draw --before-after as snapshot draws: cube_with_hole's hole, zoomed to,
+  # has a longer green rim on the left than in the whole view.
+  if command -v convert >/dev/null; then
+    green_in() {  # green_in FILE GEOMETRY -> count of green-ish pixels in that part
+      convert "$1" -crop "$2" +repage -fuzz 18% -fill black +opaque 'rgb(0,160,0)' \
+        -fill white -opaque 'rgb(0,160,0)' -format '%[fx:round(mean*w*h)]' info:
+    }
+    expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj" --before-after "$work/hw.png"
+    expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj" --before-after "$work/hz.png" --view z --focus defects
+    whole=$(green_in "$work/hw.png" 800x800+0+0)
+    zoom=$(green_in "$work/hz.png" 800x800+0+0)
+    [ "$zoom" -gt "$whole" ] 2>/dev/null || fail "--before-after --focus defects did not zoom: $whole -> $zoom green"
+    # --up y: a strip 10 long along +y stands upright from the side (--view x); with +z up it lies
+    # flat, a horizontal line through the middle, nothing in the top quarter.
+    printf 'v 0 0 0\nv 0 0 0.1\nv 0 10 0.1\nv 0 10 0\nf 1 2 3 4\n' >"$work/strip.obj"
+    expect_exit 1 "$mb" snapshot "$work/strip.obj" "$work/flat.png" --view x
+    expect_exit 1 "$mb" snapshot "$work/strip.obj" "$work/upright.png" --view x --up Y
+    expect_in "$work/out" "(800x800, view x, y up)"
+    [ "$(green_in "$work/flat.png" 800x200+0+0)" = 0 ] || fail "z up: the strip is not flat"
+    [ "$(green_in "$work/upright.png" 800x200+0+0)" -gt 50 ] 2>/dev/null || fail "--up y: the strip does not stand"
+    expect_exit 0 "$mb" repair "$work/strip.obj" "$work/s.obj" --before-after "$work/sba.png" --view x --up y
+    [ "$(green_in "$work/sba.png" 800x200+0+0)" -gt 50 ] 2>/dev/null || fail "--before-after --up y"
+  fi
+  expect_exit 2 "$mb" repair "$models/prisms24.obj" "$work/q.obj" --view z
+  expect_in "$work/err" "--view draws the --before-after picture: give --before-after PIC.png too"
   ;;
 fill_holes)
   # --fill-holes [MAX_EDGES]: off by default; bare = 32; the summary line and the JSON `holes`.

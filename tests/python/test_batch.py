@@ -231,3 +231,24 @@ def edited_json(indir: Path, outdir: Path, options) -> str:
     result = batch(indir, outdir, "--workers", "1", "--json", *options)
     assert result.returncode == 0, result.stderr
     return result.stdout
+
+
+def test_warnings_once_per_harmless_kind_lost_data_per_file_quiet_none(tmp_path):
+    indir = tmp_path / "in"
+    indir.mkdir()
+    for n in (1, 2, 3):
+        (indir / f"s{n}.stl").write_text(
+            f"solid part{n}\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+            f"vertex 0 1 0\nendloop\nendfacet\nendsolid part{n}\n")
+        (indir / f"uv{n}.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n")
+    result = batch(indir, tmp_path / "out", "--workers", "1", "--format", "stl")
+    assert result.returncode == 0, result.stderr
+    warnings = [line for line in result.stderr.splitlines() if "warning" in line]
+    assert warnings.count("meshbridge.batch: warning: 3 files: ASCII STL solid names not written "
+                          "(MeshBridge reads past them)") == 1, result.stderr
+    for n in (1, 2, 3):
+        assert (f"meshbridge.batch: warning: uv{n}.obj: output uv{n}.stl: 1 texture coordinate "
+                "(vt) not written: MeshBridge writes neither") in warnings, result.stderr
+    assert len(warnings) == 4, result.stderr
+    quiet = batch(indir, tmp_path / "quiet", "--workers", "1", "--format", "stl", "--quiet")
+    assert quiet.returncode == 0 and quiet.stderr == "", quiet.stderr
