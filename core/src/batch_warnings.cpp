@@ -16,7 +16,8 @@ constexpr Harmless kHarmless[] = {
      "STL facet normals against the winding of their corners (written ones follow the winding)"},
     {"PLY comment and obj_info lines",
      "PLY comment and obj_info lines not written (MeshBridge reads past them)"},
-    {"rounded to 32-bit floats", "vertex positions rounded to 32-bit floats (STL holds no more)"},
+    {"rounded to 32-bit floats",
+     "vertex positions rounded to 32-bit floats (STL and 3MF hold no more)"},
     {"as lib3mf wrote them",
      "vertex positions moved by lib3mf's rounding (3MF text, at most 6 decimals)"},
 };

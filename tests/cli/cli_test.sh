@@ -1003,7 +1003,7 @@ batch_warnings)
   expect_exit 0 "$mb" batch "$work/in" "$work/out_stl" --format stl
   [ "$(grep -c 'solid names' "$work/err")" = 1 ] || fail "solid names once: $(cat "$work/err")"
   expect_in "$work/err" "meshbridge: warning: 3 files: ASCII STL solid names not written (MeshBridge reads past them)"
-  expect_in "$work/err" "meshbridge: warning: 3 files: vertex positions rounded to 32-bit floats (STL holds no more)"
+  expect_in "$work/err" "meshbridge: warning: 3 files: vertex positions rounded to 32-bit floats (STL and 3MF hold no more)"
   for n in 1 2 3; do
     expect_in "$work/err" "meshbridge: warning: uv$n.obj: output uv$n.stl: 1 texture coordinate (vt) and 1 normal (vn) not written"
   done
