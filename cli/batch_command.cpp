@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "batch_progress.h"
 #include "batch_warnings.h"
 #include "commands.h"
 #include "printer_options.h"
@@ -16,7 +17,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -159,58 +159,6 @@ void child_failed(Entry& entry, int wait_status) {
   entry.record =
       batch_record_json(entry.name, entry.job->output_name, "failed", entry.reason, nullptr);
 }
-
-std::string clock_text(double seconds) {
-  const long s = static_cast<long>(seconds + 0.5);
-  char text[32];
-  std::snprintf(text, sizeof text, "%ld:%02ld", s / 60, s % 60);
-  return text;
-}
-
-//! Files done / total / ETA on stderr: one line rewritten in place on a terminal, one line per
-//! file elsewhere (only with --progress). On a terminal the line is erased (clear()) before
-//! anything else is printed, so it never runs into a table row or a warning.
-class BatchProgress {
- public:
-  BatchProgress(std::size_t total, bool on, bool terminal)
-      : total_(total),
-        on_(on && total > 0),
-        terminal_(terminal),
-        start_(std::chrono::steady_clock::now()) {}
-  void file_done(const std::string& name, std::size_t done, std::size_t failed) {
-    if (!on_)
-      return;
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double eta = done ? elapsed / done * (total_ - done) : 0;
-    std::ostringstream line;
-    line << "[" << done << "/" << total_ << "] "
-         << (failed ? std::to_string(failed) + " failed, " : "") << "elapsed "
-         << clock_text(elapsed) << ", ETA " << clock_text(eta) << "  " << name;
-    std::string text = line.str();
-    if (terminal_) {
-      if (text.size() > 100)
-        text = text.substr(0, 97) + "...";
-      std::cerr << "\r\033[K" << text << std::flush;  // erased at the end (clear())
-      shown_ = true;
-    } else {
-      std::cerr << text << "\n";
-    }
-  }
-
-  //! Erases the line on a terminal (the next file_done draws it again).
-  void clear() {
-    if (shown_)
-      std::cerr << "\r\033[K" << std::flush;
-    shown_ = false;
-  }
-
- private:
-  std::size_t total_;
-  bool on_, terminal_;
-  bool shown_ = false;
-  std::chrono::steady_clock::time_point start_;
-};
 
 void print_table_row(const Entry& e) {
   std::cout << "| " << e.name << " | " << to_string(e.status) << " | ";
