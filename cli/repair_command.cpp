@@ -174,7 +174,7 @@ int run_repair(RepairArguments& arguments) {
         picture->options.view =
             parse_snapshot_view(arguments.view.empty() ? "iso" : arguments.view);
         picture->options.focus =
-            parse_snapshot_focus(arguments.focus.empty() ? "whole" : arguments.focus);
+            parse_snapshot_focus(arguments.focus.empty() ? "auto" : arguments.focus);
         picture->options.y_up = arguments.up == "y";
       }
       write_pictures_png(arguments.before_after, {before, after});

@@ -21,7 +21,7 @@ namespace {
 struct SnapshotArguments {
   std::string file, out;
   std::string view = "iso";
-  std::string focus = "whole";
+  std::string focus = "auto";
   std::string up = "z";
   SnapshotOptions options;
   bool progress = false;

@@ -25,9 +25,10 @@ void add_view_options(CLI::App& command, std::string& view, std::string& focus, 
       ->transform(CLI::IsMember({"iso", "x", "y", "z"}, CLI::ignore_case));
   command
       .add_option("--focus", focus,
-                  "whole = fit the whole model; defects = zoom to the box around the singular "
-                  "and boundary edges and pinch vertices")
-      ->transform(CLI::IsMember({"whole", "defects"}, CLI::ignore_case));
+                  "auto (default) = zoom toward the defects when they are small, the whole "
+                  "model otherwise; whole = fit the whole model; defects = zoom to the box "
+                  "around the singular and boundary edges and pinch vertices")
+      ->transform(CLI::IsMember({"auto", "whole", "defects"}, CLI::ignore_case));
   command
       .add_option("--up", up,
                   "the model's up axis: z (default) or y (a y-up OBJ otherwise lies on its side)")
@@ -35,11 +36,13 @@ void add_view_options(CLI::App& command, std::string& view, std::string& focus, 
 }
 
 SnapshotFocus parse_snapshot_focus(const std::string& text) {
+  if (text == "auto")
+    return SnapshotFocus::automatic;
   if (text == "whole")
     return SnapshotFocus::whole;
   if (text == "defects")
     return SnapshotFocus::defects;
-  throw std::invalid_argument("focus must be whole or defects, got '" + text + "'");
+  throw std::invalid_argument("focus must be auto, whole or defects, got '" + text + "'");
 }
 
 const char* to_string(SnapshotView view) {

@@ -865,7 +865,20 @@ snapshot_views)
   expect_exit 0 "$mb" snapshot "$models/icosphere.obj" "$work/ico.png" --focus DEFECTS --size 64
   [ "$(pixels "$work/out" red)" = 0 ] && [ "$(pixels "$work/out" green)" = 0 ] || fail "icosphere"
   expect_exit 2 "$mb" snapshot "$models/icosphere.obj" "$work/ico.png" --focus edges
-  expect_in "$work/err" "--focus: edges not in {whole,defects}"
+  expect_in "$work/err" "--focus: edges not in {auto,whole,defects}"
+  # The default (auto) zooms toward defects that are small, keeping the model around them: a
+  # closed cube with a tiny open triangle beside a corner.
+  { sed -n '/^v /p' "$models/icosphere.obj"; echo 'v 1.1 1.1 1.1'; echo 'v 1.14 1.1 1.1'; echo 'v 1.1 1.14 1.1'
+    sed -n '/^f /p' "$models/icosphere.obj"; n=$(grep -c '^v ' "$models/icosphere.obj")
+    echo "f $((n + 1)) $((n + 2)) $((n + 3))"; } >"$work/speck.obj"
+  expect_exit 1 "$mb" snapshot "$work/speck.obj" "$work/speck_whole.png" --focus whole
+  whole=$(pixels "$work/out" green)
+  expect_exit 1 "$mb" snapshot "$work/speck.obj" "$work/speck_auto.png"
+  auto=$(pixels "$work/out" green)
+  expect_exit 1 "$mb" snapshot "$work/speck.obj" "$work/speck_defects.png" --focus defects
+  zoom=$(pixels "$work/out" green)
+  [ "$whole" -lt "$auto" ] && [ "$auto" -lt "$zoom" ] 2>/dev/null ||
+    fail "auto focus between whole and defects: $whole < $auto < $zoom green pixels"
   # The surface is shaded grey: many grey levels, not a wireframe on white.
   if command -v convert >/dev/null; then
     levels=$(convert "$work/whole.png" -colorspace gray -format %k info:)
