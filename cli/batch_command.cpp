@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "batch_progress.h"
+#include "batch_warnings.h"
 #include "commands.h"
 #include "printer_options.h"
 #include "validators.h"
 
+#include "meshbridge/batch_log.h"
+#include "meshbridge/batch_warnings.h"
 #include "meshbridge/file_job.h"
 
 #include <CLI/CLI.hpp>
@@ -13,12 +17,13 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -40,6 +45,7 @@ struct BatchArguments {
   bool progress = false;
   bool in_place = false;
   bool resume = false;
+  std::string log;            //!< "" = OUTDIR/.meshbridge-batch.jsonl
   std::string weld = "auto";  //!< as repair --weld
   std::string fill_holes;     //!< as repair --fill-holes ("" or "0" = off)
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
@@ -63,14 +69,13 @@ struct Entry {
   std::string warnings;
   std::string record;
   TableRow row;
+  bool up_to_date = false;  //!< skipped by --resume: the log says it is done, nothing changed
 };
 
 void take_result(Entry& entry, const FileJobResult& result, const FileJob& job) {
   entry.status = result.status;
   entry.reason = result.reason;
-  entry.warnings = result.reading.empty() ? "" : result.reading + "\n";
-  for (const std::string& what : result.written.left_out)
-    entry.warnings += "output " + job.output_name + ": " + what + "\n";
+  entry.warnings = batch_warning_lines(result, job);
   entry.record = result.record;
   const RepairReport& p = result.report;
   // An STL output counts as it will be re-read (split vertex copies weld again).
@@ -155,48 +160,6 @@ void child_failed(Entry& entry, int wait_status) {
       batch_record_json(entry.name, entry.job->output_name, "failed", entry.reason, nullptr);
 }
 
-std::string clock_text(double seconds) {
-  const long s = static_cast<long>(seconds + 0.5);
-  char text[32];
-  std::snprintf(text, sizeof text, "%ld:%02ld", s / 60, s % 60);
-  return text;
-}
-
-//! Files done / total / ETA on stderr: one line rewritten in place on a terminal, one line per
-//! file elsewhere (only with --progress).
-class BatchProgress {
- public:
-  BatchProgress(std::size_t total, bool on, bool terminal)
-      : total_(total),
-        on_(on && total > 0),
-        terminal_(terminal),
-        start_(std::chrono::steady_clock::now()) {}
-  void file_done(const std::string& name, std::size_t done, std::size_t failed) {
-    if (!on_)
-      return;
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double eta = done ? elapsed / done * (total_ - done) : 0;
-    std::ostringstream line;
-    line << "[" << done << "/" << total_ << "] "
-         << (failed ? std::to_string(failed) + " failed, " : "") << "elapsed "
-         << clock_text(elapsed) << ", ETA " << clock_text(eta) << "  " << name;
-    std::string text = line.str();
-    if (terminal_) {
-      if (text.size() > 100)
-        text = text.substr(0, 97) + "...";
-      std::cerr << "\r\033[K" << text << (done == total_ ? "\n" : "") << std::flush;
-    } else {
-      std::cerr << text << "\n";
-    }
-  }
-
- private:
-  std::size_t total_;
-  bool on_, terminal_;
-  std::chrono::steady_clock::time_point start_;
-};
-
 void print_table_row(const Entry& e) {
   std::cout << "| " << e.name << " | " << to_string(e.status) << " | ";
   if (e.status == FileStatus::clean || e.status == FileStatus::repaired) {
@@ -209,15 +172,10 @@ void print_table_row(const Entry& e) {
   }
 }
 
-//! The entry's JSON record or table row on stdout; what the reader changed, as a warning on
-//! stderr (as `repair` warns), in either mode.
-void print_entry(const Entry& e, bool json) {
-  if (!e.warnings.empty()) {
-    std::cout.flush();
-    std::istringstream lines(e.warnings);
-    for (std::string line; std::getline(lines, line);)
-      std::cerr << "meshbridge: warning: " << e.name << ": " << line << "\n";
-  }
+//! The entry's JSON record or table row on stdout; its warnings on stderr (BatchWarnings: lost
+//! data per file, harmless kinds counted), in either mode.
+void print_entry(const Entry& e, bool json, BatchWarnings& warnings) {
+  warnings.file(e.name, e.warnings);
   if (json) {
     std::cout << e.record << "\n";
   } else {
@@ -230,7 +188,6 @@ int run_batch(const BatchArguments& arguments) {
   options.format = arguments.format;
   options.repair.close_gaps = parse_weld(arguments.weld);
   options.repair.fill_holes.max_edges = parse_fill_holes(arguments.fill_holes);
-  options.resume = arguments.resume;
   options.elements = arguments.elements;
   options.repair.pairing = arguments.pairing == "combinatorial" ? PairingPolicy::combinatorial
                                                                 : PairingPolicy::geometric;
@@ -252,22 +209,53 @@ int run_batch(const BatchArguments& arguments) {
                      std::strerror(errno) + ")");
   }
 
+  // The log: with --resume, a file whose last line says it was done with these options from
+  // this input is skipped; every other file (failed, skipped, changed, new) is done again.
+  const std::string log_path =
+      arguments.log.empty() ? (std::filesystem::path(arguments.out_dir) / kBatchLogName).string()
+                            : arguments.log;
+  std::map<std::string, std::string> logged;
+  try {
+    logged = read_batch_log(log_path);
+  } catch (const std::runtime_error& bad) {
+    throw UsageError(bad.what());
+  }
+  std::vector<std::string> kept;
   std::vector<Entry> entries;
   for (const FileJob& job : plan.jobs) {
     Entry entry;
     entry.name = job.name;
     entry.job = &job;
+    const auto line = logged.find(to_valid_utf8(job.name));
+    if (arguments.resume && line != logged.end() && is_done_in_log(line->second, job, options)) {
+      entry.up_to_date = true;
+      entry.status = FileStatus::skipped;
+      entry.reason = job.output + " is up to date (same input and options as its last run)";
+      entry.record = batch_record_json(job.name, job.output_name, "skipped", entry.reason, nullptr);
+      kept.push_back(line->second);
+    }
     entries.push_back(std::move(entry));
   }
+  write_batch_log(log_path, kept);
+  std::ofstream log(log_path, std::ios::app | std::ios::binary);
+  const auto log_entry = [&](const Entry& e) {
+    if (e.up_to_date)
+      return;
+    const FileJob job = e.job ? *e.job : FileJob{arguments.in_dir + "/" + e.name, "", e.name, ""};
+    log << batch_log_line(e.record, job, options) << '\n' << std::flush;
+  };
   for (const BatchPlan::Unreadable& u : plan.unreadable) {
     Entry entry;
     entry.name = u.name;
     entry.status = FileStatus::skipped;
     entry.reason = u.reason;
     entry.record = skipped_record(u);
+    log_entry(entry);
     entries.push_back(std::move(entry));
-    std::cerr << "meshbridge: warning: skipped " << u.name << " in " << arguments.in_dir << ": "
-              << u.reason << "\n";
+    if (!arguments.quiet) {
+      std::cerr << "meshbridge: warning: skipped " << u.name << " in " << arguments.in_dir << ": "
+                << u.reason << "\n";
+    }
   }
   std::stable_sort(entries.begin(), entries.end(),
                    [](const Entry& a, const Entry& b) { return a.name < b.name; });
@@ -275,8 +263,9 @@ int run_batch(const BatchArguments& arguments) {
   // Files are taken in name order; records are printed in name order as soon as every earlier
   // one is done, so the output is the same for any --jobs.
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
-  BatchProgress progress(plan.jobs.size(), !arguments.quiet && (terminal || arguments.progress),
-                         terminal);
+  const std::size_t to_do = static_cast<std::size_t>(std::count_if(
+      entries.begin(), entries.end(), [](const Entry& e) { return e.job && !e.up_to_date; }));
+  BatchProgress progress(to_do, !arguments.quiet && (terminal || arguments.progress), terminal);
   if (!arguments.json) {
     std::cout << "| file | status | faces | singular edges | singular vertices | faces out | "
                  "components after | watertight after | note |\n"
@@ -284,18 +273,21 @@ int run_batch(const BatchArguments& arguments) {
   }
   std::vector<char> done(entries.size(), 0);
   for (std::size_t i = 0; i < entries.size(); ++i)
-    done[i] = entries[i].job ? 0 : 1;
+    done[i] = entries[i].job && !entries[i].up_to_date ? 0 : 1;
+  BatchWarnings warnings(arguments.quiet);
   std::size_t next_to_print = 0, files_done = 0, failed_so_far = 0;
   const auto finished = [&](std::size_t i) {
     failed_so_far += entries[i].status == FileStatus::failed ? 1 : 0;
     done[i] = 1;
-    progress.file_done(entries[i].name, ++files_done, failed_so_far);
+    log_entry(entries[i]);
+    progress.clear();
     for (; next_to_print < entries.size() && done[next_to_print]; ++next_to_print)
-      print_entry(entries[next_to_print], arguments.json);
+      print_entry(entries[next_to_print], arguments.json, warnings);
     std::cout.flush();
+    progress.file_done(entries[i].name, ++files_done, failed_so_far);
   };
   for (; next_to_print < entries.size() && done[next_to_print]; ++next_to_print)
-    print_entry(entries[next_to_print], arguments.json);
+    print_entry(entries[next_to_print], arguments.json, warnings);
   std::cout.flush();
 
   if (arguments.jobs <= 1) {
@@ -380,6 +372,9 @@ int run_batch(const BatchArguments& arguments) {
     }
   }
 
+  progress.clear();
+  std::cout.flush();
+  warnings.finish();
   std::size_t count[4] = {0, 0, 0, 0};
   bool all_written = true;
   for (const Entry& e : entries) {
@@ -387,8 +382,7 @@ int run_batch(const BatchArguments& arguments) {
     // Skipped because up to date is fine; skipped because unreadable is not.
     if (e.status == FileStatus::failed || !e.job) {
       all_written = false;
-    } else if (e.status == FileStatus::skipped &&
-               e.reason.find("is newer than the input") == std::string::npos) {
+    } else if (e.status == FileStatus::skipped && !e.up_to_date) {
       all_written = false;
     }
   }
@@ -433,13 +427,18 @@ void add_batch_command(CLI::App& app, int& exit_code) {
                     "of the table; the summary goes to stderr");
   command->add_flag("--elements", arguments->elements,
                     "with --json: also list the defective elements; default counts only");
-  command->add_flag("--quiet", arguments->quiet, "no progress and no summary on stderr");
+  command->add_flag("--quiet", arguments->quiet,
+                    "errors only on stderr: no warnings, no progress, no summary");
   command->add_flag("--progress", arguments->progress,
                     "show progress on stderr even when it is not a terminal");
   command->add_flag("--in-place", arguments->in_place,
                     "allow OUTDIR to be INDIR or inside it (originals are replaced)");
   command->add_flag("--resume", arguments->resume,
-                    "skip files whose output exists and is newer than the input");
+                    "skip files done before with the same options from the same input (as the "
+                    "log says); failed files are retried");
+  command->add_option("--log", arguments->log,
+                      "JSON Lines log of finished files, with the options and input of each "
+                      "(default: OUTDIR/.meshbridge-batch.jsonl)");
   command
       ->add_option("--jobs,-j", arguments->jobs,
                    "files repaired in parallel, each in a process of its own (default: cores)")

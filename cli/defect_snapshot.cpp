@@ -89,7 +89,7 @@ struct Frame {
 std::vector<char> fit_vertices(const Soup& soup, const DefectReport& report, SnapshotFocus focus) {
   std::vector<char> fit(soup.num_vertices(), 0);
   bool any = false;
-  if (focus == SnapshotFocus::defects) {
+  if (focus != SnapshotFocus::whole) {
     const auto mark = [&](Index v) {
       if (v < fit.size()) {
         fit[v] = 1;
@@ -114,6 +114,12 @@ Frame make_frame(const Soup& soup, const DefectReport& report, const SnapshotOpt
                  const QRectF& area) {
   Frame frame;
   frame.axes = screen_axes(options.view);
+  if (options.y_up) {
+    // Drawn as if the model were turned by R: (x, y, z) -> (x, -z, y), +y to +z; projecting R p
+    // on an axis a is projecting p on R^T a = (a.x, a.z, -a.y).
+    for (Point* a : {&frame.axes.right, &frame.axes.up})
+      *a = Point((*a)[0], (*a)[2], -(*a)[1]);
+  }
   frame.forward = frame.axes.right % frame.axes.up;
   frame.area = area;
   std::vector<char> used(soup.num_vertices(), 0);
@@ -152,8 +158,16 @@ Frame make_frame(const Soup& soup, const DefectReport& report, const SnapshotOpt
   double whole[4], fitted[4];
   box(used, whole);
   box(fit_vertices(soup, report, options.focus), fitted);
-  if (options.focus == SnapshotFocus::defects) {
-    const double least = 0.1 * std::max(whole[1] - whole[0], whole[3] - whole[2]);
+  const double across = std::max(whole[1] - whole[0], whole[3] - whole[2]);
+  SnapshotFocus focus = options.focus;
+  if (focus == SnapshotFocus::automatic) {  // defects when small, with the model around them
+    const bool small = std::max(fitted[1] - fitted[0], fitted[3] - fitted[2]) < 0.25 * across;
+    focus = small ? SnapshotFocus::defects : SnapshotFocus::whole;
+    if (!small)
+      std::copy(whole, whole + 4, fitted);
+  }
+  if (focus == SnapshotFocus::defects) {
+    const double least = (options.focus == SnapshotFocus::automatic ? 0.4 : 0.1) * across;
     for (int axis = 0; axis < 4; axis += 2) {
       const double middle = (fitted[axis] + fitted[axis + 1]) / 2;
       const double half = std::max((fitted[axis + 1] - fitted[axis]) * 0.55, least / 2);

@@ -45,6 +45,9 @@ struct RepairArguments {
   bool in_place = false;            //!< OUT may be IN itself
   bool self_intersections = false;  //!< also find the crossing faces of the result
   std::string before_after;
+  std::string view;   //!< --view for --before-after ("" = iso)
+  std::string focus;  //!< --focus for --before-after ("" = whole)
+  std::string up;     //!< --up for --before-after ("" = z)
   RepairOptions options;
   std::string separate = "0";  //!< "auto" or a distance >= 0 (0 = off)
   std::string weld = "auto";   //!< "auto" or a distance >= 0 (0 = off)
@@ -88,6 +91,11 @@ int run_repair(RepairArguments& arguments) {
     }
     check_writable_file(arguments.report);
   }
+  if (arguments.before_after.empty() && !(arguments.view + arguments.focus + arguments.up).empty())
+    throw UsageError(std::string(!arguments.view.empty()    ? "--view"
+                                 : !arguments.focus.empty() ? "--focus"
+                                                            : "--up") +
+                     " draws the --before-after picture: give --before-after PIC.png too");
   if (!arguments.before_after.empty()) {
     if (!ends_with_png(arguments.before_after)) {
       throw UsageError(arguments.before_after + ": --before-after is written as PNG; name it .png");
@@ -170,6 +178,13 @@ int run_repair(RepairArguments& arguments) {
       after.options.title = "after: " + file_name_of(out);
       after.frame_soup = &soup;
       after.frame_report = &result.report.before;
+      for (Picture* picture : {&before, &after}) {
+        picture->options.view =
+            parse_snapshot_view(arguments.view.empty() ? "iso" : arguments.view);
+        picture->options.focus =
+            parse_snapshot_focus(arguments.focus.empty() ? "auto" : arguments.focus);
+        picture->options.y_up = arguments.up == "y";
+      }
       write_pictures_png(arguments.before_after, {before, after});
     }
   }
@@ -273,6 +288,7 @@ void add_repair_command(CLI::App& app, int& exit_code) {
   command->add_option("--before-after", arguments->before_after,
                       "also draw the input and the result side by side into this PNG (as "
                       "`snapshot` draws them, same framing)");
+  add_view_options(*command, arguments->view, arguments->focus, arguments->up);
   command->add_flag("--progress", arguments->progress,
                     "show the stage and a progress bar on stderr even when it is not a terminal "
                     "(on a terminal it shows anyway once the work takes over a second)");

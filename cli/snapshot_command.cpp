@@ -21,7 +21,8 @@ namespace {
 struct SnapshotArguments {
   std::string file, out;
   std::string view = "iso";
-  std::string focus = "whole";
+  std::string focus = "auto";
+  std::string up = "z";
   SnapshotOptions options;
   bool progress = false;
 };
@@ -31,7 +32,8 @@ int run_snapshot(const SnapshotArguments& arguments) {
   const std::string& out = arguments.out;
   SnapshotOptions options = arguments.options;
   options.view = parse_snapshot_view(arguments.view);
-  options.focus = arguments.focus == "defects" ? SnapshotFocus::defects : SnapshotFocus::whole;
+  options.focus = parse_snapshot_focus(arguments.focus);
+  options.y_up = arguments.up == "y";
   options.title = file_name_of(path);
   if (!ends_with_png(out))
     throw UsageError(out + ": the snapshot is written as PNG; name it .png");
@@ -60,7 +62,7 @@ int run_snapshot(const SnapshotArguments& arguments) {
               << " has no legend\n";
   }
   std::cout << path << " -> " << out << " (" << options.size << "x" << options.size << ", view "
-            << to_string(options.view)
+            << to_string(options.view) << (options.y_up ? ", y up" : "")
             << "): " << counted(report.singular_edges.size(), "singular edge") << ", "
             << counted(report.num_singular_vertices(), "singular vertex") << ", "
             << counted(report.boundary_edges.size(), "boundary edge") << "; red pixels "
@@ -80,15 +82,7 @@ void add_snapshot_command(CLI::App& app, int& exit_code) {
   command->add_option("OUT.png", arguments->out, "PNG to write; replaced atomically")->required();
   command->add_option("--size", arguments->options.size, "width and height in pixels")
       ->check(CLI::Range(SnapshotOptions::kMinSize, SnapshotOptions::kMaxSize));
-  command
-      ->add_option("--view", arguments->view,
-                   "look from: iso (above a corner), x, y or z (along that axis)")
-      ->transform(CLI::IsMember({"iso", "x", "y", "z"}, CLI::ignore_case));
-  command
-      ->add_option("--focus", arguments->focus,
-                   "whole = fit the whole model; defects = zoom to the box around the singular "
-                   "and boundary edges and pinch vertices")
-      ->transform(CLI::IsMember({"whole", "defects"}, CLI::ignore_case));
+  add_view_options(*command, arguments->view, arguments->focus, arguments->up);
   command->add_flag("--progress", arguments->progress,
                     "show the stage and a progress bar on stderr even when it is not a terminal "
                     "(on a terminal it shows anyway once the work takes over a second)");

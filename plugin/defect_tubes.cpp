@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace meshbridge::meshlab {
 namespace {
@@ -138,25 +140,49 @@ DefectLayerCounts build_defect_tubes(const CMeshSoup& input, const DefectReport&
     diagonal = 1.0;  // all vertices coincide: any visible size will do
   const double radius = options.radius_fraction * diagonal;
   const std::size_t sides = std::size_t(options.sides);
+  const auto tube_radius = [&](Vec a, Vec b) {
+    const double length = (b - a).Norm();
+    return length > 0 ? std::min(radius, options.tube_edge_fraction * length) : radius;
+  };
+  // The shortest edge (polygon side of nonzero length) at each marked vertex.
+  std::vector<double> shortest(markers ? nv : 0, std::numeric_limits<double>::infinity());
+  const Soup& soup = input.soup;
+  for (std::size_t f = 0; markers && f < soup.num_faces(); ++f) {
+    const Index begin = soup.face_begin[f], end = soup.face_begin[f + 1];
+    for (Index c = begin; c < end; ++c) {
+      const Index a = soup.corner_vertices[c],
+                  b = soup.corner_vertices[c + 1 < end ? c + 1 : begin];
+      const double length = (to_vec(soup.positions[a]) - to_vec(soup.positions[b])).Norm();
+      if (length > 0) {
+        shortest[a] = std::min(shortest[a], length);
+        shortest[b] = std::min(shortest[b], length);
+      }
+    }
+  }
+  const auto marker_radius = [&](Index v) {
+    return std::min(radius * options.marker_scale, std::isfinite(shortest[v])
+                                                       ? options.marker_edge_fraction * shortest[v]
+                                                       : radius * options.marker_scale);
+  };
 
   TubeWriter out(layer, 2 * sides * edges + 6 * markers,
                  triangles_per_tube(options) * edges + kTrianglesPerMarker * markers);
   for (const SingularEdge& e : report.singular_edges) {
-    out.tube(position(e.vertices.v0), position(e.vertices.v1), radius, options.sides,
-             colors.singular_edge, float(e.contenders));
+    const Vec a = position(e.vertices.v0), b = position(e.vertices.v1);
+    out.tube(a, b, tube_radius(a, b), options.sides, colors.singular_edge, float(e.contenders));
     ++counts.singular_edges;
   }
   for (const VertexPair& e : report.boundary_edges) {
-    out.tube(position(e.v0), position(e.v1), radius, options.sides, colors.boundary_edge, 1.0f);
+    const Vec a = position(e.v0), b = position(e.v1);
+    out.tube(a, b, tube_radius(a, b), options.sides, colors.boundary_edge, 1.0f);
     ++counts.boundary_edges;
   }
-  const double marker_radius = radius * options.marker_scale;
   for (Index v : report.singular_edge_vertices) {
-    out.marker(position(v), marker_radius, colors.singular_edge_vertex);
+    out.marker(position(v), marker_radius(v), colors.singular_edge_vertex);
     ++counts.singular_vertex_markers;
   }
   for (Index v : report.pinch_vertices) {
-    out.marker(position(v), marker_radius, colors.pinch_vertex);
+    out.marker(position(v), marker_radius(v), colors.pinch_vertex);
     ++counts.singular_vertex_markers;
   }
   vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(layer);

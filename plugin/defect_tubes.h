@@ -29,6 +29,13 @@ struct DefectTubeOptions {
   double marker_scale = 3.5;
   //! Sides of each tube's cross-section (>= 3). Default 6.
   int sides = 6;
+  //! Sized from the geometry around each defect, never larger than what it marks: a tube's
+  //! radius is at most this fraction of its own edge's length (default 0.1), so tubes on 5 mm
+  //! letters stay thinner than the letters on a 220 mm bed.
+  double tube_edge_fraction = 0.1;
+  //! A marker's radius is at most this fraction of the shortest edge at its vertex (default
+  //! 0.3), so it never covers a neighbouring vertex.
+  double marker_edge_fraction = 0.3;
 };
 
 //! Triangles per tube (`2 * sides`, open ends) and per marker (8, an octahedron).

@@ -21,6 +21,16 @@ cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DMESHBRIDGE_BUILD_TESTS=
   -DMESHBRIDGE_BUILD_PYTHON=ON -DMESHLAB_SDK_DIR="$sdk" >/dev/null
 cmake --build build/release --parallel "$jobs" >/dev/null
 tool=build/release/cli/meshbridge
+# meshbridge on PATH: as root, a symbolic link /usr/local/bin/meshbridge to the built CLI (it
+# finds its pictures module through the link); otherwise the line that puts it on PATH is printed
+# at the end. An installed meshbridge that is not our link is left alone. MESHBRIDGE_BIN_DIR
+# puts the link elsewhere (default /usr/local/bin).
+link="${MESHBRIDGE_BIN_DIR:-/usr/local/bin}/meshbridge"
+on_path="to put meshbridge on PATH: export PATH=\"$root/build/release/cli:\$PATH\""
+if [ -w "$(dirname "$link")" ] && { [ ! -e "$link" ] || [ -L "$link" ]; }; then
+  ln -sfn "$root/$tool" "$link"
+  on_path="meshbridge is on PATH: $link -> $root/$tool"
+fi
 name="$(basename "${model%.*}")"
 out="$root/out"
 mkdir -p "$out"
@@ -71,3 +81,5 @@ echo
 echo "wrote $out/$name.defects.obj (defect layer), $out/$name.repaired.ply (repaired mesh),"
 echo "$out/$name.defects.png and $out/$name.repaired.png (pictures)"
 echo "and the meshlabserver logs $out/$name.detect.log, $out/$name.repair.log"
+echo
+echo "$on_path"

@@ -104,8 +104,23 @@ def plan_batch(
 
 def run_file_job(
     input: str, output: str, name: str, output_name: str, options: FileJobOptions
-) -> Tuple[str, str, str]:
-    """(status, reason, JSON Lines record) of read -> repair -> write one file."""
+) -> Tuple[str, str, str, str]:
+    """(status, reason, JSON Lines record, warning lines) of read -> repair -> write one file."""
 
 def skipped_record(name: str, reason: str) -> str: ...
 def failed_record(name: str, output_name: str, reason: str) -> str: ...
+def batch_log_line(
+    record: str, job: Tuple[str, str, str, str], options: FileJobOptions
+) -> str:
+    """The batch log's line of a finished job: its record with the options and input stamp."""
+
+def record_of_log_line(line: str) -> str: ...
+def batch_options_text(options: FileJobOptions) -> str: ...
+def is_done_in_log(
+    line: str, job: Tuple[str, str, str, str], options: FileJobOptions
+) -> Tuple[bool, str]:
+    """(True, "") when a rerun may skip the job, else (False, what changed)."""
+
+def write_batch_log(path: str, lines: List[str]) -> None: ...
+def harmless_warning_kind(line: str) -> str:
+    """The harmless kind of a batch warning line, or "" when it reports lost data."""

@@ -9,9 +9,16 @@ the same relative path below OUTDIR by the core's per-file job (``file_job.h``),
 it. One file is one Dask task; without ``--scheduler`` a LocalCluster on this machine runs them.
 
 Resumable: every finished file (clean, repaired, failed or skipped) appends its record to a JSON
-Lines log (default ``OUTDIR/.meshbridge-batch.jsonl``) once its output is in place; a rerun
-skips the files the log holds, so after a kill every file ends up done exactly once. A bad file
+Lines log (default ``OUTDIR/.meshbridge-batch.jsonl``, the log ``meshbridge batch`` keeps too)
+once its output is in place, with the options it was repaired with and the input's size and
+time (``batch_log.h``). A rerun skips a file only when its last line says clean or repaired,
+with the same options, from the same input, and the output is still there; every other file is
+done again: a failed file is retried on every run (fix the input and rerun), a file whose input
+or options changed is redone. After a kill every file ends up done exactly once. A bad file
 gives one ``failed`` record and the run goes on; so does a file whose worker died on it.
+
+Options as ``meshbridge batch``: ``--format obj|off|ply|stl|3mf``, ``--weld TOL|auto``,
+``--fill-holes [MAX_EDGES]``, ``--pairing``; the same options give the same output files.
 
 Memory: tasks carry paths, not meshes; a worker reads its file itself, so a worker holds at most
 ``--threads-per-worker`` meshes (default 1), and the client keeps at most ``--in-flight`` tasks
@@ -34,7 +41,7 @@ from typing import Any, Callable, Dict, Iterable, List, Optional, Tuple
 
 from . import _core
 
-__all__ = ["BatchSummary", "main", "run_batch"]
+__all__ = ["BatchSummary", "BatchWarnings", "main", "run_batch"]
 
 #: Default log name inside OUTDIR.
 LOG_NAME = ".meshbridge-batch.jsonl"
@@ -104,9 +111,9 @@ def _job_options(options: Dict[str, Any]) -> "_core.FileJobOptions":
     return native
 
 
-def run_file(job: Tuple[str, str, str, str], options: Dict[str, Any]) -> Tuple[str, str, str]:
+def run_file(job: Tuple[str, str, str, str], options: Dict[str, Any]) -> Tuple[str, str, str, str]:
     """One task: read -> repair -> write ``job`` = (input, output, name, output_name) with the
-    core's run_file_job; returns (status, reason, record). Runs on a Dask worker; the GIL is
+    core's run_file_job; returns (status, reason, record, warning lines). Runs on a Dask worker; the GIL is
     released while the core works. The files are the parallel work: the core uses one thread
     per file unless MESHBRIDGE_THREADS says otherwise."""
     os.environ.setdefault("MESHBRIDGE_THREADS", "1")
@@ -114,7 +121,7 @@ def run_file(job: Tuple[str, str, str, str], options: Dict[str, Any]) -> Tuple[s
 
 
 def read_log(path: str) -> Dict[str, str]:
-    """The records of a JSON Lines log by file name. A last line without its newline (the run
+    """The lines of a JSON Lines log by file name (the last line of a file wins). A last line without its newline (the run
     was killed while writing it) is cut off the file, so appending goes on cleanly."""
     records: Dict[str, str] = {}
     if not os.path.exists(path):
@@ -151,6 +158,7 @@ def run_batch(
     in_flight: Optional[int] = None,
     in_place: bool = False,
     progress: Optional[Callable[[int, int, str, str], None]] = None,
+    warnings: Optional[Callable[[str, str], None]] = None,
 ) -> BatchSummary:
     """Repairs every mesh below ``in_dir`` into ``out_dir`` on the Dask ``client``.
 
@@ -161,28 +169,37 @@ def run_batch(
     ``log_path`` (default ``out_dir/.meshbridge-batch.jsonl``) makes the run resumable.
     ``in_place``: as ``meshbridge batch --in-place`` (OUTDIR may be INDIR or inside it).
     ``repair``: options of :func:`meshbridge.repair`. ``in_flight``: tasks submitted at once
-    (default 4 per worker thread). ``progress(done, total, name, status)`` is called per file.
+    (default 4 per worker thread). ``progress(done, total, name, status)`` is called per file,
+    ``warnings(name, lines)`` per file this run finished with warnings (lines as the CLI prints
+    them; :class:`BatchWarnings` prints them as the CLI does).
     Raises ValueError for a missing INDIR, OUTDIR inside INDIR, a bad format or a corrupt log.
     """
     from distributed import as_completed
 
     options = {"format": format, "elements": elements, "repair": dict(repair or {})}
-    jobs, unreadable = _core.plan_batch(in_dir, out_dir, _job_options(options), in_place)
+    native = _job_options(options)
+    jobs, unreadable = _core.plan_batch(in_dir, out_dir, native, in_place)
     log_path = log_path or os.path.join(out_dir, LOG_NAME)
     os.makedirs(os.path.dirname(os.path.abspath(log_path)), exist_ok=True)
-    summary = BatchSummary(records=read_log(log_path))
-    planned = {job[2] for job in jobs} | {name for name, _ in unreadable}
-    summary.records = {name: record for name, record in summary.records.items() if name in planned}
+    logged = read_log(log_path)
+    by_name = {job[2]: job for job in jobs}
+    # Kept: files done before with these options from the same input; the rest is done again.
+    kept = {name: line for name, line in logged.items()
+            if name in by_name and _core.is_done_in_log(line, by_name[name], native)[0]}
+    _core.write_batch_log(log_path, list(kept.values()))
+    summary = BatchSummary(records={name: _core.record_of_log_line(line)
+                                    for name, line in kept.items()})
     summary.done_before = len(summary.records)
-    total = len(planned)
+    total = len(by_name) + len(unreadable)
 
     start = time.perf_counter()
     own_client = None
     own_cluster = None
     with open(log_path, "a", encoding="utf-8") as log:
 
-        def finish(name: str, status: str, record: str) -> None:
-            log.write(record + "\n")
+        def finish(job: Tuple[str, str, str, str], status: str, record: str) -> None:
+            name = job[2]
+            log.write(_core.batch_log_line(record, job, native) + "\n")
             log.flush()
             summary.records[name] = record
             summary.done_now += 1
@@ -190,8 +207,8 @@ def run_batch(
                 progress(len(summary.records), total, name, status)
 
         for name, reason in unreadable:
-            if name not in summary.records:
-                finish(name, "skipped", _core.skipped_record(name, reason))
+            finish((os.path.join(in_dir, name), "", name, ""), "skipped",
+                   _core.skipped_record(name, reason))
 
         todo = [job for job in jobs if job[2] not in summary.records]
         if not todo:
@@ -236,15 +253,18 @@ def run_batch(
         try:
             for future in futures:
                 job = by_key.pop(future.key)
+                lines = ""
                 try:
-                    status, _reason, record = future.result()
+                    status, _reason, record, lines = future.result()
                 except Exception as error:  # the worker died on it (e.g. memory limit), etc.
                     status = "failed"
                     record = _core.failed_record(
                         job[2], job[3], f"{job[0]}: the Dask task failed ({type(error).__name__}: {error})"
                     )
                 future.release()
-                finish(job[2], status, record)
+                if lines and warnings:
+                    warnings(job[2], lines)
+                finish(job, status, record)
                 submit_next()
         finally:
             if own_client is not None:
@@ -255,11 +275,56 @@ def run_batch(
     return _count(summary)
 
 
+class BatchWarnings:
+    """The CLI's way with a batch's warnings on stderr: lost data (texture coordinates, normals,
+    groups, colours, ...) one line per file, each harmless kind (STL solid names, float rounding)
+    once at the end with the number of files (``finish()``)."""
+
+    def __init__(self, stream: Any = None) -> None:
+        self.stream = stream or sys.stderr
+        self.files: Dict[str, int] = {}  # kind -> files, in order of first sight
+
+    def __call__(self, name: str, lines: str) -> None:
+        seen = set()
+        for line in lines.splitlines():
+            kind = _core.harmless_warning_kind(line)
+            if not kind:
+                print(f"meshbridge.batch: warning: {name}: {line}", file=self.stream, flush=True)
+            elif kind not in seen:
+                seen.add(kind)
+                self.files[kind] = self.files.get(kind, 0) + 1
+
+    def finish(self) -> None:
+        for kind, n in self.files.items():
+            print(f"meshbridge.batch: warning: {n} file{'s' if n != 1 else ''}: {kind}",
+                  file=self.stream)
+
+
 def _count(summary: BatchSummary) -> BatchSummary:
     for record in summary.records.values():
         status = json.loads(record)["status"]
         summary.statuses[status] = summary.statuses.get(status, 0) + 1
     return summary
+
+
+def _weld(text: str) -> Any:
+    """--weld: 'auto' or a distance >= 0."""
+    if text.lower() == "auto":
+        return "auto"
+    try:
+        value = float(text)
+    except ValueError:
+        value = -1.0
+    if not value >= 0 or value == float("inf"):
+        raise argparse.ArgumentTypeError(f"must be 'auto' or a distance >= 0, got {text!r}")
+    return value
+
+
+def _whole(text: str) -> int:
+    """--fill-holes: a whole number >= 0."""
+    if not text.isdigit():
+        raise argparse.ArgumentTypeError(f"must be a whole number of edges >= 0, got {text!r}")
+    return int(text)
 
 
 def _parse(argv: Optional[List[str]]) -> argparse.Namespace:
@@ -283,8 +348,16 @@ def _parse(argv: Optional[List[str]]) -> argparse.Namespace:
                         help="tasks submitted at once (default: 4 per worker thread)")
     parser.add_argument("--log", default=None,
                         help=f"JSON Lines log of finished files (default: OUTDIR/{LOG_NAME})")
-    parser.add_argument("--format", choices=["obj", "off", "ply", "stl"], default="",
-                        type=str.lower, help="write every result in this format")
+    parser.add_argument("--format", choices=["obj", "off", "ply", "stl", "3mf"], default="",
+                        type=str.lower, help="write every result in this format (default: each "
+                        "file's own); 3mf for a slicer")
+    parser.add_argument("--weld", default="auto", type=_weld, metavar="TOL|auto",
+                        help="gap closing before pairing, as in `meshbridge repair` (default "
+                        "auto; 0 = off)")
+    parser.add_argument("--fill-holes", nargs="?", const=_core.DEFAULT_FILL_HOLES_MAX_EDGES,
+                        default=0, type=_whole, metavar="MAX_EDGES",
+                        help="close holes of at most MAX_EDGES edges after the repair (bare: "
+                        f"{_core.DEFAULT_FILL_HOLES_MAX_EDGES}; default off)")
     parser.add_argument("--pairing", choices=["geometric", "combinatorial"], default="geometric",
                         type=str.lower, help="as in `meshbridge repair` (default geometric)")
     parser.add_argument("--in-place", action="store_true",
@@ -314,6 +387,7 @@ def main(argv: Optional[List[str]] = None) -> int:
         rate = finished_here[0] / max(time.perf_counter() - started, 1e-9)
         print(f"[{done}/{total}] {name}: {status} ({rate:.1f} files/s)", file=sys.stderr, flush=True)
 
+    warnings = None if arguments.quiet else BatchWarnings()
     try:
         summary = run_batch(
             arguments.in_dir,
@@ -327,13 +401,17 @@ def main(argv: Optional[List[str]] = None) -> int:
             elements=arguments.elements,
             in_flight=arguments.in_flight,
             in_place=arguments.in_place,
-            repair={"pairing": arguments.pairing},
+            repair={"pairing": arguments.pairing, "weld": arguments.weld,
+                    "fill_holes": arguments.fill_holes},
             progress=progress,
+            warnings=warnings,
         )
     except (ValueError, OSError, TimeoutError) as error:
         print(f"meshbridge.batch: {error}", file=sys.stderr)
         return 2
 
+    if warnings:
+        warnings.finish()
     sys.stdout.write(summary.json_lines() if arguments.json else summary.table())
     if not arguments.quiet:
         rate = summary.done_now / summary.seconds if summary.seconds > 0 else 0.0

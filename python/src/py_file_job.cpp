@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "py_file_job.h"
 
+#include "meshbridge/batch_log.h"
+#include "meshbridge/batch_warnings.h"
 #include "meshbridge/file_job.h"
 
 #include <pybind11/stl.h>
@@ -45,7 +47,8 @@ void bind_file_job(py::module_& m) {
       },
       py::arg("in_dir"), py::arg("out_dir"), py::arg("options"), py::arg("in_place") = false);
 
-  // (status, reason, record): never raises for a bad file (its record says `failed`).
+  // (status, reason, record, warnings): never raises for a bad file (its record says `failed`);
+  // warnings as batch_warning_lines.
   m.def(
       "run_file_job",
       [](const std::string& input, const std::string& output, const std::string& name,
@@ -55,8 +58,10 @@ void bind_file_job(py::module_& m) {
           py::gil_scoped_release release;
           result = run_file_job(FileJob{input, output, name, output_name}, options);
         }
+        std::string warnings =
+            batch_warning_lines(result, FileJob{input, output, name, output_name});
         return std::make_tuple(std::string(to_string(result.status)), std::move(result.reason),
-                               std::move(result.record));
+                               std::move(result.record), std::move(warnings));
       },
       py::arg("input"), py::arg("output"), py::arg("name"), py::arg("output_name"),
       py::arg("options"));
@@ -67,6 +72,31 @@ void bind_file_job(py::module_& m) {
         return skipped_record(BatchPlan::Unreadable{name, reason});
       },
       py::arg("name"), py::arg("reason"));
+
+  // The batch log (batch_log.h): a job as (input, output, name, output_name).
+  using JobTuple = std::tuple<std::string, std::string, std::string, std::string>;
+  const auto to_job = [](const JobTuple& t) {
+    return FileJob{std::get<0>(t), std::get<1>(t), std::get<2>(t), std::get<3>(t)};
+  };
+  m.def(
+      "batch_log_line",
+      [to_job](const std::string& record, const JobTuple& job, const FileJobOptions& options) {
+        return batch_log_line(record, to_job(job), options);
+      },
+      py::arg("record"), py::arg("job"), py::arg("options"));
+  m.def("record_of_log_line", &record_of_log_line, py::arg("line"));
+  m.def("batch_options_text", &batch_options_text, py::arg("options"));
+  // (done, why): whether a rerun may skip the job, else what changed.
+  m.def(
+      "is_done_in_log",
+      [to_job](const std::string& line, const JobTuple& job, const FileJobOptions& options) {
+        std::string why;
+        const bool done = is_done_in_log(line, to_job(job), options, &why);
+        return std::make_pair(done, why);
+      },
+      py::arg("line"), py::arg("job"), py::arg("options"));
+  m.def("write_batch_log", &write_batch_log, py::arg("path"), py::arg("lines"));
+  m.def("harmless_warning_kind", &harmless_warning_kind, py::arg("line"));
 
   // The `failed` record of a job that ended without a result of its own (its worker died).
   m.def(

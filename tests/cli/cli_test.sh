@@ -498,7 +498,7 @@ batch_safety)
   expect_exit 0 "$mb" batch "$work/in" "$work/res" --json
   expect_exit 0 "$mb" batch "$work/in" "$work/res" --json --resume
   [ "$(json_line_field "$work/out" 0 status)" = skipped ] || fail "resume did not skip"
-  json_line_field "$work/out" 0 reason | grep -q "newer than the input" || fail "resume reason"
+  json_line_field "$work/out" 0 reason | grep -q "is up to date (same input and options as its last run)" || fail "resume reason"
   expect_in "$work/err" "3 file(s): 0 clean, 0 repaired, 0 failed, 3 skipped"
   touch -d '+10 seconds' "$work/in/icosphere.obj"
   expect_exit 0 "$mb" batch "$work/in" "$work/res" --json --resume
@@ -507,8 +507,23 @@ batch_safety)
   # In the table a skipped or failed file has no counts: its reason is the last column (note).
   expect_exit 0 "$mb" batch "$work/in" "$work/res" --resume
   grep -q '^| file | status | .* | watertight after | note |$' "$work/out" || fail "table header: $(cat "$work/out")"
-  grep -qE '^\| sub/prisms24\.obj \| skipped \| \| \| \| \| \| \| .*newer than the input \|$' "$work/out" ||
+  grep -qE '^\| sub/prisms24\.obj \| skipped \| \| \| \| \| \| \| .*is up to date .* \|$' "$work/out" ||
     fail "skipped row, reason in the note column: $(cat "$work/out")"
+  # --resume redoes a file whose options changed (the log keeps them), and retries a failed one.
+  expect_exit 0 "$mb" batch "$work/in" "$work/res" --json --resume --fill-holes
+  [ "$(json_line_field "$work/out" 0 status)" = clean ] || fail "resume skipped files made without --fill-holes"
+  expect_in "$work/err" "3 file(s): 1 clean, 2 repaired, 0 failed, 0 skipped"
+  expect_exit 0 "$mb" batch "$work/in" "$work/res" --json --resume --fill-holes
+  expect_in "$work/err" "3 file(s): 0 clean, 0 repaired, 0 failed, 3 skipped"
+  grep -c '"batch_log":{"options":"format=same weld=auto .* fill_holes=32 ' "$work/res/.meshbridge-batch.jsonl" | grep -qx 3 ||
+    fail "the log keeps each file's options: $(cat "$work/res/.meshbridge-batch.jsonl")"
+  echo "not a mesh" >"$work/in/later.obj"
+  expect_exit 2 "$mb" batch "$work/in" "$work/res" --json --resume --fill-holes
+  expect_in "$work/err" "4 file(s): 0 clean, 0 repaired, 1 failed, 3 skipped"
+  cp "$models/bowtie.obj" "$work/in/later.obj"
+  expect_exit 0 "$mb" batch "$work/in" "$work/res" --json --resume --fill-holes
+  expect_in "$work/err" "4 file(s): 0 clean, 1 repaired, 0 failed, 3 skipped"
+  rm "$work/in/later.obj"
   # --in-place into INDIR itself replaces the originals.
   cp -r "$work/in" "$work/inplace"
   expect_exit 0 "$mb" batch "$work/inplace" "$work/inplace" --in-place --json
@@ -918,7 +933,20 @@ snapshot_views)
   expect_exit 0 "$mb" snapshot "$models/icosphere.obj" "$work/ico.png" --focus DEFECTS --size 64
   [ "$(pixels "$work/out" red)" = 0 ] && [ "$(pixels "$work/out" green)" = 0 ] || fail "icosphere"
   expect_exit 2 "$mb" snapshot "$models/icosphere.obj" "$work/ico.png" --focus edges
-  expect_in "$work/err" "--focus: edges not in {whole,defects}"
+  expect_in "$work/err" "--focus: edges not in {auto,whole,defects}"
+  # The default (auto) zooms toward defects that are small, keeping the model around them: a
+  # closed cube with a tiny open triangle beside a corner.
+  { sed -n '/^v /p' "$models/icosphere.obj"; echo 'v 1.1 1.1 1.1'; echo 'v 1.14 1.1 1.1'; echo 'v 1.1 1.14 1.1'
+    sed -n '/^f /p' "$models/icosphere.obj"; n=$(grep -c '^v ' "$models/icosphere.obj")
+    echo "f $((n + 1)) $((n + 2)) $((n + 3))"; } >"$work/speck.obj"
+  expect_exit 1 "$mb" snapshot "$work/speck.obj" "$work/speck_whole.png" --focus whole
+  whole=$(pixels "$work/out" green)
+  expect_exit 1 "$mb" snapshot "$work/speck.obj" "$work/speck_auto.png"
+  auto=$(pixels "$work/out" green)
+  expect_exit 1 "$mb" snapshot "$work/speck.obj" "$work/speck_defects.png" --focus defects
+  zoom=$(pixels "$work/out" green)
+  [ "$whole" -lt "$auto" ] && [ "$auto" -lt "$zoom" ] 2>/dev/null ||
+    fail "auto focus between whole and defects: $whole < $auto < $zoom green pixels"
   # The surface is shaded grey: many grey levels, not a wireframe on white.
   if command -v convert >/dev/null; then
     levels=$(convert "$work/whole.png" -colorspace gray -format %k info:)
@@ -939,6 +967,31 @@ snapshot_views)
   expect_exit 2 "$mb" repair "$models/prisms24.obj" "$work/q.obj" --before-after "$work/ba.jpg"
   expect_in "$work/err" "name it .png"
   [ ! -e "$work/q.obj" ] || fail "repair wrote its output despite a bad --before-after"
+  # --view and --focus draw --before-after as snapshot draws: cube_with_hole's hole, zoomed to,
+  # has a longer green rim on the left than in the whole view.
+  if command -v convert >/dev/null; then
+    green_in() {  # green_in FILE GEOMETRY -> count of green-ish pixels in that part
+      convert "$1" -crop "$2" +repage -fuzz 18% -fill black +opaque 'rgb(0,160,0)' \
+        -fill white -opaque 'rgb(0,160,0)' -format '%[fx:round(mean*w*h)]' info:
+    }
+    expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj" --before-after "$work/hw.png"
+    expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj" --before-after "$work/hz.png" --view z --focus defects
+    whole=$(green_in "$work/hw.png" 800x800+0+0)
+    zoom=$(green_in "$work/hz.png" 800x800+0+0)
+    [ "$zoom" -gt "$whole" ] 2>/dev/null || fail "--before-after --focus defects did not zoom: $whole -> $zoom green"
+    # --up y: a strip 10 long along +y stands upright from the side (--view x); with +z up it lies
+    # flat, a horizontal line through the middle, nothing in the top quarter.
+    printf 'v 0 0 0\nv 0 0 0.1\nv 0 10 0.1\nv 0 10 0\nf 1 2 3 4\n' >"$work/strip.obj"
+    expect_exit 1 "$mb" snapshot "$work/strip.obj" "$work/flat.png" --view x
+    expect_exit 1 "$mb" snapshot "$work/strip.obj" "$work/upright.png" --view x --up Y
+    expect_in "$work/out" "(800x800, view x, y up)"
+    [ "$(green_in "$work/flat.png" 800x200+0+0)" = 0 ] || fail "z up: the strip is not flat"
+    [ "$(green_in "$work/upright.png" 800x200+0+0)" -gt 50 ] 2>/dev/null || fail "--up y: the strip does not stand"
+    expect_exit 0 "$mb" repair "$work/strip.obj" "$work/s.obj" --before-after "$work/sba.png" --view x --up y
+    [ "$(green_in "$work/sba.png" 800x200+0+0)" -gt 50 ] 2>/dev/null || fail "--before-after --up y"
+  fi
+  expect_exit 2 "$mb" repair "$models/prisms24.obj" "$work/q.obj" --view z
+  expect_in "$work/err" "--view draws the --before-after picture: give --before-after PIC.png too"
   ;;
 fill_holes)
   # --fill-holes [MAX_EDGES]: off by default; bare = 32; the summary line and the JSON `holes`.
@@ -1019,6 +1072,80 @@ pictures_module)
   expect_exit 2 "$work/alone/meshbridge" snapshot "$models/twocubes.obj" "$work/a.png"
   expect_in "$work/err" "meshbridge snapshot: error: cannot draw pictures: $work/alone/meshbridge_pictures"
   [ ! -e "$work/a.png" ] || fail "snapshot with a broken module wrote a PNG"
+  ;;
+batch_warnings)
+  # Harmless warnings (STL solid names, float rounding) once per kind with a count; lost data
+  # (texture coordinates and normals) once per file; --quiet prints none, errors only.
+  mkdir -p "$work/in"
+  for n in 1 2 3; do
+    printf 'solid part%s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid part%s\n' "$n" "$n" >"$work/in/s$n.stl"
+    printf 'v 0.1 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n' >"$work/in/uv$n.obj"
+  done
+  expect_exit 0 "$mb" batch "$work/in" "$work/out_stl" --format stl
+  [ "$(grep -c 'solid names' "$work/err")" = 1 ] || fail "solid names once: $(cat "$work/err")"
+  expect_in "$work/err" "meshbridge: warning: 3 files: ASCII STL solid names not written (MeshBridge reads past them)"
+  expect_in "$work/err" "meshbridge: warning: 3 files: vertex positions rounded to 32-bit floats (STL and 3MF hold no more)"
+  for n in 1 2 3; do
+    expect_in "$work/err" "meshbridge: warning: uv$n.obj: output uv$n.stl: 1 texture coordinate (vt) and 1 normal (vn) not written"
+  done
+  [ "$(wc -l <"$work/err")" = 5 ] || fail "5 warning lines: $(cat "$work/err")"
+  expect_exit 0 "$mb" batch "$work/in" "$work/out_quiet" --format stl --quiet
+  [ ! -s "$work/err" ] || fail "--quiet printed: $(cat "$work/err")"
+  printf 'v 0 0 0\nf 1 2 3\n' >"$work/in/broken.obj"
+  expect_exit 2 "$mb" batch "$work/in" "$work/out_quiet2" --quiet
+  [ ! -s "$work/err" ] || fail "--quiet printed on stderr (the failure is in the table): $(cat "$work/err")"
+  expect_in "$work/out" "| broken.obj | failed |"
+  # On a terminal (script(1) gives one) the progress line is erased before each table row and
+  # warning: no visible line holds both.
+  if command -v script >/dev/null; then
+    script -qec "'$mb' batch '$work/in' '$work/out_tty' --jobs 2" /dev/null >"$work/tty" 2>&1
+    grep -q $'\033\[K\[[0-9]*/7\]' "$work/tty" || fail "no progress on a terminal: $(cat -v "$work/tty")"
+    # What the terminal shows of each line: the text after its last carriage return.
+    tr -d '\033' <"$work/tty" | sed -e 's/\[K//g' -e 's/\r$//' | awk -F'\r' '{print $NF}' >"$work/visible"
+    ! grep -E '\[[0-9]+/7\].*(\||warning)|(\||warning).*\[[0-9]+/7\]' "$work/visible" ||
+      fail "progress mixed with the table: $(cat -v "$work/visible")"
+    [ "$(grep -c '^|' "$work/visible")" = 9 ] || fail "9 table lines: $(cat -v "$work/visible")"
+  fi
+  ;;
+interop)
+  # OBJ vertex colours: RGB only unless alpha carries information (Open3D reads
+  # "v x y z r g b a" as 0 points).
+  header='ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n'
+  printf "$header"'0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n' >"$work/opaque.ply"
+  expect_exit 0 "$mb" repair "$work/opaque.ply" "$work/opaque.obj"
+  [ "$(grep -c '^v [^ ]* [^ ]* [^ ]* [^ ]* [^ ]* [^ ]*$' "$work/opaque.obj")" = 3 ] ||
+    fail "opaque colours: v x y z r g b: $(cat "$work/opaque.obj")"
+  printf "$header"'0 0 0 255 0 0 128\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n' >"$work/seethrough.ply"
+  expect_exit 0 "$mb" repair "$work/seethrough.ply" "$work/seethrough.obj"
+  [ "$(grep -c '^v [^ ]* [^ ]* [^ ]* [^ ]* [^ ]* [^ ]* [^ ]*$' "$work/seethrough.obj")" = 3 ] ||
+    fail "alpha that carries information is kept: $(cat "$work/seethrough.obj")"
+  # A PLY header line that is neither a keyword nor a comment (Blender 2.47) is read past with a
+  # warning naming it, as MeshLab and Blender read it.
+  printf 'ply\nformat ascii 1.0\nCreated by Blender3D 247 - www.blender.org, source file: ""\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar uint vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$work/blender.ply"
+  expect_exit 1 "$mb" check "$work/blender.ply"
+  expect_in "$work/out" "vertices 3, faces 1"
+  expect_in "$work/err" "meshbridge: warning: $work/blender.ply: PLY header lines that are neither keywords nor comments, read past (the first, line 3: 'Created by Blender3D 247 - www.blender.org, source file: \"\"'), on 1 line"
+  expect_exit 0 "$mb" repair "$work/blender.ply" "$work/blender_out.ply"
+  ;;
+readme_quick_start)
+  # The `meshbridge` lines of README's quick start, as written, from a folder with the
+  # repository's resources/ (the meshlabserver line runs in the meshlab tests' way, not here).
+  readme="$models/../../README.md"
+  awk '/^## Quick start/,/^## More/' "$readme" | grep '^meshbridge ' >"$work/commands"
+  [ "$(wc -l <"$work/commands")" = 2 ] || fail "two meshbridge lines in the quick start: $(cat "$work/commands")"
+  mkdir "$work/user" && ln -s "$(cd "$models/.." && pwd)" "$work/user/resources"
+  meshbridge() { "$mb" "$@"; }
+  while read -r line; do
+    command=${line%%#*}
+    (cd "$work/user" && eval "$command") >"$work/out" 2>"$work/err"
+    code=$?
+    case "$command" in
+    *check*) [ "$code" = 1 ] || fail "'$command' exited $code, expected 1 (defects found)" ;;
+    *) [ "$code" = 0 ] || fail "'$command' exited $code: $(cat "$work/err")" ;;
+    esac
+  done <"$work/commands"
+  [ -s "$work/user/prisms24.3mf" ] || fail "the quick start's repair wrote no prisms24.3mf"
+  expect_exit 0 "$mb" check "$work/user/prisms24.3mf"
   ;;
 *)
   echo "unknown case $case_name" >&2

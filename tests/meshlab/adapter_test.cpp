@@ -100,6 +100,47 @@ std::size_t faces_of_colour(const CMeshO& m, vcg::Color4b c) {
 
 }  // namespace
 
+TEST(DefectTubes, sized_from_the_geometry_around_each_defect_not_the_bounding_box) {
+  // A 220 x 220 bed (two triangles) and, in its corner, a bowtie 5 units across: its pinch
+  // vertex's marker and its edges' tubes stay within the bowtie, not 3.5 * 0.004 * 311 = 4.4
+  // units (the size the bed's diagonal alone would give).
+  using Alloc = vcg::tri::Allocator<CMeshO>;
+  CMeshO mesh;
+  const float p[9][3] = {{0, 0, 0},         {220, 0, 0},    {220, 220, 0},
+                         {0, 220, 0},       {10, 10, 1},    {12.5f, 10, 1},
+                         {12.5f, 12.5f, 1}, {15, 12.5f, 1}, {15, 15, 1}};
+  auto vi = Alloc::AddVertices(mesh, 9);
+  for (const auto& q : p)
+    (vi++)->P() = CMeshO::CoordType(q[0], q[1], q[2]);
+  const int f[4][3] = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {6, 7, 8}};
+  auto fi = Alloc::AddFaces(mesh, 4);
+  for (const auto& t : f) {
+    for (int k = 0; k < 3; ++k)
+      fi->V(k) = &mesh.vert[std::size_t(t[k])];
+    ++fi;
+  }
+  const mbm::CMeshSoup soup = mbm::soup_from_cmesh(mesh);
+  const meshbridge::DefectReport report = meshbridge::detect_defects(soup.soup);
+  ASSERT_EQ(report.pinch_vertices.size(), 1u);
+  CMeshO layer;
+  layer.face.EnableColor();
+  mbm::build_defect_tubes(soup, report, layer);
+  // Every vertex of the layer that belongs to the bowtie's tubes and marker lies within 0.3 of
+  // the shortest bowtie edge (2.5) of the bowtie: x and y in [10 - 0.75, 15 + 0.75].
+  std::size_t near_bowtie = 0;
+  for (const CVertexO& v : layer.vert) {
+    const float x = v.cP()[0], y = v.cP()[1];
+    if (x < 5 || y < 5 || x > 100 || y > 100)
+      continue;  // the bed's own boundary tubes
+    ++near_bowtie;
+    EXPECT_GE(x, 10 - 0.76f);
+    EXPECT_LE(x, 15 + 0.76f);
+    EXPECT_GE(y, 10 - 0.76f);
+    EXPECT_LE(y, 15 + 0.76f);
+  }
+  EXPECT_EQ(near_bowtie, 6u * 12 + 6u);  // six boundary tubes of 12 vertices, one marker
+}
+
 TEST(DefectTubes, one_tube_per_defect_edge_one_marker_per_singular_vertex) {
   CMeshO mesh;
   t_junction(mesh);

@@ -10,6 +10,7 @@ import signal
 import subprocess
 import sys
 import time
+import zipfile
 from pathlib import Path
 
 import pytest
@@ -75,7 +76,9 @@ def test_killed_half_way_and_resumed_every_file_done_once(tmp_path):
     records = log_records(log)
     names = [r["file"] for r in records]
     assert len(names) == len(set(names)) == total  # every file exactly once
-    assert records[: len(first)] == first  # the first run's records were kept, not redone
+    # The first run's records were kept, not redone; its failed files were retried.
+    kept = [r for r in first if r["status"] != "failed"]
+    assert records[: len(kept)] == kept
     statuses = {r["file"]: r["status"] for r in records}
     assert {name for name, status in statuses.items() if status == "failed"} == set(BAD)
     for record in records:
@@ -92,7 +95,8 @@ def test_killed_half_way_and_resumed_every_file_done_once(tmp_path):
 
     again = batch(indir, outdir, "--log", log)
     assert again.returncode == 2
-    assert f"{total} file(s) done before (in the log), 0 now" in again.stderr
+    bad = len(BAD)  # failed files are retried on every run
+    assert f"{total - bad} file(s) done before (in the log), {bad} now" in again.stderr
     assert len(log_records(log)) == total
 
     if not CLI:
@@ -111,7 +115,8 @@ def test_killed_half_way_and_resumed_every_file_done_once(tmp_path):
     temporary = re.compile(r"\..+\.[0-9]+\.[0-9]+\.[0-9]+\.tmp\.\w+")
     ours = sorted(p.relative_to(outdir) for p in outdir.rglob("*")
                   if p.is_file() and not temporary.fullmatch(p.name))
-    theirs = sorted(p.relative_to(cli_out) for p in cli_out.rglob("*") if p.is_file())
+    theirs = sorted(p.relative_to(cli_out) for p in cli_out.rglob("*")
+                    if p.is_file() and p.name != ".meshbridge-batch.jsonl")
     assert ours == theirs
     for relative in ours:
         assert (outdir / relative).read_bytes() == (cli_out / relative).read_bytes(), relative
@@ -150,3 +155,100 @@ def test_bad_arguments_exit_2_with_a_message(tmp_path):
     (tmp_path / "in" / "a.obj").write_text("v 0 0 0\n")
     bad_log = batch(tmp_path / "in", tmp_path / "out", "--log", corrupt)
     assert bad_log.returncode == 2 and "corrupt.jsonl, line 1: not a batch record" in bad_log.stderr
+
+
+def output_files(folder: Path):
+    """Each output's bytes; a 3MF's parts unzipped, with the random UUIDs lib3mf gives each
+    object and build item blanked (two runs of the CLI differ there too)."""
+    files = {}
+    for p in folder.rglob("*"):
+        if not p.is_file() or p.name == ".meshbridge-batch.jsonl":
+            continue
+        data = p.read_bytes()
+        if p.suffix == ".3mf":
+            with zipfile.ZipFile(p) as archive:
+                data = b"".join(name.encode() + re.sub(rb'UUID="[^"]*"', b'UUID=""', archive.read(name))
+                                for name in sorted(archive.namelist()))
+        files[p.relative_to(folder)] = data
+    return files
+
+
+def test_failed_files_retried_changed_options_redone_same_as_cli(tmp_path):
+    """A failed file is retried on the next run; a file whose options or input changed is redone
+    (the log keeps the options); --format 3mf --weld --fill-holes give the CLI's outputs."""
+    indir, outdir = tmp_path / "in", tmp_path / "out"
+    indir.mkdir()
+    for name in ("twocubes", "prisms24", "cube_with_hole"):
+        shutil.copy(SOURCE / "resources" / "models" / f"{name}.obj", indir / f"{name}.obj")
+    (indir / "broken.obj").write_text("this is not a mesh\n")
+
+    first = batch(indir, outdir, "--workers", "1")
+    assert first.returncode == 2, first.stderr
+    shutil.copy(SOURCE / "resources" / "models" / "bowtie.obj", indir / "broken.obj")
+    fixed = batch(indir, outdir, "--workers", "1")
+    assert fixed.returncode == 0, fixed.stderr
+    assert "3 file(s) done before (in the log), 1 now" in fixed.stderr
+
+    options = ["--format", "3mf", "--weld", "1e-5", "--fill-holes"]
+    changed = batch(indir, outdir, "--workers", "1", "--json", *options)
+    assert changed.returncode == 0, changed.stderr
+    assert "0 file(s) done before (in the log), 4 now" in changed.stderr
+    records = {json.loads(line)["file"]: json.loads(line) for line in changed.stdout.splitlines()}
+    assert records["cube_with_hole.obj"]["holes"]["holes_filled"] == 1
+    assert records["cube_with_hole.obj"]["output"] == "cube_with_hole.3mf"
+    log = [json.loads(line) for line in (outdir / ".meshbridge-batch.jsonl").read_text().splitlines()]
+    assert all("format=3mf weld=1.0000000000000001e-05" in r["batch_log"]["options"] for r in log)
+    assert all(" fill_holes=32 " in r["batch_log"]["options"] for r in log)
+
+    same = batch(indir, outdir, "--workers", "1", *options)
+    assert "4 file(s) done before (in the log), 0 now" in same.stderr, same.stderr
+    time.sleep(0.01)
+    (indir / "twocubes.obj").write_text((indir / "twocubes.obj").read_text() + "# edited\n")
+    edited = batch(indir, outdir, "--workers", "1", *options)
+    assert "3 file(s) done before (in the log), 1 now" in edited.stderr, edited.stderr
+
+    if not CLI:
+        pytest.skip("MESHBRIDGE_CLI not set: the CLI's outputs not compared")
+    cli_out = tmp_path / "cli_out"
+    cli = subprocess.run([CLI, "batch", indir, cli_out, "--json", "--quiet", *options],
+                         capture_output=True, text=True, timeout=600)
+    assert cli.returncode == 0, cli.stderr
+    assert cli.stdout == edited_json(indir, outdir, options)
+    ours, theirs = output_files(outdir), output_files(cli_out)
+    ours = {relative: data for relative, data in ours.items() if relative.suffix == ".3mf"}
+    assert sorted(ours) == sorted(theirs) == [Path(f"{n}.3mf") for n in
+                                              ("broken", "cube_with_hole", "prisms24", "twocubes")]
+    for relative in ours:
+        assert ours[relative] == theirs[relative], relative
+    # The CLI's --resume reads the same log: nothing to redo for the same options.
+    resumed = subprocess.run([CLI, "batch", indir, outdir, "--json", "--resume", *options],
+                             capture_output=True, text=True, timeout=600)
+    assert resumed.returncode == 0 and "4 skipped" in resumed.stderr, resumed.stderr
+
+
+def edited_json(indir: Path, outdir: Path, options) -> str:
+    """The Python batch's --json records of a run with nothing left to do (all from its log)."""
+    result = batch(indir, outdir, "--workers", "1", "--json", *options)
+    assert result.returncode == 0, result.stderr
+    return result.stdout
+
+
+def test_warnings_once_per_harmless_kind_lost_data_per_file_quiet_none(tmp_path):
+    indir = tmp_path / "in"
+    indir.mkdir()
+    for n in (1, 2, 3):
+        (indir / f"s{n}.stl").write_text(
+            f"solid part{n}\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+            f"vertex 0 1 0\nendloop\nendfacet\nendsolid part{n}\n")
+        (indir / f"uv{n}.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n")
+    result = batch(indir, tmp_path / "out", "--workers", "1", "--format", "stl")
+    assert result.returncode == 0, result.stderr
+    warnings = [line for line in result.stderr.splitlines() if "warning" in line]
+    assert warnings.count("meshbridge.batch: warning: 3 files: ASCII STL solid names not written "
+                          "(MeshBridge reads past them)") == 1, result.stderr
+    for n in (1, 2, 3):
+        assert (f"meshbridge.batch: warning: uv{n}.obj: output uv{n}.stl: 1 texture coordinate "
+                "(vt) not written: MeshBridge writes neither") in warnings, result.stderr
+    assert len(warnings) == 4, result.stderr
+    quiet = batch(indir, tmp_path / "quiet", "--workers", "1", "--format", "stl", "--quiet")
+    assert quiet.returncode == 0 and quiet.stderr == "", quiet.stderr

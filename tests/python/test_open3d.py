@@ -54,3 +54,26 @@ def test_open3d_checkerboard_every_cube_separate():
     _, sizes, _ = after.cluster_connected_triangles()
     assert len(after.triangles) == len(faces)
     assert np.asarray(sizes).tolist() == [12] * (len(faces) // 12)
+
+
+def test_open3d_reads_the_obj_colours_meshbridge_writes(tmp_path):
+    """OBJ vertex colours are written as "v x y z r g b" unless some alpha carries information:
+    Open3D 0.16 reads "v x y z r g b a" as 0 points."""
+    import os
+    import subprocess
+
+    cli = os.environ.get("MESHBRIDGE_CLI", "")
+    if not cli:
+        pytest.skip("MESHBRIDGE_CLI not set: no CLI to write the OBJ")
+    (tmp_path / "c.ply").write_text(
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+        "property uchar alpha\nelement face 1\nproperty list uchar int vertex_indices\n"
+        "end_header\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n")
+    result = subprocess.run([cli, "repair", tmp_path / "c.ply", tmp_path / "c.obj"],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    mesh = o3d.io.read_triangle_mesh(str(tmp_path / "c.obj"))
+    assert len(mesh.vertices) == 3 and len(mesh.triangles) == 1
+    assert mesh.has_vertex_colors()
+    assert np.allclose(np.asarray(mesh.vertex_colors), np.eye(3))

@@ -5,6 +5,7 @@
 
 #include "meshbridge/errors.h"
 
+#include <algorithm>
 #include <charconv>
 #include <utility>
 
@@ -219,9 +220,12 @@ PlyHeader parse_ply_header(std::string_view data, const std::string& path) {
                         property.name + "' twice");
       }
       header.elements.back().properties.push_back(std::move(property));
-    } else {
-      throw ReadError(at + "unknown keyword '" + std::string(w[0]) +
-                      "' in the PLY header (or no end_header line before the data)");
+    } else {  // a line of free text (Blender 2.47's "Created by Blender3D 247 ..."): read past
+      if (header.unknown_lines++ == 0) {
+        header.first_unknown_line = std::string(
+            line.substr(0, std::min<std::size_t>(60, line.find_last_not_of(" \t\r") + 1)));
+        header.first_unknown_line_number = line_number;
+      }
     }
   }
 }

@@ -55,9 +55,15 @@ struct PlyHeader {
   std::size_t body = 0;  //!< byte offset of the first data byte after "end_header\n"
   //! `comment` and `obj_info` lines, MeshBridge's own "comment written by MeshBridge" aside.
   std::size_t comments = 0;
+  //! Lines that are neither keywords nor comments ("Created by Blender3D 247 ..."), read past as
+  //! MeshLab's and Blender's readers do; the first one, for the warning.
+  std::size_t unknown_lines = 0;
+  std::string first_unknown_line;
+  std::size_t first_unknown_line_number = 0;
 };
 
 //! Parses the header at the start of `data` (a whole file).
+//! A line that starts with no keyword is counted in `unknown_lines` and read past.
 //! \throw ReadError naming `path` and the problem: not a PLY file, unknown format or version,
 //! unknown scalar type, property before any element, an element declared twice, a count that is
 //! not a non-negative integer, or no end_header line.

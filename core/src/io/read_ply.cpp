@@ -46,6 +46,13 @@ class PlyReader {
     vertices_ = vertex_count();
     if (attributes_ != nullptr && header_.comments > 0)
       attributes_->not_kept.push_back({"PLY comment and obj_info lines", header_.comments, "line"});
+    if (attributes_ != nullptr && header_.unknown_lines > 0) {
+      attributes_->not_kept.push_back(
+          {"PLY header lines that are neither keywords nor comments, read past (the first, line " +
+               std::to_string(header_.first_unknown_line_number) + ": '" +
+               header_.first_unknown_line + "')",
+           header_.unknown_lines, "line", true});
+    }
     const char* body = file_.data() + header_.body;
     if (header_.format == Format::ascii) {
       try {

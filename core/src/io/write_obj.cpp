@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // OBJ writer: the input's mtllib lines, "v x y z [r g b [a]]" (shortest exact decimals; a colour
-// only where the input vertex had one), "f a b c ..." (1-based), and the input's o/g/usemtl
-// groups before the first face of each.
+// only where the input vertex had one; alpha only when some vertex is not opaque), "f a b c ..."
+// (1-based), and the input's o/g/usemtl groups before the first face of each.
 
 #include "io/formats.h"
 #include "io/text_output.h"
@@ -20,7 +20,11 @@ void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
       text.text(library).ch('\n');
   }
   const bool colors = attributes != nullptr && !attributes->vertex_colors.empty();
-  const bool alpha = colors && (attributes->vertex_color_channels & kAlphaChannel) != 0;
+  // Alpha only when it carries information (a vertex not opaque): "v x y z r g b a" is no
+  // standard, and Open3D reads such a file as 0 points; trimesh and MeshLab read RGB.
+  const bool alpha = colors && (attributes->vertex_color_channels & kAlphaChannel) != 0 &&
+                     std::any_of(attributes->vertex_colors.begin(), attributes->vertex_colors.end(),
+                                 [](const Rgba& c) { return c.a != 255; });
   for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
     const Point& p = soup.positions[v];
     text.text("v ").number(p[0]).ch(' ').number(p[1]).ch(' ').number(p[2]);
