@@ -44,7 +44,10 @@ const std::vector<Entry> kEntries = {
      "Contenders left without a partner, so the edge is opened into boundary there.\n"
      "  cut on singular edges: left over by pairing (e.g. the third page of a book)\n"
      "  cut for orientation: pairing them would force two faces to face opposite ways\n"
-     "  cut to stay manifold: a fan that wound twice around a vertex (self-intersecting input)\n"
+     "  cut to stay manifold: always 0 now. Where a fan winds twice around a vertex and two\n"
+     "    pairs would share one edge, they are glued again in their new fans, or one pair gets a\n"
+     "    new vertex in the middle of the edge ('edges split at the midpoint'), so the two\n"
+     "    sheets touch without sharing it and nothing closed is opened\n"
      "  paired with copies instead: where a face is given twice (a sheet written once per side),\n"
      "    the two copies are glued back to back (a closed pillow of no volume) instead of cut\n"
      "  stitched: cut sides glued back in pairs where that stays manifold (--no-stitch: never)"},

@@ -66,6 +66,9 @@ def main(argv):
             opened = before["boundary_edges"] == 0 and after["boundary_edges"] > 0
             counts["cut"] += cut
             counts["opened"] += opened
+            if opened:
+                print(f"opened   {path}: boundary 0 -> {after['boundary_edges']} "
+                      f"(odd singular edges {odd})")
             if grew or nonorientable or cut:
                 counts["worse"] += 1
                 print(f"worse    {path}: boundary {before['boundary_edges']} -> "

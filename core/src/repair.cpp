@@ -408,6 +408,11 @@ std::string to_text(const RepairReport& r) {
         << " welded (largest move " << g.largest_weld_distance << ", " << g.welds_refused
         << " refused: same polygon), " << counted(g.t_junctions_closed, "T-junction") << " closed ("
         << counted(g.sides_split, "side") << " split)\n";
+    if (g.welds_too_long != 0 || g.t_junctions_too_wide != 0) {
+      out << "gaps kept open: " << counted(g.welds_too_long, "weld") << " and "
+          << counted(g.t_junctions_too_wide, "T-junction closing")
+          << " would move a vertex by more than a quarter of the shortest edge there\n";
+    }
   } else if (g.automatic) {
     out << "gaps: none to close (no boundary edge)\n";
   } else {

@@ -70,11 +70,19 @@ inline void check_repair(const Soup& input, const RepairOptions& options,
     check(mesh.soup.arity(f) >= 3, "output polygon with fewer than 3 corners", f);
   }
   // Provenance: same positions, corners come from corners of the same input vertex.
+  // A vertex with no origin (kNoIndex) is the midpoint of an edge split to stay manifold.
+  std::size_t midpoints = 0;
   for (std::size_t v = 0; v < mesh.soup.num_vertices(); ++v) {
+    if (mesh.vertex_origin[v] == kNoIndex) {
+      ++midpoints;
+      continue;
+    }
     check(mesh.vertex_origin[v] < input.num_vertices(), "vertex origin out of range", v);
     check(mesh.soup.positions[v] == input.positions[mesh.vertex_origin[v]],
           "position differs from its origin", v);
   }
+  check(midpoints == r.edges_split_to_stay_manifold, "vertices without origin", midpoints,
+        r.edges_split_to_stay_manifold);
   // A corner keeps its input vertex, except where gap closing changed the soup: a welded
   // corner moves to its weld's survivor (at most the reported largest weld distance away), and a
   // corner inserted to close a T-junction takes the corner starting the side it split as origin
@@ -85,7 +93,7 @@ inline void check_repair(const Soup& input, const RepairOptions& options,
     check(mesh.corner_origin[c] < input.num_corners(), "corner origin out of range", c);
     const Index from = input.corner_vertices[mesh.corner_origin[c]];
     const Index to = mesh.vertex_origin[mesh.soup.corner_vertices[c]];
-    if (to == from)
+    if (to == from || to == kNoIndex)  // kNoIndex: a midpoint corner
       continue;
     check(r.gaps.changed(), "corner comes from another vertex", c);
     if ((input.positions[to] - input.positions[from]).norm() > r.gaps.largest_weld_distance)
