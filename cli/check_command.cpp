@@ -64,8 +64,7 @@ int run_check(const CheckArguments& arguments) {
   if (arguments.json) {
     ReportJsonOptions json;
     json.elements = arguments.elements;
-    std::cout << check_report_json(path, report, &info, json, &gaps, crossings.get(),
-                                   &orientation)
+    std::cout << check_report_json(path, report, &info, json, &gaps, crossings.get(), &orientation)
               << "\n";
   } else {
     std::cout << path << "\n"

@@ -8,6 +8,7 @@ packages=(build-essential cmake pkg-config libopenmesh-dev libgtest-dev googlete
   python3-dev pybind11-dev python3-numpy python3-pytest python3-dask python3-distributed
   python3-open3d python3-venv python3-pip python3-setuptools python3-wheel
   prusa-slicer admesh jq  # the slicer judge (tests/printer)
+  clang-format  # the test command checks every C++ file's formatting (.clang-format)
   lib3mf-dev  # 3MF read and write (core)
   libcgal-dev libgmp-dev libmpfr-dev  # hole filling (core: CGAL PMP triangulate_hole, header-only)
   "$@")

@@ -11,6 +11,10 @@ jobs="$(nproc 2>/dev/null || echo 2)"
 bash scripts/install_deps.sh
 sdk="$(bash scripts/setup_meshlab_sdk.sh | tail -n 1)"
 
+# Formatting: every tracked C++ file as clang-format (.clang-format) writes it.
+git ls-files -z '*.cpp' '*.h' | xargs -0 clang-format --dry-run -Werror
+echo "formatting: every C++ file as clang-format writes it"
+
 build=build/test
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMESHBRIDGE_BUILD_TESTS=ON \
   -DMESHBRIDGE_BUILD_CLI=ON -DMESHBRIDGE_BUILD_BENCH=ON -DMESHBRIDGE_BUILD_PLUGIN=ON \

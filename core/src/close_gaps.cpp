@@ -2,6 +2,7 @@
 #include "meshbridge/close_gaps.h"
 
 #include "close_gaps_detail.h"
+#include "hash_mix.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,14 +23,7 @@ std::int64_t cell_coordinate(double x, double cell) {
   return static_cast<std::int64_t>(std::max(-limit, std::min(limit, c)));
 }
 
-std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
-  x ^= x >> 30;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27;
-  x *= 0x94d049bb133111ebULL;
-  x ^= x >> 31;
-  return x;
-}
+using detail::mix;
 
 std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
   return mix(static_cast<std::uint64_t>(x) ^

@@ -23,21 +23,6 @@ const char* const kTetrahedronWithCavity = R"(OFF
 0 0 0  4 0 0  0 4 0  0 0 4  0.5 0.5 0.5  1.5 0.5 0.5  0.5 1.5 0.5  0.5 0.5 1.5
 3 0 2 1  3 0 1 3  3 0 3 2  3 1 2 3  3 4 5 6  3 4 7 5  3 4 6 7  3 5 7 6)";
 
-// The six quads of an axis-aligned cube [lo, lo + size]^3, outward or inward.
-void add_cube(Soup& soup, double lo, double size, bool outward) {
-  const Index base = static_cast<Index>(soup.num_vertices());
-  for (int i = 0; i < 8; ++i)
-    soup.add_vertex({lo + size * (i & 1), lo + size * ((i >> 1) & 1), lo + size * ((i >> 2) & 1)});
-  const Index quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads) {
-    std::vector<Index> polygon{base + q[0], base + q[1], base + q[2], base + q[3]};
-    if (!outward)
-      std::reverse(polygon.begin(), polygon.end());
-    soup.add_polygon(polygon);
-  }
-}
-
 void expect_volumes(const Soup& soup, const std::vector<Index>& to_original,
                     const std::vector<double>& volume_of_original_face,
                     const RepairOptions& options = {}) {

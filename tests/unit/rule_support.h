@@ -8,6 +8,7 @@
 
 #include "test_support.h"
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <string>
@@ -36,6 +37,21 @@ inline Soup from_off(const std::string& text) {
     soup.add_polygon(polygon);
   }
   return soup;
+}
+
+//! Appends the six quads of an axis-aligned cube [lo, lo + size]^3, outward or inward.
+inline void add_cube(Soup& soup, double lo, double size, bool outward) {
+  const Index base = static_cast<Index>(soup.num_vertices());
+  for (int i = 0; i < 8; ++i)
+    soup.add_vertex({lo + size * (i & 1), lo + size * ((i >> 1) & 1), lo + size * ((i >> 2) & 1)});
+  const Index quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    std::vector<Index> polygon{base + q[0], base + q[1], base + q[2], base + q[3]};
+    if (!outward)
+      std::reverse(polygon.begin(), polygon.end());
+    soup.add_polygon(polygon);
+  }
 }
 
 //! The soup with polygon f reversed.

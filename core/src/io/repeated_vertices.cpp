@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/repeated_vertices.h"
 
+#include "hash_mix.h"
+
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -8,15 +10,6 @@
 namespace meshbridge::detail {
 
 namespace {
-
-std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
-  x ^= x >> 30;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27;
-  x *= 0x94d049bb133111ebULL;
-  x ^= x >> 31;
-  return x;
-}
 
 std::uint64_t bits(double x) {
   if (x == 0)

@@ -157,18 +157,20 @@ std::size_t pair_copies(const Soup& soup, const GroupedSides& grouped, const Ver
   return exchanges;
 }
 
-// One round of splits: per output edge holding two or more pairs, all but one are split at the
-// edge's midpoint (stitched ones first; among equals the one whose faces' keys are smallest is
-// kept); a pair sharing its output edge with unpaired sides is split. A split pair stays a pair:
-// its two faces get a new vertex at the middle of the edge (emit_mesh()), so its sides run
-// through that vertex and no longer share an output edge with anything (DESIGN 8a, closed stays
-// closed). Returns the number of pairs split.
-std::size_t split_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
-                                 const std::vector<Index>& corner_vertex, SidePairing& pairing,
-                                 ManifoldEdgeCounts& counts, std::size_t& crowded) {
-  const std::vector<Index>& mate = pairing.mate;
+enum class Crowding { cut, split_at_midpoint };
+
+// One round: per output edge holding two or more pairs, all but one are taken off it (stitched
+// ones first; among equals the one whose faces' keys are smallest is kept); a pair sharing its
+// output edge with unpaired sides is taken off too. With Crowding::cut a pair taken off is cut;
+// with Crowding::split_at_midpoint it stays a pair, and its two faces get a new vertex at the
+// middle of the edge (emit_mesh()), so its sides run through that vertex and share no output
+// edge with anything (DESIGN 8a, closed stays closed). Returns the number of pairs taken off.
+std::size_t resolve_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
+                                   const std::vector<Index>& corner_vertex, SidePairing& pairing,
+                                   Crowding how, ManifoldEdgeCounts& counts, std::size_t& crowded) {
+  std::vector<Index>& mate = pairing.mate;
   const std::vector<char>& stitched = pairing.stitched;
-  if (pairing.midpoint.empty())
+  if (how == Crowding::split_at_midpoint && pairing.midpoint.empty())
     pairing.midpoint.assign(mate.size(), 0);
   // Choices are made by face keys, which do not depend on face order or polygon start.
   const auto key_of = [&](Index side) {
@@ -180,7 +182,7 @@ std::size_t split_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
     auto a = key_of(side), b = key_of(mate[side]);
     return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
   };
-  std::size_t split = 0;
+  std::size_t taken = 0;
   crowded = for_each_crowded_output_edge(
       soup, grouped, corner_vertex, pairing,
       [&](const std::vector<Index>& pairs, const std::vector<Index>& open) {
@@ -198,60 +200,19 @@ std::size_t split_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
         for (Index p : pairs) {
           if (p == keep)
             continue;
-          pairing.midpoint[p] = pairing.midpoint[mate[p]] = 1;
-          ++counts.pairs_split;
-          ++split;
-        }
-      });
-  return split;
-}
-
-// One round of cuts: per output edge holding two or more pairs, all but one are cut (stitched
-// ones first; among equals the one whose faces' keys are smallest is kept); a pair sharing its
-// output edge with unpaired sides is cut. Returns the number of pairs cut.
-std::size_t cut_crowding_pairs(const Soup& soup, const GroupedSides& grouped,
-                               const std::vector<Index>& corner_vertex, SidePairing& pairing,
-                               ManifoldEdgeCounts& counts, std::size_t& crowded) {
-  std::vector<Index>& mate = pairing.mate;
-  const std::vector<char>& stitched = pairing.stitched;
-  // Choices are made by face keys, which do not depend on face order or polygon start.
-  const auto key_of = [&](Index side) {
-    std::vector<Index> key;
-    face_key(soup, grouped.corner_face[side], key);
-    return key;
-  };
-  const auto pair_key = [&](Index side) {
-    auto a = key_of(side), b = key_of(mate[side]);
-    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
-  };
-  std::size_t cut = 0;
-  crowded = for_each_crowded_output_edge(
-      soup, grouped, corner_vertex, pairing,
-      [&](const std::vector<Index>& pairs, const std::vector<Index>& open) {
-        if (pairs.empty() || (pairs.size() == 1 && open.empty()))
-          return;
-        Index keep = kNoIndex;  // kept only if no unpaired side shares the edge
-        if (open.empty()) {
-          for (Index p : pairs) {
-            const bool better = keep == kNoIndex || (stitched[keep] && !stitched[p]) ||
-                                (stitched[keep] == stitched[p] && pair_key(p) < pair_key(keep));
-            if (better)
-              keep = p;
-          }
-        }
-        for (Index p : pairs) {
-          if (p == keep)
+          ++taken;
+          if (how == Crowding::split_at_midpoint) {
+            pairing.midpoint[p] = pairing.midpoint[mate[p]] = 1;
+            ++counts.pairs_split;
             continue;
+          }
           (stitched[p] ? counts.unstitched : counts.pairs_cut) += 2;
           mate[mate[p]] = kNoIndex;
           mate[p] = kNoIndex;
-          ++cut;
         }
       });
-  return cut;
+  return taken;
 }
-
-enum class Crowding { cut, split_at_midpoint };
 
 // Rounds until no pair crowds an output edge, resolving it as `how` says, then the unpaired sides
 // left on one output edge glued (see make_output_edges_manifold()).
@@ -272,9 +233,7 @@ ManifoldEdgeCounts resolve_crowding(const Soup& soup, const GroupedSides& groupe
       return counts;  // no output edge is shared
     if (changed == 0) {
       changed =
-          how == Crowding::cut
-              ? cut_crowding_pairs(soup, grouped, split.corner_vertex, pairing, counts, crowded)
-              : split_crowding_pairs(soup, grouped, split.corner_vertex, pairing, counts, crowded);
+          resolve_crowding_pairs(soup, grouped, split.corner_vertex, pairing, how, counts, crowded);
     }
     if (changed == 0)
       break;
