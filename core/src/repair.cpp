@@ -255,6 +255,7 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
   // detection is then the input's. Otherwise detect again, independently of the pipeline.
   const bool unchanged = !gaps_closed && !filtering && simple.is_identity() &&
                          report.vertices_split == 0 && report.faces_flipped == 0 &&
+                         report.edges_split_to_stay_manifold == 0 &&
                          report.isolated_vertices_removed == 0 && report.holes.faces_added == 0;
   if (detecting) {
     // (The output is valid by construction: detect_defects() would check it again.)

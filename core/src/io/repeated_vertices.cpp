@@ -3,6 +3,7 @@
 
 #include "hash_mix.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -70,20 +71,38 @@ std::size_t weld_repeated_vertices(Soup& soup, MeshAttributes* attributes) {
   }
   if (removed == 0)
     return 0;
-  // A per-face-vertex file repeats most positions (every corner of a closed mesh, most of an
-  // open one). Copies at only a few positions are a file's own choice (a repaired mesh whose
-  // split vertices each carry one face, the two triangles of a bowtie): left as they are.
-  std::vector<char> shared(n, 0);
-  std::size_t used_vertices = 0, with_copies = 0;
-  for (std::size_t v = 0; v < n; ++v) {
-    if (survivor[v] != v)
-      shared[v] = shared[survivor[v]] = 1;
+  // A per-face-vertex file of a surface: welded, most sides share their edge with another side
+  // (every side of a closed mesh). Faces that would meet only at vertices (a repaired mesh whose
+  // split vertices each carry one face: the two triangles of a bowtie) are a file's own choice:
+  // left as they are.
+  std::size_t edge_capacity = 16;
+  while (edge_capacity < 2 * soup.num_corners())
+    edge_capacity *= 2;
+  std::vector<std::uint64_t> edge_keys(edge_capacity, 0);
+  std::vector<Index> edge_sides(edge_capacity, 0);
+  const auto edge_slot = [&](Index a, Index b) {
+    const std::uint64_t key =
+        ((static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b)) + 1;  // never 0
+    std::size_t slot = mix(key) & (edge_capacity - 1);
+    while (edge_keys[slot] != 0 && edge_keys[slot] != key)
+      slot = (slot + 1) & (edge_capacity - 1);
+    edge_keys[slot] = key;
+    return slot;
+  };
+  for (Index f = 0; f < soup.num_faces(); ++f) {
+    for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
+      const Index a = survivor[soup.corner_vertices[c]];
+      const Index b = survivor[soup.corner_vertices[soup.next_corner(c, f)]];
+      if (a != b)
+        ++edge_sides[edge_slot(a, b)];
+    }
   }
-  for (std::size_t v = 0; v < n; ++v) {
-    used_vertices += used[v];
-    with_copies += shared[v];
+  std::size_t sides = 0, shared = 0;
+  for (std::size_t slot = 0; slot < edge_capacity; ++slot) {
+    sides += edge_sides[slot];
+    shared += edge_sides[slot] >= 2 ? edge_sides[slot] : 0;
   }
-  if (2 * with_copies < used_vertices)
+  if (2 * shared < sides)
     return 0;
   std::vector<Index> new_index(n, kNoIndex);
   Index next = 0;

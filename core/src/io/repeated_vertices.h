@@ -10,14 +10,15 @@
 
 namespace meshbridge::detail {
 
-//! If no vertex of `soup` is used by two corners (each face has vertices of its own) and at least
-//! half of the used vertices share their exact position with another, every group of used vertices
+//! If no vertex of `soup` is used by two corners (each face has vertices of its own) and welding
+//! by position would make at least half of the polygon sides share their edge with another side
+//! (a surface written per face vertex), every group of used vertices
 //! at one position
 //! (-0 = +0; with per-vertex colours in `attributes`, also the same colour) becomes its first
 //! vertex; the others are removed, survivors and unused vertices keep their order, and the
 //! per-vertex attributes follow. A soup where some vertex is shared (an indexed mesh, a repaired
-//! mesh whose split copies are each shared by their fan), or where copies are few (the two
-//! triangles of a repaired bowtie), is left as it is. Linear time (one hash
+//! mesh whose split copies are each shared by their fan), or whose faces would meet only at
+//! vertices (the two triangles of a repaired bowtie), is left as it is. Linear time (one hash
 //! table). Returns the number of vertices removed. Indices out of range: left for the caller's
 //! validation (nothing is welded).
 std::size_t weld_repeated_vertices(Soup& soup, MeshAttributes* attributes);
