@@ -279,25 +279,31 @@ std::size_t orient_components(const Soup& soup, const GroupedSides& grouped, Sid
       nesting.depth.assign(1, 0);
       nesting.parent.assign(1, kNoIndex);
     }
-    // Containers first (by depth), so each shell's parent is decided before it.
-    std::vector<Index> order(num_shells);
-    for (Index s = 0; s < num_shells; ++s)
-      order[s] = s;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](Index a, Index b) { return nesting.depth[a] < nesting.depth[b]; });
-    std::vector<char> outward(num_shells, 1);
-    for (Index s : order) {
-      const Index p = nesting.parent[s];
-      if (p == kNoIndex)
-        continue;  // outermost: outward
-      const Index k = component_of[s], q = component_of[p];
-      // Even-odd: a cavity runs against its container.
-      outward[s] = !outward[p];
-      if (!mixed[k] && !mixed[q] && written_outward(k) == written_outward(q)) {
-        // Written like its container (an insert, or a cavity wound the wrong way): ambiguous.
-        ++ambiguous;
-        if (nested == AmbiguousNesting::material)
-          outward[s] = outward[p];
+    // Each shell after its container: up the parent chain to a decided shell (or the
+    // outermost), then down again. Degenerate inputs can nest without order (shells of no
+    // thickness on each other's faces); a chain that comes back to a shell on it stops there.
+    std::vector<char> outward(num_shells, 1), state(num_shells, 0);  // 0 new, 1 on chain, 2 done
+    std::vector<Index> chain;
+    for (Index start = 0; start < num_shells; ++start) {
+      chain.clear();
+      for (Index s = start; s != kNoIndex && state[s] == 0; s = nesting.parent[s]) {
+        state[s] = 1;
+        chain.push_back(s);
+      }
+      for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+        const Index s = *it, p = nesting.parent[s];
+        state[s] = 2;
+        if (p == kNoIndex || state[p] != 2)
+          continue;  // outermost (or a cycle's first shell): outward
+        const Index k = component_of[s], q = component_of[p];
+        // Even-odd: a cavity runs against its container.
+        outward[s] = !outward[p];
+        if (!mixed[k] && !mixed[q] && written_outward(k) == written_outward(q)) {
+          // Written like its container (an insert, or a cavity wound the wrong way): ambiguous.
+          ++ambiguous;
+          if (nested == AmbiguousNesting::material)
+            outward[s] = outward[p];
+        }
       }
     }
     for (Index s = 0; s < num_shells; ++s) {
