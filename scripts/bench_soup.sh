@@ -36,7 +36,7 @@ for round in $(seq "$rounds"); do
     fi
     # check exits 1 on a defective file: that is its answer, not a failure.
     /usr/bin/time -f "%e %U %S" -o "$tmp/time" "${cmd[@]}" >/dev/null 2>&1 || [ $? -eq 1 ]
-    read -r wall user sys <"$tmp/time"
+    read -r wall user sys < <(tail -n 1 "$tmp/time")
     awk -v w="$what" -v f="$file" -v t="$wall" -v u="$user" -v s="$sys" \
       'BEGIN { print w, f, t, u + s }' >>"$tmp/raw"
   done
