@@ -45,9 +45,10 @@ struct BatchArguments {
   bool progress = false;
   bool in_place = false;
   bool resume = false;
-  std::string log;            //!< "" = OUTDIR/.meshbridge-batch.jsonl
-  std::string weld = "auto";  //!< as repair --weld
-  std::string fill_holes;     //!< as repair --fill-holes ("" or "0" = off)
+  std::string log;                //!< "" = OUTDIR/.meshbridge-batch.jsonl
+  std::string weld = "auto";      //!< as repair --weld
+  std::string fill_holes;         //!< as repair --fill-holes ("" or "0" = off)
+  std::string separate = "auto";  //!< STL output: "auto" moves split vertex copies apart, "0" not
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
 };
 
@@ -189,6 +190,7 @@ int run_batch(const BatchArguments& arguments) {
   options.repair.close_gaps = parse_weld(arguments.weld);
   options.repair.fill_holes.max_edges = parse_fill_holes(arguments.fill_holes);
   options.elements = arguments.elements;
+  options.separate_stl_copies = arguments.separate == "auto";
   options.repair.pairing = arguments.pairing == "combinatorial" ? PairingPolicy::combinatorial
                                                                 : PairingPolicy::geometric;
   BatchPlan plan;
@@ -419,6 +421,13 @@ void add_batch_command(CLI::App& app, int& exit_code) {
       ->capture_default_str()
       ->check(distance_or_auto());
   add_fill_holes_option(*command, arguments->fill_holes);
+  command
+      ->add_option("--separate", arguments->separate,
+                   "auto|0: for STL outputs, auto moves the copies of split vertices apart by the "
+                   "smallest distance a reader's weld keeps (as repair does); 0 keeps positions "
+                   "exact, and the STL re-reads with the split vertices welded again")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "0"}));
   command->add_option("--pairing", arguments->pairing, "as in repair")
       ->capture_default_str()
       ->transform(CLI::IsMember({"geometric", "combinatorial"}, CLI::ignore_case));

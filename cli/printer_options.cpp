@@ -139,35 +139,47 @@ bool is_stl_path(const std::string& path) {
   return has_extension(path, ".stl");
 }
 
-double apply_separate(const std::string& text, IndexedMesh& mesh, std::size_t vertices_split,
-                      const std::string& out, std::ostream& summary) {
+StlSeparation apply_separate(const std::string& text, bool given, IndexedMesh& mesh,
+                             std::size_t vertices_split, const std::string& out,
+                             std::ostream& summary) {
   const bool automatic = text == "auto";
-  double distance = automatic ? 0 : parse_distance("separate", text);
-  if (vertices_split == 0 || (!automatic && distance == 0))
-    return 0;
+  StlSeparation done;
+  done.distance = automatic ? 0 : parse_distance("separate", text);
+  if (vertices_split == 0 || (!automatic && done.distance == 0))
+    return StlSeparation();
   if (is_stl_path(out)) {
     if (automatic) {  // one that a re-read's default gap closing does not undo either
-      distance = stl_separation_surviving_weld(mesh);
-    } else {
-      IndexedMesh trial = mesh;
-      separate_split_vertices(trial, distance);
-      if (singular_elements_after_stl_round_trip(trial.soup) != 0) {
-        std::ostringstream message;
-        message << "--separate " << text << " is too small for float32 (STL) at this model's "
-                << "coordinates: the copies would weld again; the smallest EPS that works is "
-                << smallest_stl_separation(mesh) << " (or use --separate auto)";
-        throw UsageError(message.str());
+      done = separate_copies_for_stl(mesh);
+      if (!done.kept_reason.empty()) {
+        summary << "separate: the " << vertices_split
+                << " split vertex copies keep their positions (" << done.kept_reason << ")\n";
+        return done;
       }
+      summary << "separated the " << vertices_split << " split vertex copies for STL: moved "
+              << done.vertices_moved << " vertices by " << done.distance
+              << " (the smallest move a reader's weld by float32 position keeps apart; "
+                 "--separate 0 keeps positions exact)\n";
+      return done;
+    }
+    IndexedMesh trial = mesh;
+    separate_split_vertices(trial, done.distance);
+    if (singular_elements_after_stl_round_trip(trial.soup) != 0) {
+      std::ostringstream message;
+      message << "--separate " << text << " is too small for float32 (STL) at this model's "
+              << "coordinates: the copies would weld again; the smallest EPS that works is "
+              << smallest_stl_separation(mesh) << " (or use --separate auto)";
+      throw UsageError(message.str());
     }
   } else if (automatic) {
-    summary << "separate: not needed for " << out << " (the format keeps shared vertices)\n";
-    return 0;
+    if (given)
+      summary << "separate: not needed for " << out << " (the format keeps shared vertices)\n";
+    return StlSeparation();
   }
-  const std::size_t moved = separate_split_vertices(mesh, distance);
-  summary << "separated the " << vertices_split << " split vertex copies: moved " << moved
-          << " vertices (every copy of a split vertex) by " << distance
-          << (automatic ? " (auto)" : "") << "\n";
-  return distance;
+  done.vertices_moved = separate_split_vertices(mesh, done.distance);
+  summary << "separated the " << vertices_split << " split vertex copies: moved "
+          << done.vertices_moved << " vertices (every copy of a split vertex) by " << done.distance
+          << "\n";
+  return done;
 }
 
 DefectReport detect_as_reread(const std::string& path) {

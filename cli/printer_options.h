@@ -7,6 +7,7 @@
 #include "meshbridge/defect_report.h"
 #include "meshbridge/indexed_mesh.h"
 #include "meshbridge/pairing.h"
+#include "meshbridge/stl_round_trip.h"
 
 #include <CLI/CLI.hpp>
 
@@ -44,11 +45,14 @@ std::string wider_weld_hint(const Soup& soup, const CloseGapsOptions& weld,
 //! True if `path` ends with ".stl" (any case).
 bool is_stl_path(const std::string& path);
 
-//! `--separate auto|EPS` applied to a repaired mesh about to be written to `out`. For STL, an
-//! explicit EPS that float32 cannot hold is a UsageError naming the smallest EPS that works.
-//! Returns the distance used (0: nothing moved); prints the summary line to `summary`.
-double apply_separate(const std::string& text, IndexedMesh& mesh, std::size_t vertices_split,
-                      const std::string& out, std::ostream& summary);
+//! `--separate auto|EPS` applied to a repaired mesh about to be written to `out`: for STL, auto
+//! (the default) is separate_copies_for_stl() and 0 keeps positions exact; an explicit EPS that
+//! float32 cannot hold is a UsageError naming the smallest EPS that works. Other formats keep
+//! shared vertices: nothing moves (an explicit EPS still moves the copies). Prints one summary
+//! line when anything moved, when copies could not be moved, or when `given` for another format.
+StlSeparation apply_separate(const std::string& text, bool given, IndexedMesh& mesh,
+                             std::size_t vertices_split, const std::string& out,
+                             std::ostream& summary);
 
 //! Detection on the file at `path` as a reader gets it back (read_soup, no repair).
 DefectReport detect_as_reread(const std::string& path);

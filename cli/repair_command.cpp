@@ -4,6 +4,7 @@
 #include "meshbridge/read_accounting.h"
 #include "paths.h"
 #include "pictures.h"
+#include "print_preset.h"
 #include "printer_options.h"
 #include "progress.h"
 #include "validators.h"
@@ -49,9 +50,14 @@ struct RepairArguments {
   std::string focus;  //!< --focus for --before-after ("" = whole)
   std::string up;     //!< --up for --before-after ("" = z)
   RepairOptions options;
-  std::string separate = "0";  //!< "auto" or a distance >= 0 (0 = off)
-  std::string weld = "auto";   //!< "auto" or a distance >= 0 (0 = off)
-  std::string fill_holes;      //!< MAX_EDGES of --fill-holes ("" or "0" = off)
+  //! "auto" (default: for STL, the smallest move that survives a reader's weld) or a distance
+  //! >= 0 (0 = positions exact)
+  std::string separate = "auto";
+  bool separate_given = false;  //!< --separate was on the command line
+  bool print = false;           //!< --print: the slicer preset (print_preset.h)
+  bool weld_given = false, fill_holes_given = false;
+  std::string weld = "auto";  //!< "auto" or a distance >= 0 (0 = off)
+  std::string fill_holes;     //!< MAX_EDGES of --fill-holes ("" or "0" = off)
 };
 
 int run_repair(RepairArguments& arguments) {
@@ -69,6 +75,11 @@ int run_repair(RepairArguments& arguments) {
     check_writable_file(out);  // "OUT: cannot write: it is a folder", not "unknown format"
   if (!is_supported_mesh_file(out)) {
     throw UsageError(out + ": unknown output format (expected .obj, .off, .ply, .stl or .3mf)");
+  }
+  if (arguments.print && !has_extension(out, ".3mf")) {
+    throw UsageError(out +
+                     ": --print writes 3MF, the format slicers read with units, objects "
+                     "and no re-weld; name OUT .3mf");
   }
   check_readable_file(in);
   std::error_code same_error;  // (an OUT that does not exist yet is not IN)
@@ -107,7 +118,9 @@ int run_repair(RepairArguments& arguments) {
   ReadInfo info;
   RepairResult result;
   std::ostringstream separate_summary;
+  std::string print_note;              // --print: why duplicates were kept
   std::optional<DefectReport> reread;  // STL output as a reader gets it back
+  Soup written_soup;                   // ... and its soup, read back for --before-after
   WrittenOutput written;               // triangles fanned, what the output format could not hold
   std::unique_ptr<SelfIntersectionReport> crossings;  // of the result, with --self-intersections
   {
@@ -117,10 +130,16 @@ int run_repair(RepairArguments& arguments) {
     MeshAttributes attributes;
     Soup soup = read_soup(in, &info, &attributes);
     options.close_gaps.float_coordinates = info.float_coordinates;
+    if (arguments.print)
+      apply_print_preset(soup, arguments.weld_given, arguments.fill_holes_given, options);
     options.progress = progress.callback();
     // Only the picture reads the input again. Without one the soup is consumed: an input repair
     // leaves unchanged becomes the output (no copy), any other is freed before the writing.
-    if (arguments.before_after.empty()) {
+    if (arguments.print) {
+      result = repair_for_print(soup, options, print_note);
+      if (arguments.before_after.empty())
+        soup = Soup();
+    } else if (arguments.before_after.empty()) {
       result = repair(std::move(soup), options);
       soup = Soup();  // what repair left of it, freed before the output is written
     } else {
@@ -128,21 +147,28 @@ int run_repair(RepairArguments& arguments) {
     }
     count_records_without_corners(info, result.report);  // face records with no corner
     progress.stage(Stage::write, 0);
-    apply_separate(arguments.separate, result.mesh, result.report.vertices_split, out,
-                   separate_summary);
+    const StlSeparation separated =
+        apply_separate(arguments.separate, arguments.separate_given, result.mesh,
+                       result.report.vertices_split, out, separate_summary);
     if (arguments.self_intersections)  // of the mesh as written (copies moved apart included)
       crossings =
           std::make_unique<SelfIntersectionReport>(find_self_intersections(result.mesh.soup));
     write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
     written =
         describe_written(out, result.mesh.soup, attributes, result.report.gaps.vertices_welded);
+    written.copies_moved = separated.vertices_moved;
+    written.separation = separated.distance;
     std::error_code status_error;  // (a device or pipe cannot be read back)
     if (is_stl_path(out) && std::filesystem::is_regular_file(out, status_error)) {
       // Only the picture reads the mesh again: without one it is freed before the file is read
       // back, so the peak is not the mesh and the re-read soup together.
-      if (arguments.before_after.empty())
+      if (arguments.before_after.empty()) {
         result.mesh = IndexedMesh();
-      reread = detect_as_reread(out);
+        reread = detect_as_reread(out);
+      } else {  // the picture shows the file as written: the re-read soup and its defects
+        written_soup = read_soup(out);
+        reread = detect_defects(written_soup);
+      }
     }
     if (!arguments.report.empty()) {
       ReportJsonOptions json;
@@ -173,8 +199,8 @@ int run_repair(RepairArguments& arguments) {
       before.soup = &soup;
       before.report = &result.report.before;
       before.options.title = "before: " + file_name_of(in);
-      after.soup = &result.mesh.soup;
-      after.report = &result.report.after;
+      after.soup = reread ? &written_soup : &result.mesh.soup;
+      after.report = reread ? &*reread : &result.report.after;
       after.options.title = "after: " + file_name_of(out);
       after.frame_soup = &soup;
       after.frame_report = &result.report.before;
@@ -194,6 +220,8 @@ int run_repair(RepairArguments& arguments) {
 
   std::ostream& summary = report_to_stdout ? std::cerr : std::cout;
   summary << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
+  if (arguments.print)
+    summary << print_note << print_summary(result.report);
   if (crossings)
     summary << "self-intersections of the result:\n" << to_text(*crossings);
   if (written.polygons_fanned != 0) {
@@ -213,7 +241,8 @@ int run_repair(RepairArguments& arguments) {
                 << " split vertex copies again and re-creates "
                 << counted(reread->singular_edges.size(), "singular edge") << " and "
                 << counted(reread->num_singular_vertices(), "singular vertex")
-                << ". Use --separate auto, or write 3MF, PLY, OBJ or OFF.\n";
+                << ". Leave out --separate (the default moves them apart), or write 3MF, PLY, "
+                   "OBJ or OFF.\n";
     }
   }
   return kOk;
@@ -272,15 +301,24 @@ void add_repair_command(CLI::App& app, int& exit_code) {
                    "coordinate; 0 = off")
       ->capture_default_str()
       ->check(distance_or_auto());
-  command
-      ->add_option("--separate", arguments->separate,
-                   "EPS|auto: move each split vertex copy EPS (model units) into its own fan, so "
-                   "the repair survives STL readers that weld by position; auto = the smallest "
-                   "EPS float32 keeps at the model's coordinates; an STL output is read back and "
-                   "what a reader gets is reported; 0 = off")
-      ->capture_default_str()
-      ->check(distance_or_auto());
+  CLI::Option* separate =
+      command
+          ->add_option("--separate", arguments->separate,
+                       "EPS|auto: move each split vertex copy EPS (model units) into its own fan, "
+                       "so the repair survives STL readers that weld by position; auto = for STL "
+                       "output, the smallest EPS float32 and a re-read's weld keep apart, reported "
+                       "with its size (other formats keep shared vertices: nothing moves); 0 = "
+                       "positions exact (an STL reader then welds the copies again); an STL output "
+                       "is read back and what a reader gets is reported")
+          ->capture_default_str()
+          ->check(distance_or_auto());
   add_fill_holes_option(*command, arguments->fill_holes);
+  command->add_flag(
+      "--print", arguments->print,
+      "the slicer route: gap closing as wide as PrusaSlicer's load-time repair (1e-4 x the "
+      "bounding box diagonal, unless --weld), duplicate faces removed, holes of up to 32 edges "
+      "filled (unless --fill-holes), OUT written as 3MF; the summary ends with what is still "
+      "open and why");
   command->add_flag("--self-intersections", arguments->self_intersections,
                     "also find the faces of the result that cross or overlap each other (as "
                     "`check --self-intersections`; repair does not resolve them): in the summary "
@@ -292,7 +330,12 @@ void add_repair_command(CLI::App& app, int& exit_code) {
   command->add_flag("--progress", arguments->progress,
                     "show the stage and a progress bar on stderr even when it is not a terminal "
                     "(on a terminal it shows anyway once the work takes over a second)");
-  command->callback([arguments, &exit_code] { exit_code = run_repair(*arguments); });
+  command->callback([arguments, separate, command, &exit_code] {
+    arguments->separate_given = separate->count() > 0;
+    arguments->weld_given = command->count("--weld") > 0;
+    arguments->fill_holes_given = command->count("--fill-holes") > 0;
+    exit_code = run_repair(*arguments);
+  });
 }
 
 }  // namespace meshbridge::cli

@@ -340,6 +340,7 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
   out.counts.push_back(count("holes.holes_filled", r.holes.holes_filled));
   out.counts.push_back(count("holes.faces_added", r.holes.faces_added));
   out.counts.push_back(count("holes.holes_left", r.holes.holes_left));
+  out.counts.push_back(count("holes.patches_refused", r.holes.patches_refused));
   if (out.reread) {
     const DefectReport& again = *out.reread;
     out.counts.push_back(count("reread.singular_edges", again.singular_edges.size()));

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/batch_warnings.h"
 
+#include "meshbridge/counted.h"
+
+#include <string>
+
 namespace meshbridge {
 
 namespace {
@@ -28,6 +32,17 @@ std::string batch_warning_lines(const FileJobResult& result, const FileJob& job)
   std::string lines = result.reading.empty() ? "" : result.reading + "\n";
   for (const std::string& what : result.written.left_out)
     lines += "output " + job.output_name + ": " + what + "\n";
+  if (result.reread) {
+    const std::size_t edges = result.reread->singular_edges.size();
+    const std::size_t vertices = result.reread->num_singular_vertices();
+    if (edges + vertices > 0) {
+      lines += "output " + job.output_name +
+               ": STL has no shared vertices; reading it welds the split vertex copies again "
+               "and re-creates " +
+               counted(edges, "singular edge") + " and " + counted(vertices, "singular vertex") +
+               " (positions were kept exact)\n";
+    }
+  }
   return lines;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/file_job.h"
+#include "meshbridge/stl_round_trip.h"
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
@@ -262,14 +263,20 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
                       nullptr, &info);
       }
     }
+    const bool stl = lower(fs::path(job.output).extension().string()) == ".stl";
+    StlSeparation separated;
+    if (stl && options.separate_stl_copies && repaired.report.vertices_split > 0)
+      separated = separate_copies_for_stl(repaired.mesh);
     {
       const std::lock_guard<std::mutex> guard(openmesh_io_lock());
       write_mesh(job.output, repaired.mesh, &attributes);  // maps them through the origins
     }
     result.written = describe_written(job.output, repaired.mesh.soup, attributes,
                                       repaired.report.gaps.vertices_welded);
+    result.written.copies_moved = separated.vertices_moved;
+    result.written.separation = separated.distance;
     result.report = std::move(repaired.report);
-    if (lower(fs::path(job.output).extension().string()) == ".stl") {
+    if (stl) {
       // STL keeps no shared vertices: report the file as a reader will get it back.
       Soup again;
       {

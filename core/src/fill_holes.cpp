@@ -11,10 +11,15 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/version.h>
 #endif
 
+#include <algorithm>
+#include <cmath>
 #include <iterator>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -130,6 +135,59 @@ std::vector<Face> triangulate(HalfedgeMesh& mesh, Halfedge border) {
   return patch;
 }
 
+Kernel::Vector_3 face_normal(const HalfedgeMesh& mesh, Face f) {
+  const Halfedge h = mesh.halfedge(f);
+  const Kernel::Point_3& a = mesh.point(mesh.source(h));
+  const Kernel::Point_3& b = mesh.point(mesh.target(h));
+  const Kernel::Point_3& c = mesh.point(mesh.target(mesh.next(h)));
+  return CGAL::cross_product(b - a, c - a);
+}
+
+// Why a patch CGAL made for a loop must not stay ("" when it may): a triangle of no area, a
+// triangle with the corners of the face across one of its edges (the back of a sheet: the
+// outline of one triangle filled), or a triangle that folds back onto the face across its edge,
+// lying on it (dihedral angle under kFoldDegrees: the outline of a flat sheet filled, a second
+// layer behind it).
+std::string refused_patch(const HalfedgeMesh& mesh, const std::vector<Face>& patch) {
+  constexpr double kFoldDegrees = 1.0;
+  const double fold_cos = std::cos(kFoldDegrees * 3.14159265358979323846 / 180.0);
+  std::set<std::size_t> in_patch;
+  for (Face f : patch)
+    in_patch.insert(f.idx());
+  for (Face f : patch) {
+    const Kernel::Vector_3 n = face_normal(mesh, f);
+    double longest = 0;
+    for (Halfedge h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+      longest = std::max(
+          longest, CGAL::squared_distance(mesh.point(mesh.source(h)), mesh.point(mesh.target(h))));
+    if (!(std::sqrt(n.squared_length()) > 1e-12 * longest))
+      return "a triangle of no area";
+    for (Halfedge h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const Halfedge across = mesh.opposite(h);
+      const Face g = mesh.face(across);
+      if (g == HalfedgeMesh::null_face() || in_patch.count(g.idx()) > 0)
+        continue;
+      const auto apex = mesh.target(mesh.next(h));        // the patch triangle's third corner
+      const auto other = mesh.target(mesh.next(across));  // the face's next corner after h
+      if (mesh.degree(g) == 3 && apex == other)
+        return "a triangle over an existing face (the back of a sheet)";
+      // The dihedral angle at h: the directions from the edge to the two third corners.
+      const Kernel::Point_3& u = mesh.point(mesh.source(h));
+      const Kernel::Vector_3 e = mesh.point(mesh.target(h)) - u;
+      const auto across_edge = [&](const Kernel::Point_3& q) {
+        const Kernel::Vector_3 d = q - u;
+        return d - e * ((d * e) / e.squared_length());
+      };
+      const Kernel::Vector_3 dp = across_edge(mesh.point(apex));
+      const Kernel::Vector_3 dq = across_edge(mesh.point(other));
+      const double lengths = std::sqrt(dp.squared_length() * dq.squared_length());
+      if (lengths > 0 && (dp * dq) > fold_cos * lengths)
+        return "a triangle folded back onto the surface (the outline of an open sheet)";
+    }
+  }
+  return "";
+}
+
 #endif  // MESHBRIDGE_WITH_CGAL
 
 }  // namespace
@@ -171,6 +229,13 @@ FillHolesReport fill_holes(IndexedMesh& mesh, const FillHolesOptions& options) {
     const std::vector<Face> patch = triangulate(halfedges, loop.border);
     if (patch.empty()) {  // CGAL found no patch; it left the mesh as it was
       ++report.holes_left;
+      continue;
+    }
+    if (!refused_patch(halfedges, patch).empty()) {  // taken out again: the loop stays open
+      for (Face f : patch)
+        CGAL::Euler::remove_face(halfedges.halfedge(f), halfedges);
+      ++report.holes_left;
+      ++report.patches_refused;
       continue;
     }
     ++report.holes_filled;

@@ -442,7 +442,12 @@ std::string to_text(const RepairReport& r) {
   const FillHolesReport& h = r.holes;
   if (h.max_edges > 0) {
     out << "holes (up to " << h.max_edges << " edges): " << h.holes_filled << " filled with "
-        << counted(h.faces_added, "new triangle") << ", " << h.holes_left << " left open\n";
+        << counted(h.faces_added, "new triangle") << ", " << h.holes_left << " left open";
+    if (h.patches_refused > 0) {
+      out << " (" << h.patches_refused << " of them no hole: a patch would lie on the surface, "
+          << "as on the outline of an open sheet)";
+    }
+    out << "\n";
   } else {
     out << "holes: not filled (off)\n";
   }

@@ -42,7 +42,9 @@ void add_written(Json& out, const WrittenOutput* written) {
     return;
   out["written"] = Json{{"triangles", written->triangles},
                         {"polygons_fanned", written->polygons_fanned},
-                        {"left_out", written->left_out}};
+                        {"left_out", written->left_out},
+                        {"copies_moved", written->copies_moved},
+                        {"separation", written->separation}};
 }
 
 Json face_pair_list(const std::vector<FacePair>& pairs) {
@@ -129,7 +131,8 @@ Json holes_json(const FillHolesReport& h) {
   return Json{{"max_edges", h.max_edges},
               {"holes_filled", h.holes_filled},
               {"faces_added", h.faces_added},
-              {"holes_left", h.holes_left}};
+              {"holes_left", h.holes_left},
+              {"patches_refused", h.patches_refused}};
 }
 
 void add_repair(Json& out, const RepairReport& r, bool elements, const DefectReport* reread) {

@@ -170,17 +170,28 @@ def read(path: Union[str, "os.PathLike[str]"]) -> Soup:
     return soup
 
 
-def write(path: Union[str, "os.PathLike[str]"], mesh: Any, faces: Optional[Faces] = None) -> None:
+def write(
+    path: Union[str, "os.PathLike[str]"],
+    mesh: Any,
+    faces: Optional[Faces] = None,
+    *,
+    separate: bool = True,
+) -> Dict[str, Any]:
     """Writes a manifold mesh to OBJ, OFF, PLY, STL or 3MF (chosen by the extension).
 
     ``mesh`` is a :class:`Soup`, a :class:`RepairResult`, or vertices with ``faces``: positions
     and polygons only (no colours or groups: :func:`read` warns of what a file held besides, in
     ``soup.not_held``; :func:`meshbridge.batch.run_batch` carries a file's own). The file is written under a temporary name and renamed, so on error the previous file
     is untouched.
-    STL and 3MF get triangles. STL cannot keep split vertices (every reader welds them again):
-    when reading the written STL back re-creates singular edges or vertices, a
-    :class:`UserWarning` says how many (as ``meshbridge repair`` warns); write 3MF, PLY, OBJ or
-    OFF to keep the repair.
+    STL and 3MF get triangles. STL stores no shared vertices, and every reader welds equal
+    positions: for a :class:`RepairResult` written as STL with ``separate`` (default), the copies
+    of each split vertex are first moved apart by the smallest distance a reader's weld by float32
+    position keeps apart (as ``meshbridge repair`` does); ``separate=False`` keeps positions
+    exact. When reading the written STL back re-creates singular edges or vertices, a
+    :class:`UserWarning` says how many; write 3MF, PLY, OBJ or OFF to keep the repair exactly.
+    Returns ``{"reread_singular_edges", "reread_singular_vertices", "copies_moved",
+    "separation"}`` (STL only; zeros for the other formats): the file as an STL reader gets it
+    back, and the copies moved with their distance in model units.
 
     Any soup is written as it is (a non-manifold one too: repair it first to write a manifold
     mesh). Raises :class:`InvalidMeshError` (an index out of range, a face of fewer than 3
@@ -189,7 +200,8 @@ def write(path: Union[str, "os.PathLike[str]"], mesh: Any, faces: Optional[Faces
     naming the file; nothing is written then.
     """
     target = _path(path)
-    edges, vertices = _core.write(target, _soup(mesh, faces))
+    origins = mesh.vertex_origin if separate and isinstance(mesh, RepairResult) else None
+    edges, vertices, moved, distance = _core.write(target, _soup(mesh, faces), origins)
     if edges or vertices:
         warnings.warn(
             f"{target}: STL has no shared vertices; reading it welds split vertex copies again "
@@ -199,6 +211,8 @@ def write(path: Union[str, "os.PathLike[str]"], mesh: Any, faces: Optional[Faces
             UserWarning,
             stacklevel=2,
         )
+    return {"reread_singular_edges": edges, "reread_singular_vertices": vertices,
+            "copies_moved": moved, "separation": distance}
 
 
 def check(

@@ -77,7 +77,9 @@ class Soup:
         phrase per kind; empty when nothing or built from arrays."""
 
 def read(path: str) -> Soup: ...
-def write(path: str, soup: Soup) -> Tuple[int, int]: ...
+def write(
+    path: str, soup: Soup, vertex_origin: Optional[npt.ArrayLike] = None
+) -> Tuple[int, int, int, float]: ...
 def check(soup: Soup, elements: bool = False, self_intersections: bool = False) -> str: ...
 def repair(
     soup: Soup, options: RepairOptions, elements: bool = False
@@ -95,6 +97,7 @@ class FileJobOptions:
     format: str
     resume: bool
     elements: bool
+    separate_stl_copies: bool
     def __init__(self) -> None: ...
 
 def plan_batch(

@@ -107,6 +107,7 @@ def _job_options(options: Dict[str, Any]) -> "_core.FileJobOptions":
     native = _core.FileJobOptions()
     native.format = options.get("format", "")
     native.elements = bool(options.get("elements", False))
+    native.separate_stl_copies = bool(options.get("separate_stl_copies", True))
     native.repair = _repair_options(options.get("repair", {}))
     return native
 
@@ -157,6 +158,7 @@ def run_batch(
     repair: Optional[Dict[str, Any]] = None,
     in_flight: Optional[int] = None,
     in_place: bool = False,
+    separate_stl_copies: bool = True,
     progress: Optional[Callable[[int, int, str, str], None]] = None,
     warnings: Optional[Callable[[str, str], None]] = None,
 ) -> BatchSummary:
@@ -168,6 +170,8 @@ def run_batch(
     work left and closed at the end.
     ``log_path`` (default ``out_dir/.meshbridge-batch.jsonl``) makes the run resumable.
     ``in_place``: as ``meshbridge batch --in-place`` (OUTDIR may be INDIR or inside it).
+    ``separate_stl_copies``: STL outputs move split vertex copies apart so that the file re-reads
+    as repaired (default True; False keeps positions exact, as ``meshbridge batch --separate 0``).
     ``repair``: options of :func:`meshbridge.repair`. ``in_flight``: tasks submitted at once
     (default 4 per worker thread). ``progress(done, total, name, status)`` is called per file,
     ``warnings(name, lines)`` per file this run finished with warnings (lines as the CLI prints
@@ -176,7 +180,8 @@ def run_batch(
     """
     from distributed import as_completed
 
-    options = {"format": format, "elements": elements, "repair": dict(repair or {})}
+    options = {"format": format, "elements": elements, "repair": dict(repair or {}),
+               "separate_stl_copies": separate_stl_copies}
     native = _job_options(options)
     jobs, unreadable = _core.plan_batch(in_dir, out_dir, native, in_place)
     log_path = log_path or os.path.join(out_dir, LOG_NAME)
@@ -358,6 +363,9 @@ def _parse(argv: Optional[List[str]]) -> argparse.Namespace:
                         default=0, type=_whole, metavar="MAX_EDGES",
                         help="close holes of at most MAX_EDGES edges after the repair (bare: "
                         f"{_core.DEFAULT_FILL_HOLES_MAX_EDGES}; default off)")
+    parser.add_argument("--separate", choices=["auto", "0"], default="auto",
+                        help="STL outputs: auto moves split vertex copies apart so the file "
+                        "re-reads as repaired; 0 keeps positions exact (default auto)")
     parser.add_argument("--pairing", choices=["geometric", "combinatorial"], default="geometric",
                         type=str.lower, help="as in `meshbridge repair` (default geometric)")
     parser.add_argument("--in-place", action="store_true",
@@ -401,6 +409,7 @@ def main(argv: Optional[List[str]] = None) -> int:
             elements=arguments.elements,
             in_flight=arguments.in_flight,
             in_place=arguments.in_place,
+            separate_stl_copies=arguments.separate == "auto",
             repair={"pairing": arguments.pairing, "weld": arguments.weld,
                     "fill_holes": arguments.fill_holes},
             progress=progress,

@@ -26,7 +26,9 @@
 #include <cstring>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
+#include <tuple>
 
 namespace py = pybind11;
 using namespace meshbridge;
@@ -271,27 +273,52 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "write",
-      [](const std::string& path, const PySoup& soup) {
-        std::pair<std::size_t, std::size_t> reread{0, 0};
+      [](const std::string& path, const PySoup& soup, py::object vertex_origin) {
+        std::tuple<std::size_t, std::size_t, std::size_t, double> written{0, 0, 0, 0.0};
+        std::optional<std::vector<Index>> origins;
+        if (!vertex_origin.is_none()) {  // -1 (an added vertex) becomes kNoIndex
+          const auto array = py::array_t<std::int64_t, py::array::forcecast>::ensure(vertex_origin);
+          if (!array || array.ndim() != 1)
+            throw std::invalid_argument("write: vertex_origin must be a 1-D array of integers");
+          origins.emplace(static_cast<std::size_t>(array.size()));
+          const auto values = array.unchecked<1>();
+          for (py::ssize_t i = 0; i < array.size(); ++i)
+            (*origins)[i] = values(i) < 0 ? kNoIndex : static_cast<Index>(values(i));
+        }
         {
           py::gil_scoped_release release;
           IndexedMesh mesh;
           mesh.soup = soup.soup;
+          const bool stl = is_stl_file(path);
+          if (stl && origins) {  // a repair result: its split vertex copies moved apart
+            if (origins->size() != mesh.soup.num_vertices()) {
+              throw std::invalid_argument("write: vertex_origin has " +
+                                          std::to_string(origins->size()) + " entries for " +
+                                          std::to_string(mesh.soup.num_vertices()) + " vertices");
+            }
+            mesh.vertex_origin = std::move(*origins);
+            const StlSeparation separated = separate_copies_for_stl(mesh);
+            std::get<2>(written) = separated.vertices_moved;
+            std::get<3>(written) = separated.distance;
+          }
           const std::lock_guard<std::mutex> lock(io_lock());
           write_mesh(path, mesh);
-          if (is_stl_file(path)) {
+          if (stl) {
             // What every STL reader gets back: positions welded, split copies merged again.
             const DefectReport again = detect_defects(stl_round_trip(mesh.soup));
-            reread = {again.singular_edges.size(), again.num_singular_vertices()};
+            std::get<0>(written) = again.singular_edges.size();
+            std::get<1>(written) = again.num_singular_vertices();
           }
         }
-        return reread;
+        return written;
       },
-      py::arg("path"), py::arg("soup"),
+      py::arg("path"), py::arg("soup"), py::arg("vertex_origin") = py::none(),
       "Writes `soup` (positions and polygons only: a Soup holds no colours, groups or texture "
       "coordinates, so a file read and written back this way loses them; meshbridge.batch and the "
-      "CLI carry them); returns (singular edges, singular vertices) of the file as an STL "
-      "reader gets it back ((0, 0) for other formats).");
+      "CLI carry them). For STL with `vertex_origin` (a repair's, one input vertex per vertex, "
+      "-1 for added ones) the copies of split vertices are moved apart first "
+      "(separate_copies_for_stl). Returns (singular edges, singular vertices) of the file as an "
+      "STL reader gets it back ((0, 0) for other formats), vertices moved and their distance.");
 
   m.def(
       "check",

@@ -21,7 +21,8 @@ void bind_file_job(py::module_& m) {
       .def_readwrite("repair", &FileJobOptions::repair)
       .def_readwrite("format", &FileJobOptions::format)
       .def_readwrite("resume", &FileJobOptions::resume)
-      .def_readwrite("elements", &FileJobOptions::elements);
+      .def_readwrite("elements", &FileJobOptions::elements)
+      .def_readwrite("separate_stl_copies", &FileJobOptions::separate_stl_copies);
 
   // (jobs, unreadable): jobs as (input, output, name, output_name) sorted by name, unreadable
   // entries as (name, reason). std::invalid_argument (bad folders, format) becomes ValueError.

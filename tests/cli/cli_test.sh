@@ -273,10 +273,25 @@ repair_formats)
   done
   ;;
 stl_warning)
-  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/c.stl"
+  # STL keeps the repair by default: the split copies move apart, by a size the summary names.
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/d.stl" --report "$work/d.json"
+  expect_in "$work/out" "separated the 2 split vertex copies for STL: moved 4 vertices by 9.53674e-07"
+  grep -q "rounded to 32-bit floats" "$work/err" && fail "moved copies not on float32 positions: $(cat "$work/err")"
+  expect_in "$work/out" "as re-read from $work/d.stl: singular edges 0, singular vertices 0, watertight yes"
+  grep -q "STL has no shared vertices" "$work/err" && fail "a warning for an STL that keeps the repair"
+  [ "$(json_field "$work/d.json" written.copies_moved)" = 4 ] || fail "written.copies_moved"
+  [ "$(json_field "$work/d.json" written.separation)" = 9.5367431640625e-07 ] || fail "written.separation"
+  expect_exit 0 "$mb" check "$work/d.stl" --json
+  [ "$(json_field "$work/out" singular_edges) $(json_field "$work/out" boundary_edges) $(json_field "$work/out" components)" = "0 0 2" ] ||
+    fail "default STL re-read: $(cat "$work/out")"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/c.stl" --separate 0
   expect_in "$work/err" "STL has no shared vertices"
   expect_exit 1 "$mb" check "$work/c.stl"   # welded back: the singular edge returns
   expect_in "$work/out" "singular edges: 1"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/c.obj" --separate auto
+  expect_in "$work/out" "separate: not needed for $work/c.obj (the format keeps shared vertices)"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/c2.obj"
+  grep -q "separate" "$work/out" && fail "a separate line for OBJ without --separate"
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/s.stl" --separate 1e-4
   expect_in "$work/out" "separated the 2 split vertex copies: moved 4 vertices"
   expect_in "$work/out" "as re-read from $work/s.stl: singular edges 0, singular vertices 0, watertight yes"
@@ -294,8 +309,9 @@ stl_warning)
   expect_exit 2 "$mb" repair "$models/twocubes.obj" "$work/t.stl" --separate 1e-9
   expect_in "$work/err" "the smallest EPS that works is"
   # The JSON report says what the STL file re-reads as, next to the repair's own counts.
-  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/r.stl" --report "$work/r.json"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/r.stl" --separate 0 --report "$work/r.json"
   [ "$(json_field "$work/r.json" after.singular_edges)" = 0 ] || fail "after in memory"
+  [ "$(json_field "$work/r.json" written.copies_moved)" = 0 ] || fail "--separate 0 moved copies"
   [ "$(json_field "$work/r.json" reread.singular_edges)" = 1 ] || fail "reread singular edges"
   [ "$(json_field "$work/r.json" reread.singular_vertices)" = 2 ] || fail "reread singular vertices"
   [ "$(json_field "$work/r.json" gaps.vertices_welded)" = 0 ] || fail "gaps in the report"
@@ -308,9 +324,16 @@ stl_warning)
   mkdir -p "$work/in"
   cp "$models/twocubes.obj" "$work/in/"
   expect_exit 0 "$mb" batch "$work/in" "$work/bs" --format stl
-  expect_in "$work/out" "| twocubes.obj | repaired | 24 | 1 | 2 | 24 | 1 | no |"
+  expect_in "$work/out" "| twocubes.obj | repaired | 24 | 1 | 2 | 24 | 2 | yes |"
+  expect_exit 0 "$mb" check "$work/bs/twocubes.stl"
   expect_exit 0 "$mb" batch "$work/in" "$work/bj" --format stl --json --quiet
-  [ "$(json_line_field "$work/out" 0 reread.singular_edges)" = 1 ] || fail "batch reread"
+  [ "$(json_line_field "$work/out" 0 reread.singular_edges)" = 0 ] || fail "batch reread"
+  [ "$(json_line_field "$work/out" 0 written.copies_moved)" = 4 ] || fail "batch copies_moved"
+  expect_exit 0 "$mb" batch "$work/in" "$work/b0" --format stl --separate 0
+  expect_in "$work/out" "| twocubes.obj | repaired | 24 | 1 | 2 | 24 | 1 | no |"
+  expect_in "$work/err" "re-creates 1 singular edge and 2 singular vertices (positions were kept exact)"
+  expect_exit 0 "$mb" batch "$work/in" "$work/b0j" --format stl --separate 0 --json --quiet
+  [ "$(json_line_field "$work/out" 0 reread.singular_edges)" = 1 ] || fail "batch reread, exact"
   expect_exit 0 "$mb" batch "$work/in" "$work/b3" --format 3mf --weld 0
   expect_in "$work/out" "| twocubes.obj | repaired | 24 | 1 | 2 | 24 | 2 | yes |"
   expect_exit 0 "$mb" check "$work/b3/twocubes.3mf"
@@ -710,7 +733,7 @@ arguments)
   expect_exit 0 "$mb" repair --help
   for option in --report --elements "--pairing TEXT:{geometric,combinatorial}=geometric" --no-orient \
     --no-stitch --cut-nonorientable --remove-duplicates --remove-degenerate --remove-isolated \
-    "--weld TEXT:NUMBER>=0|auto=auto" "--separate TEXT:NUMBER>=0|auto=0"; do
+    "--weld TEXT:NUMBER>=0|auto=auto" "--separate TEXT:NUMBER>=0|auto=auto"; do
     expect_in "$work/out" "$option"
   done
   expect_exit 0 "$mb" snapshot --help

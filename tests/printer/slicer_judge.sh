@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # A slicer as the judge: PrusaSlicer's `--info` (which runs admesh's repair on load) on every real
-# file, original next to MeshBridge's repaired 3MF. Asserts, per file: never more open edges after
-# than before; "manifold = yes" after whenever MeshBridge closed every boundary; volume within
-# 1e-6 relative of the original's where the slicer found the original closed with nothing fixed.
+# file, original next to the 3MF of MeshBridge's print preset (`repair --print`). Asserts, per
+# file: never more open edges after than before, and never manifold -> not manifold; "manifold =
+# yes" after whenever MeshBridge closed every boundary; volume within 1e-6 relative of the
+# original's where the slicer found the original closed with nothing fixed.
 # Prints the table (file, open edges before/after, parts, volume).
 # Usage: slicer_judge.sh MESHBRIDGE SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -11,8 +12,19 @@ command -v prusa-slicer >/dev/null || { echo "prusa-slicer is not installed (scr
 command -v jq >/dev/null || { echo "jq is not installed (scripts/install_deps.sh)"; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
 
+# Every printer file the repository ships (tests/data/realworld*), the shared real-world sets
+# beside the checkout when present (../shared/data/realworld*, each file once by name), and the
+# printer models Debian's prusa-slicer installs. STL, OBJ and 3MF: what PrusaSlicer reads.
 files=()
-for f in "$source_dir"/tests/data/realworld/*.{stl,STL,obj}; do [[ -e $f ]] && files+=("$f"); done
+declare -A seen=()
+for f in "$source_dir"/tests/data/realworld*/* "$source_dir"/../shared/data/realworld*/*; do
+  [[ -f $f ]] || continue
+  case "${f,,}" in *.stl | *.obj | *.3mf) ;; *) continue ;; esac
+  name=$(basename "$f")
+  [[ -n ${seen[$name]:-} ]] && continue
+  seen[$name]=1
+  files+=("$f")
+done
 while IFS=$'\t' read -r package path license; do
   [[ $package == package ]] && continue
   [[ -e $path ]] || { echo "missing $path: install the Debian package $package"; exit 1; }
@@ -36,13 +48,22 @@ declare -A zero_volume_before=([chair_model.obj]=1)
 failures=0
 printf '| file | open edges before | after | parts before | after | volume before | after | manifold after |\n'
 printf '|---|---:|---:|---:|---:|---:|---:|---|\n'
-total_before=0 total_after=0 manifold_now=0 n=0
+total_before=0 total_after=0 manifold_before=0 manifold_now=0 n=0 unreadable_before=0
 for f in "${files[@]}"; do
   name=$(basename "$f")
   out="$work/${name%.*}.3mf"
   report="$work/${name%.*}.json"
-  "$meshbridge" repair "$f" "$out" --report "$report" >/dev/null 2>&1 || { echo "FAIL $name: repair failed"; failures=$((failures + 1)); continue; }
+  "$meshbridge" repair "$f" "$out" --print --report "$report" >/dev/null 2>&1 || { echo "FAIL $name: repair failed"; failures=$((failures + 1)); continue; }
   before=$(info "$f") after=$(info "$out")
+  if [[ -z $(field "$before" number_of_parts) ]]; then
+    # PrusaSlicer cannot load the original (an OBJ polygon of more than 4 corners, say): the
+    # preset's 3MF must load, and there is nothing to compare it with.
+    printf '| %s | (slicer cannot load) | %s | | %s | | %s | %s |\n' "$name" "$(field "$after" open_edges)" \
+      "$(field "$after" number_of_parts)" "$(field "$after" volume)" "$(field "$after" manifold)"
+    [[ -n $(field "$after" number_of_parts) ]] || { echo "FAIL $name: the slicer cannot load the preset's 3MF either"; failures=$((failures + 1)); }
+    unreadable_before=$((unreadable_before + 1))
+    continue
+  fi
   ob=$(field "$before" open_edges); ob=${ob:-0}
   oa=$(field "$after" open_edges); oa=${oa:-0}
   fixed_before=$(field "$before" edges_fixed); fixed_before=${fixed_before:-0}
@@ -53,7 +74,9 @@ for f in "${files[@]}"; do
   printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "$name" "$ob" "$oa" "$pb" "$pa" "$vb" "$va" "$ma"
   n=$((n + 1)) total_before=$((total_before + ob)) total_after=$((total_after + oa))
   [[ $ma == yes ]] && manifold_now=$((manifold_now + 1))
+  [[ $mb == yes ]] && manifold_before=$((manifold_before + 1))
   if ((oa > ob)); then echo "FAIL $name: $oa open edges after, $ob before"; failures=$((failures + 1)); fi
+  if [[ $mb == yes && $ma != yes ]]; then echo "FAIL $name: manifold before, $ma after"; failures=$((failures + 1)); fi
   if [[ $boundary_after == 0 && $ma != yes ]]; then echo "FAIL $name: closed by MeshBridge but the slicer says manifold = $ma"; failures=$((failures + 1)); fi
   if [[ -n ${zero_volume_before[$name]:-} ]]; then
     if [[ $vb != 0.000000 ]]; then echo "FAIL $name: volume $vb before, expected 0 (a sheet, see zero_volume_before)"; failures=$((failures + 1)); fi
@@ -63,5 +86,5 @@ for f in "${files[@]}"; do
     fi
   fi
 done
-echo "$n files; open edges $total_before -> $total_after; $manifold_now manifold for the slicer after repair"
+echo "$n files (and $unreadable_before the slicer cannot load, whose 3MF it loads); open edges $total_before -> $total_after; manifold for the slicer: $manifold_before before, $manifold_now after the print preset"
 ((failures == 0))

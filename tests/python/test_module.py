@@ -209,10 +209,24 @@ def test_write_refuses_what_it_cannot_write_and_leaves_no_file(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == []
 
 
+def test_stl_keeps_the_repair_by_moving_split_copies_apart(tmp_path):
+    result = meshbridge.repair(meshbridge.read(MODELS / "twocubes.obj"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the default moves the copies: nothing to warn about
+        written = meshbridge.write(tmp_path / "moved.stl", result)
+    assert written["reread_singular_edges"] == 0 and written["reread_singular_vertices"] == 0
+    assert written["copies_moved"] == 4  # the two vertices of the shared edge, two copies each
+    assert 0 < written["separation"] < 1e-5  # a few float32 steps at the cubes' size (2)
+    again = meshbridge.check(meshbridge.read(tmp_path / "moved.stl"))
+    assert (again["singular_edges"], again["singular_vertices"], again["boundary_edges"]) == (0, 0, 0)
+    assert again["components"] == 2
+
+
 def test_stl_that_welds_the_repair_back_warns_with_counts(tmp_path):
     result = meshbridge.repair(meshbridge.read(MODELS / "twocubes.obj"))
     with pytest.warns(UserWarning, match=r"re-creates 1 singular edge and 2 singular vertices"):
-        meshbridge.write(tmp_path / "out.stl", result)
+        written = meshbridge.write(tmp_path / "out.stl", result, separate=False)
+    assert written["copies_moved"] == 0
     assert meshbridge.check(meshbridge.read(tmp_path / "out.stl"))["singular_edges"] == 1
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # a clean STL and other formats: no warning
@@ -405,7 +419,7 @@ def test_fill_holes_closes_the_cube_and_marks_the_new_triangles():
         result = meshbridge.repair(vertices, quads, fill_holes=value)
         holes = result.report["holes"]
         assert holes == {"max_edges": 32 if value is True else int(value), "holes_filled": 1,
-                         "faces_added": 2, "holes_left": 0}
+                         "faces_added": 2, "holes_left": 0, "patches_refused": 0}
         assert result.report["after"]["watertight"] and result.report["faces_out"] == 7
         # Mixed arities: a list of polygons; the quads first, as given, then two triangles.
         assert [len(f) for f in result.faces] == [4, 4, 4, 4, 4, 3, 3]

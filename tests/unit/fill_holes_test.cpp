@@ -293,3 +293,120 @@ TEST(FillHoles, repair_to_openmesh_fills_too_and_never_takes_the_fast_path) {
         << "face " << f.idx();
   }
 }
+
+namespace {
+
+//! An n x n grid of unit squares in the plane z = 0 (quads, or each cut into two triangles).
+Soup flat_grid(int n, bool triangles) {
+  Soup soup;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      soup.add_vertex(Point(i, j, 0));
+  const auto at = [n](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const Index a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      if (triangles) {
+        soup.add_polygon({a, b, c});
+        soup.add_polygon({a, c, d});
+      } else {
+        soup.add_polygon({a, b, c, d});
+      }
+    }
+  }
+  return soup;
+}
+
+//! `soup` turned about an oblique axis, scaled and moved, optionally with every face reversed.
+Soup variant(Soup soup, double scale, const Point& offset, bool reversed) {
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  for (Point& p : soup.positions) {
+    const Point r(c * p[0] - s * p[1], s * c * p[0] + c * c * p[1] - s * p[2],
+                  s * s * p[0] + s * c * p[1] + c * p[2]);
+    p = r * scale + offset;
+  }
+  if (reversed) {
+    Soup flipped;
+    flipped.positions = soup.positions;
+    for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+      const PolygonView p = soup.polygon(f);
+      std::vector<Index> corners(p.begin(), p.end());
+      std::reverse(corners.begin(), corners.end());
+      flipped.add_polygon(corners);
+    }
+    return flipped;
+  }
+  return soup;
+}
+
+}  // namespace
+
+TEST(FillHoles, the_outline_of_an_open_sheet_is_no_hole) {
+  Soup triangle, quad;
+  for (const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0)}) {
+    triangle.add_vertex(p);
+    quad.add_vertex(p);
+  }
+  triangle.add_polygon({0, 1, 2});
+  quad.add_polygon({0, 1, 2, 3});
+  const std::vector<std::pair<const char*, Soup>> sheets = {{"triangle", triangle},
+                                                            {"quad", quad},
+                                                            {"4x4 quads", flat_grid(4, false)},
+                                                            {"4x4 triangles", flat_grid(4, true)}};
+  for (const auto& [name, sheet] : sheets) {
+    for (const bool reversed : {false, true}) {
+      for (const auto& [scale, offset] :
+           {std::pair{1.0, Point(0, 0, 0)}, std::pair{1e-3, Point(0, 0, 0)},
+            std::pair{250.0, Point(5e5, 5e6, 30)}}) {
+        const Soup soup = variant(sheet, scale, offset, reversed);
+        const RepairResult r = repair(soup, filling(kDefaultFillHolesMaxEdges));
+        const FillHolesReport& h = r.report.holes;
+        SCOPED_TRACE(std::string(name) + (reversed ? " reversed" : "") + " scale " +
+                     std::to_string(scale));
+        EXPECT_EQ(h.holes_filled, 0u);
+        EXPECT_EQ(h.faces_added, 0u);
+        EXPECT_EQ(h.holes_left, 1u);
+        EXPECT_EQ(h.patches_refused, 1u);
+        EXPECT_EQ(r.report.faces_out, soup.num_faces());
+        EXPECT_EQ(r.report.boundary_edges_after, r.report.boundary_edges_before);
+        EXPECT_FALSE(r.report.after.watertight);
+        expect_repair_invariants(soup, r);
+      }
+    }
+  }
+}
+
+TEST(FillHoles, a_soup_of_loose_triangles_gets_no_second_layer) {
+  Soup soup;  // 100 triangles, each with its own three vertices, none touching another
+  for (int k = 0; k < 100; ++k) {
+    const double x = 3.0 * (k % 10), y = 3.0 * (k / 10);
+    const Index a = soup.add_vertex(Point(x, y, 0)), b = soup.add_vertex(Point(x + 1, y, 0.5)),
+                c = soup.add_vertex(Point(x, y + 1, 0.25));
+    soup.add_polygon({a, b, c});
+  }
+  const RepairResult r = repair(soup, filling(kDefaultFillHolesMaxEdges));
+  EXPECT_EQ(r.report.holes.holes_filled, 0u);
+  EXPECT_EQ(r.report.holes.patches_refused, 100u);
+  EXPECT_EQ(r.report.faces_out, 100u);
+  EXPECT_FALSE(r.report.after.watertight);
+}
+
+TEST(FillHoles, real_holes_still_close_in_every_placement) {
+  for (const bool reversed : {false, true}) {
+    for (const auto& [scale, offset] :
+         {std::pair{1.0, Point(0, 0, 0)}, std::pair{1e-3, Point(0, 0, 0)},
+          std::pair{250.0, Point(5e5, 5e6, 30)}}) {
+      const Soup soup = variant(quad_cube({1}), scale, offset, reversed);
+      const RepairResult r = repair(soup, filling(kDefaultFillHolesMaxEdges));
+      EXPECT_EQ(r.report.holes.holes_filled, 1u) << scale << " " << reversed;
+      EXPECT_EQ(r.report.holes.patches_refused, 0u);
+      EXPECT_EQ(r.report.boundary_edges_after, 0u);
+      EXPECT_TRUE(r.report.after.watertight);
+      Soup at_origin = r.mesh.soup;  // the volume's terms without the offset's rounding
+      for (Point& p : at_origin.positions)
+        p -= offset;
+      const double volume = std::abs(total_signed_volume(at_origin));
+      EXPECT_NEAR(volume, scale * scale * scale, 1e-6 * scale * scale * scale);
+    }
+  }
+}

@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace meshbridge {
 namespace {
@@ -97,6 +99,72 @@ TEST(StlRoundTrip, nothing_split_needs_no_separation) {
   soup.add_vertex({0, 1, 0});
   soup.add_polygon({0, 1, 2});
   EXPECT_EQ(smallest_stl_separation(repair(soup).mesh), 0.0);
+}
+
+TEST(StlRoundTrip, separate_copies_for_stl_moves_each_copy_once_and_survives_the_reread) {
+  // Variants: the shared edge of two cubes, a pinch, three tetrahedra on one edge at 150 mm,
+  // and the same far from the origin (UTM-like) and tiny (micrometres).
+  std::vector<Soup> inputs = {models::two_cubes_sharing_edge(), models::bowtie(),
+                              three_tetrahedra_on_one_edge()};
+  for (const double scale : {1e-6, 1e3}) {
+    Soup moved = three_tetrahedra_on_one_edge();
+    for (Point& p : moved.positions)
+      p = p * scale + Point(scale > 1 ? 5e5 : 0, scale > 1 ? 5e6 : 0, 0);
+    inputs.push_back(moved);
+  }
+  for (const Soup& input : inputs) {
+    RepairResult r = repair(input);
+    ASSERT_GT(r.report.vertices_split, 0u);
+    const double expected = stl_separation_surviving_weld(r.mesh);
+    const std::vector<Point> before = r.mesh.soup.positions;
+    const StlSeparation done = separate_copies_for_stl(r.mesh);
+    EXPECT_TRUE(done.kept_reason.empty()) << done.kept_reason;
+    EXPECT_EQ(done.distance, expected);
+    std::size_t copies = 0;  // output vertices whose input vertex has two or more copies
+    for (std::size_t v = 0; v < r.mesh.vertex_origin.size(); ++v)
+      copies += std::count(r.mesh.vertex_origin.begin(), r.mesh.vertex_origin.end(),
+                           r.mesh.vertex_origin[v]) > 1;
+    EXPECT_EQ(done.vertices_moved, copies);
+    for (std::size_t v = 0; v < before.size(); ++v) {  // moved copies on float32 positions
+      const Point& p = r.mesh.soup.positions[v];
+      if (p[0] != before[v][0] || p[1] != before[v][1] || p[2] != before[v][2]) {
+        for (int a = 0; a < 3; ++a)
+          EXPECT_EQ(static_cast<double>(static_cast<float>(p[a])), p[a]);
+      }
+    }
+    const Soup reread = stl_round_trip(r.mesh.soup);
+    const DefectReport again = detect_defects(reread);
+    EXPECT_EQ(again.singular_edges.size() + again.num_singular_vertices(), 0u);
+    EXPECT_EQ(close_gaps(reread).report.vertices_welded, 0u);
+  }
+  // Nothing split: nothing moves.
+  RepairResult clean = repair(models::icosphere(1));
+  const Soup before = clean.mesh.soup;
+  const StlSeparation none = separate_copies_for_stl(clean.mesh);
+  EXPECT_EQ(none.vertices_moved, 0u);
+  EXPECT_EQ(none.distance, 0.0);
+  EXPECT_EQ(clean.mesh.soup.positions, before.positions);
+}
+
+TEST(StlRoundTrip, written_triangles_never_reuse_an_edge_as_a_diagonal) {
+  // A square quad 0-1-2-3 with a closed fin standing on its diagonal 1-3 (two triangles, one on
+  // each side): the ear at corner 0 would cut along 1-3 and give that edge four triangles.
+  for (const bool reversed : {false, true}) {
+    Soup soup;
+    for (const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0),
+                           Point(0.5, 0.5, 1), Point(0.5, 0.5, 2)})
+      soup.add_vertex(p);
+    if (reversed)
+      soup.add_polygon({3, 2, 1, 0});
+    else
+      soup.add_polygon({0, 1, 2, 3});
+    soup.add_polygon({1, 3, 4});
+    soup.add_polygon({3, 1, 5});
+    ASSERT_EQ(detect_defects(soup).singular_edges.size(), 0u);
+    const Soup triangles = stl_round_trip(soup);
+    EXPECT_EQ(triangles.num_faces(), 4u);
+    EXPECT_EQ(detect_defects(triangles).singular_edges.size(), 0u) << "reversed " << reversed;
+  }
 }
 
 }  // namespace

@@ -46,6 +46,10 @@ struct FileJobOptions {
   bool resume = false;
   //! Element lists in the record (default false: counts only), see ReportJsonOptions.
   bool elements = false;
+  //! STL output: move the copies of split vertices apart (separate_copies_for_stl()) so that
+  //! the file re-reads as repaired (default true; the record's `written.copies_moved` and
+  //! `written.separation`). false keeps positions exact: the re-read welds the copies again.
+  bool separate_stl_copies = true;
 };
 
 //! What plan_batch found below a folder.

@@ -30,8 +30,14 @@ struct FillHolesReport {
   std::size_t max_edges = 0;     //!< as requested (0: filling was off)
   std::size_t holes_filled = 0;  //!< boundary loops closed
   std::size_t faces_added = 0;   //!< new triangles
-  std::size_t holes_left =
-      0;  //!< boundary loops left open (longer than max_edges, or CGAL failed on them)
+  //! boundary loops left open: longer than max_edges, or with no valid patch (CGAL found none,
+  //! or patches_refused)
+  std::size_t holes_left = 0;
+  //! Of holes_left: loops whose patch was refused because it would not close a hole but lay a
+  //! second layer on the surface: a triangle of no area, one over an existing face, or one
+  //! folded back onto the face across its edge (under 1 degree: the outline of an open sheet,
+  //! a loose triangle, quad or grid, is no hole).
+  std::size_t patches_refused = 0;
 };
 
 //! Fills every boundary loop of `mesh` with at most `options.max_edges` edges with triangles
@@ -46,13 +52,14 @@ struct FillHolesReport {
 //! kNoIndex each: "no input element" (carry_attributes and the writers give such faces the
 //! default colour). `face_origin` thus stays non-decreasing. A loop that CGAL cannot triangulate
 //! without creating an edge the mesh already has is left open and counted in `holes_left`, as
-//! are the loops longer than `max_edges`. With `max_edges` 0 nothing is read or changed and the
-//! report is all zeros.
-//! \pre `mesh.soup` passes validate_soup(); every polygon has 3 or more distinct corners; every
-//! edge has at most two sides, in opposite directions; no vertex is singular (a pinch); the
-//! origin arrays have one entry per vertex, face and corner, or are all empty (then they stay
-//! empty). \throw std::invalid_argument naming the first element that breaks a precondition
-//! \throw std::runtime_error if `max_edges` > 0 in a build without CGAL (has_hole_filling())
+//! are the loops longer than `max_edges` and the loops whose patch would not close a hole but lie
+//! on the surface (FillHolesReport::patches_refused): the outline of an open sheet stays open. With
+//! `max_edges` 0 nothing is read or changed and the report is all zeros. \pre `mesh.soup` passes
+//! validate_soup(); every polygon has 3 or more distinct corners; every edge has at most two sides,
+//! in opposite directions; no vertex is singular (a pinch); the origin arrays have one entry per
+//! vertex, face and corner, or are all empty (then they stay empty). \throw std::invalid_argument
+//! naming the first element that breaks a precondition \throw std::runtime_error if `max_edges` > 0
+//! in a build without CGAL (has_hole_filling())
 FillHolesReport fill_holes(IndexedMesh& mesh, const FillHolesOptions& options = {});
 
 //! True if this build can fill holes (it was built with CGAL >= 5.5).

@@ -224,6 +224,10 @@ struct WrittenOutput {
   std::size_t polygons_fanned = 0;
   //! What the format left out of what was read, one phrase each (describe_unwritten()).
   std::vector<std::string> left_out;
+  //! STL: copies of split vertices moved apart before writing (separate_copies_for_stl()), so
+  //! that a reader's weld by position keeps the repair; 0 for the other formats or when off.
+  std::size_t copies_moved = 0;
+  double separation = 0;  //!< how far each of them moved (model units); 0 when none moved
 };
 
 //! What write_mesh(path, mesh with `soup`, &attributes) makes of it: the triangles and fanned

@@ -7,6 +7,7 @@
 #include "meshbridge/indexed_mesh.h"
 
 #include <cstddef>
+#include <string>
 
 namespace meshbridge {
 
@@ -38,5 +39,25 @@ double smallest_stl_separation(const IndexedMesh& mesh);
 //! nothing. Each step costs one STL round trip and detection of the mesh.
 //! \pre, \throw as smallest_stl_separation()
 double stl_separation_surviving_weld(const IndexedMesh& mesh, const CloseGapsOptions& weld = {});
+
+//! What separate_copies_for_stl() did to a repaired mesh before it is written as STL.
+struct StlSeparation {
+  std::size_t vertices_moved = 0;  //!< copies of split vertices moved (0: none to move, or kept)
+  double distance = 0;             //!< how far each of them moved, in model units (0: none)
+  //! Non-empty when the mesh has split vertices whose copies could not be moved apart (their
+  //! positions are kept, and an STL reader welds them again): why.
+  std::string kept_reason;
+};
+
+//! Prepares a repaired mesh for STL, which stores no shared vertices: moves every copy of a split
+//! vertex (separate_split_vertices()) by stl_separation_surviving_weld(mesh), the smallest move
+//! after which the file, read back by a reader that welds by exact float32 position (PrusaSlicer,
+//! admesh, Cura, MeshLab, MeshBridge), keeps the copies apart and a repair of it welds nothing.
+//! The moved copies are rounded to float32, as the file holds them. A mesh without split
+//! vertices is left as it is. When no distance works, nothing moves and
+//! `kept_reason` says why. What `repair`, `batch`, the Python module and the MeshLab plugin do
+//! for an STL output unless asked to keep positions exact.
+//! \pre `mesh.vertex_origin` has one entry per vertex 	hrow std::invalid_argument otherwise
+StlSeparation separate_copies_for_stl(IndexedMesh& mesh);
 
 }  // namespace meshbridge

@@ -72,20 +72,31 @@ void triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t) {
     }
     return true;
   };
+  // An ear whose diagonal is no edge of the mesh yet (when the mesh's edges are tracked).
+  const auto is_free_ear = [&](Index b) {
+    return is_ear(b) && t.taken.count(edge_key(p[t.previous[b]], p[t.next[b]])) == 0;
+  };
+  const auto find_ear = [&](Index start, std::size_t left, auto&& accept) {
+    Index b = start;
+    for (std::size_t tried = 0; tried < left; ++tried, b = t.next[b]) {
+      if (accept(b))
+        return b;
+    }
+    return kNoIndex;
+  };
   Index start = 0;
   std::size_t left = n;
   while (left > 3) {
-    Index b = start;
-    std::size_t tried = 0;
-    while (tried < left && !is_ear(b)) {
-      b = t.next[b];
-      ++tried;
-    }
-    if (tried == left) {  // no ear: not a simple polygon in this plane
+    Index b = t.taken.empty() ? kNoIndex : find_ear(start, left, is_free_ear);
+    if (b == kNoIndex)
+      b = find_ear(start, left, is_ear);
+    if (b == kNoIndex) {  // no ear: not a simple polygon in this plane
       fan(start, left);
       return;
     }
     const Index a = t.previous[b], c = t.next[b];
+    if (!t.taken.empty())
+      t.taken.insert(edge_key(p[a], p[c]));
     t.triangles.push_back({p[a], p[b], p[c]});
     t.next[a] = c;
     t.previous[c] = a;
@@ -96,6 +107,21 @@ void triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t) {
 }
 
 }  // namespace
+
+void avoid_existing_edges(const Soup& soup, Triangulation& t) {
+  t.taken.clear();
+  bool polygons = false;
+  for (std::size_t f = 0; f < soup.num_faces() && !polygons; ++f)
+    polygons = soup.arity(f) > 3;
+  if (!polygons)
+    return;
+  t.taken.reserve(soup.num_corners());
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const PolygonView p = soup.polygon(f);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      t.taken.insert(edge_key(p[i], p[(i + 1) % p.size()]));
+  }
+}
 
 void triangulate_polygon(const Soup& soup, std::size_t f, Triangulation& t) {
   t.triangles.clear();

@@ -8,6 +8,8 @@
 #include "meshbridge/soup.h"
 
 #include <array>
+#include <cstdint>
+#include <unordered_set>
 #include <vector>
 
 namespace meshbridge::detail {
@@ -18,12 +20,28 @@ struct Triangulation {
   std::vector<double> u, v;                     // (scratch) the corners in the polygon's plane
   std::vector<Index> previous, next;            // (scratch) the ring of corners left
   std::vector<Index> ring;                      // (scratch) one simple loop of a pinched polygon
+  //! Undirected edges (edge_key()) an ear's diagonal should not be: the sides of the soup's
+  //! polygons and the diagonals chosen so far (avoid_existing_edges()); empty: no such check.
+  std::unordered_set<std::uint64_t> taken;
 };
+
+//! The key of the undirected edge {a, b} in Triangulation::taken.
+inline std::uint64_t edge_key(Index a, Index b) {
+  return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
+}
+
+//! Makes the triangulate_polygon() calls on `soup` that follow choose no diagonal that is already
+//! an edge of the mesh (a side of a polygon, or a diagonal chosen for an earlier polygon) wherever
+//! the polygon has another ear: a diagonal that reused an edge would give that edge three or
+//! more triangles in the written file. Call it once per soup before triangulating its polygons
+//! in order; it does nothing (no memory, no time) when every polygon is a triangle.
+void avoid_existing_edges(const Soup& soup, Triangulation& t);
 
 //! The triangles of polygon `f` of `soup` (n >= 3 corners), each running the polygon's way
 //! round, into `t.triangles`: a triangle as it is; larger polygons by ear clipping (Meisters 1975;
 //! O(n^2)) in the plane of their Newell normal, cutting off at each step the first convex corner
-//! whose triangle holds no other corner of the ring: n - 2 triangles. A polygon of more than 3
+//! whose triangle holds no other corner of the ring and whose diagonal is not in `t.taken` (when
+//! every ear's diagonal is taken, the first ear): n - 2 triangles. A polygon of more than 3
 //! corners that repeats a vertex (pinched, "1 2 3 1 4 5") is first split into simple loops as
 //! repair splits it (simple_loops()), each cut on its own, so it gets the triangles repair would
 //! give it (polygon_triangle_count()); if no loop is left, it is fanned as it is (its degenerate

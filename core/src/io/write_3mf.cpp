@@ -52,6 +52,7 @@ void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
       vertices[v].m_fPosition[a] = static_cast<float>(soup.positions[v][a]);
   std::vector<NMR::MODELMESHTRIANGLE> triangles;
   Triangulation triangulation;
+  avoid_existing_edges(soup, triangulation);
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     triangulate_polygon(soup, f, triangulation);
     for (const auto& [a, b, c] : triangulation.triangles) {

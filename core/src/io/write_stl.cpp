@@ -37,6 +37,7 @@ std::uint64_t triangle_count(const Soup& soup) {
 template <class Triangle>
 void for_each_triangle(const Soup& soup, Triangle triangle) {
   Triangulation t;
+  avoid_existing_edges(soup, t);
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     if (soup.arity(f) == 3) {
       const PolygonView p = soup.polygon(f);

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "print_preset.h"
+
+#include "meshbridge/close_gaps.h"
+#include "meshbridge/counted.h"
+#include "meshbridge/fill_holes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace meshbridge::cli {
+
+double print_weld_tolerance(const Soup& soup) {
+  if (soup.positions.empty())
+    return 0;
+  Point lo = soup.positions.front(), hi = lo;
+  for (const Point& p : soup.positions) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], p[a]);
+      hi[a] = std::max(hi[a], p[a]);
+    }
+  }
+  return std::max(1e-4 * (hi - lo).norm(), default_weld_tolerance(soup, true));
+}
+
+void apply_print_preset(const Soup& soup, bool weld_given, bool fill_holes_given,
+                        RepairOptions& options) {
+  if (!weld_given)
+    options.close_gaps.tolerance = print_weld_tolerance(soup);
+  options.remove_duplicate_faces = true;
+  if (!fill_holes_given)
+    options.fill_holes.max_edges = kDefaultFillHolesMaxEdges;
+}
+
+RepairResult repair_for_print(const Soup& soup, RepairOptions options, std::string& note) {
+  note.clear();
+  RepairResult result = repair(soup, options);
+  const RepairReport& r = result.report;
+  if (!options.remove_duplicate_faces || r.duplicate_faces_removed == 0 ||
+      r.boundary_edges_after <= r.boundary_edges_before)
+    return result;
+  options.remove_duplicate_faces = false;
+  RepairResult kept = repair(soup, options);
+  if (kept.report.boundary_edges_after >= r.boundary_edges_after)
+    return result;
+  std::ostringstream text;
+  text << "print: kept the " << counted(r.duplicate_faces_removed, "duplicate face")
+       << ": removing them left " << counted(r.boundary_edges_after, "open edge") << " (keeping "
+       << "them: " << kept.report.boundary_edges_after
+       << "; faces written twice back to back, which a slicer reads as closed parts of no "
+          "volume)\n";
+  note = text.str();
+  return kept;
+}
+
+std::string print_summary(const RepairReport& r) {
+  std::ostringstream out;
+  const DefectReport& after = r.after;
+  out << "print: " << (after.watertight ? "watertight" : "not watertight") << " as written";
+  if (r.duplicate_faces_removed > 0)
+    out << "; removed " << counted(r.duplicate_faces_removed, "duplicate face");
+  if (r.faces_set_aside > 0)
+    out << "; " << counted(r.faces_set_aside, "face")
+        << " of no area (< 3 distinct corners) set aside";
+  out << "\n";
+  if (after.boundary_edges.empty())
+    return out.str();
+  out << "print: " << counted(after.boundary_edges.size(), "open edge") << " in "
+      << counted(after.num_boundary_loops, "boundary loop") << " left:";
+  const FillHolesReport& h = r.holes;
+  const std::size_t too_long = h.holes_left - h.patches_refused;
+  std::string separator = " ";
+  if (too_long > 0) {
+    out << separator << too_long << (too_long == 1 ? " hole is" : " holes are") << " longer than "
+        << h.max_edges << " edges (--fill-holes N fills longer ones)";
+    separator = "; ";
+  }
+  if (h.patches_refused > 0) {
+    out << separator << counted(h.patches_refused, "loop")
+        << " outlining an open sheet (no hole: a patch would lie on the surface)";
+    separator = "; ";
+  }
+  std::size_t odd = 0;
+  for (const SingularEdge& e : r.before.singular_edges)
+    odd += e.contenders % 2;
+  if (odd > 0) {
+    out << separator << counted(odd, "singular edge")
+        << " of the input with an odd number of faces (one face on each stays open)";
+    separator = "; ";
+  }
+  if (!r.gaps.refused_reason.empty()) {
+    out << separator << "gap closing refused (" << r.gaps.refused_reason << ")";
+    separator = "; ";
+  }
+  if (separator == " ")
+    out << " the input's own boundary (no hole of " << h.max_edges << " edges or fewer)";
+  out << "\n";
+  return out.str();
+}
+
+}  // namespace meshbridge::cli
