@@ -49,6 +49,7 @@ struct BatchArguments {
   std::string weld = "auto";      //!< as repair --weld
   std::string fill_holes;         //!< as repair --fill-holes ("" or "0" = off)
   std::string separate = "auto";  //!< STL output: "auto" moves split vertex copies apart, "0" not
+  AmbiguousNesting nested_shells = AmbiguousNesting::material;  //!< as repair --nested-shells
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
 };
 
@@ -191,6 +192,7 @@ int run_batch(const BatchArguments& arguments) {
   options.repair.fill_holes.max_edges = parse_fill_holes(arguments.fill_holes);
   options.elements = arguments.elements;
   options.separate_stl_copies = arguments.separate == "auto";
+  options.repair.nested_shells = arguments.nested_shells;
   options.repair.pairing = arguments.pairing == "combinatorial" ? PairingPolicy::combinatorial
                                                                 : PairingPolicy::geometric;
   BatchPlan plan;
@@ -428,6 +430,7 @@ void add_batch_command(CLI::App& app, int& exit_code) {
                    "exact, and the STL re-reads with the split vertices welded again")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "0"}));
+  add_nested_shells_option(*command, arguments->nested_shells);
   command->add_option("--pairing", arguments->pairing, "as in repair")
       ->capture_default_str()
       ->transform(CLI::IsMember({"geometric", "combinatorial"}, CLI::ignore_case));

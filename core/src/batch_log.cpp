@@ -53,7 +53,9 @@ std::string batch_options_text(const FileJobOptions& options) {
        << " remove_degenerate=" << r.remove_degenerate_faces
        << " remove_isolated=" << r.remove_isolated_vertices
        << " detect_before_after=" << r.detect_before_after
-       << " fill_holes=" << r.fill_holes.max_edges << " elements=" << options.elements
+       << " fill_holes=" << r.fill_holes.max_edges
+       << " nested_shells=" << (r.nested_shells == AmbiguousNesting::cavity ? "cavity" : "material")
+       << " elements=" << options.elements
        << " separate_stl_copies=" << options.separate_stl_copies;
   return text.str();
 }

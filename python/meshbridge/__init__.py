@@ -68,6 +68,7 @@ REPAIR_OPTIONS: Dict[str, Any] = {
     "fill_holes": 0,
     "weld": "auto",
     "close_t_junctions": True,
+    "nested_shells": "material",
 }
 
 Faces = Union[np.ndarray, Sequence[Sequence[int]]]
@@ -255,7 +256,9 @@ def repair(
     ``weld`` (gap closing before pairing: vertices closer than this distance, in the mesh's
     length unit, become one; ``'auto'``, the default, derives it from the mesh's size and
     coordinates; ``0`` = off; as ``--weld``), ``close_t_junctions`` (also split a boundary side
-    where another boundary vertex lies on it within that distance; default True).
+    where another boundary vertex lies on it within that distance; default True),
+    ``nested_shells`` ('material', the default, or 'cavity': what a closed shell inside another
+    and wound the same way becomes; as ``--nested-shells``).
     Faces added by hole filling come last, with ``face_origin`` and ``corner_origin`` -1.
 
     Returns a :class:`RepairResult`: ``(vertices (n', 3) float64, faces (m', k) int32 or
@@ -284,6 +287,11 @@ def _repair_options(options: Dict[str, Any]) -> "_core.RepairOptions":
                 value = getattr(_core.PairingPolicy, value.lower())
             elif not isinstance(value, _core.PairingPolicy):
                 raise ValueError(f"pairing must be 'geometric' or 'combinatorial', got {value!r}")
+        elif name == "nested_shells":
+            if not isinstance(value, str) or value.lower() not in ("material", "cavity"):
+                raise ValueError(f"nested_shells must be 'material' or 'cavity', got {value!r}")
+            setattr(native, name, getattr(_core.AmbiguousNesting, value.lower()))
+            continue
         elif name == "weld":
             if isinstance(value, str) and value.lower() == "auto":
                 value = _core.AUTO_WELD_TOLERANCE

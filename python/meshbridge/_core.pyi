@@ -20,6 +20,13 @@ class PairingPolicy:
     value: int
     def __init__(self, value: int) -> None: ...
 
+class AmbiguousNesting:
+    material: AmbiguousNesting
+    cavity: AmbiguousNesting
+    name: str
+    value: int
+    def __init__(self, value: int) -> None: ...
+
 class RepairOptions:
     pairing: PairingPolicy
     orient: bool
@@ -32,6 +39,7 @@ class RepairOptions:
     fill_holes: int  # FillHolesOptions::max_edges; 0 = off
     weld: float  # CloseGapsOptions::tolerance; AUTO_WELD_TOLERANCE = automatic, 0 = off
     close_t_junctions: bool  # CloseGapsOptions::close_t_junctions
+    nested_shells: AmbiguousNesting
     def __init__(self) -> None: ...
 
 DEFAULT_FILL_HOLES_MAX_EDGES: int

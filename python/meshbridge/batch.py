@@ -366,6 +366,8 @@ def _parse(argv: Optional[List[str]]) -> argparse.Namespace:
     parser.add_argument("--separate", choices=["auto", "0"], default="auto",
                         help="STL outputs: auto moves split vertex copies apart so the file "
                         "re-reads as repaired; 0 keeps positions exact (default auto)")
+    parser.add_argument("--nested-shells", choices=["material", "cavity"], default="material",
+                        type=str.lower, help="as in `meshbridge repair` (default material)")
     parser.add_argument("--pairing", choices=["geometric", "combinatorial"], default="geometric",
                         type=str.lower, help="as in `meshbridge repair` (default geometric)")
     parser.add_argument("--in-place", action="store_true",
@@ -411,7 +413,7 @@ def main(argv: Optional[List[str]] = None) -> int:
             in_place=arguments.in_place,
             separate_stl_copies=arguments.separate == "auto",
             repair={"pairing": arguments.pairing, "weld": arguments.weld,
-                    "fill_holes": arguments.fill_holes},
+                    "fill_holes": arguments.fill_holes, "nested_shells": arguments.nested_shells},
             progress=progress,
             warnings=warnings,
         )

@@ -109,6 +109,10 @@ PYBIND11_MODULE(_core, m) {
       .value("geometric", PairingPolicy::geometric)
       .value("combinatorial", PairingPolicy::combinatorial);
 
+  py::enum_<AmbiguousNesting>(m, "AmbiguousNesting")
+      .value("material", AmbiguousNesting::material)
+      .value("cavity", AmbiguousNesting::cavity);
+
   py::class_<RepairOptions>(m, "RepairOptions")
       .def(py::init<>())
       .def_readwrite("pairing", &RepairOptions::pairing)
@@ -119,6 +123,7 @@ PYBIND11_MODULE(_core, m) {
       .def_readwrite("remove_degenerate_faces", &RepairOptions::remove_degenerate_faces)
       .def_readwrite("remove_isolated_vertices", &RepairOptions::remove_isolated_vertices)
       .def_readwrite("detect_before_after", &RepairOptions::detect_before_after)
+      .def_readwrite("nested_shells", &RepairOptions::nested_shells)
       // FillHolesOptions::max_edges, flattened: 0 = off.
       .def_property(
           "fill_holes", [](const RepairOptions& o) { return o.fill_holes.max_edges; },

@@ -343,6 +343,34 @@ stl_warning)
   expect_exit 2 "$mb" check "$work/b3/twocubes.3mf" --weld -1
   expect_in "$work/err" "--weld: expects auto or a finite number >= 0, got '-1'"
   ;;
+nested_shells)
+  # A cube of side 4 with a cube of side 2 inside, both wound outward: an insert, or a cavity
+  # written the wrong way. Kept as written (material) by default; --nested-shells cavity turns
+  # the inner cube into a void, in check's prediction, repair and batch alike.
+  {
+    for c in 0 2; do  # the outer cube's corners at 0/4 (c = 0), the inner one's at 1/3 (c = 2)
+      lo=$((c / 2)) hi=$((4 - c / 2))
+      for z in $lo $hi; do for y in $lo $hi; do for x in $lo $hi; do echo "v $x $y $z"; done; done; done
+    done
+    for base in 0 8; do
+      awk -v b=$base 'BEGIN { split("1 3 4 2|5 6 8 7|1 2 6 5|3 7 8 4|1 5 7 3|2 4 8 6", q, "|");
+        for (i = 1; i <= 6; i++) { split(q[i], c, " "); printf "f %d %d %d %d\n", c[1]+b, c[2]+b, c[3]+b, c[4]+b } }'
+    done
+  } >"$work/nested.obj"
+  expect_exit 0 "$mb" repair "$work/nested.obj" "$work/n1.obj" --report "$work/n1.json"
+  [ "$(json_field "$work/n1.json" faces_flipped)" = 0 ] || fail "material: flipped $(json_field "$work/n1.json" faces_flipped)"
+  [ "$(json_field "$work/n1.json" ambiguous_nested_shells)" = 1 ] || fail "ambiguous shells not counted"
+  expect_exit 0 "$mb" repair "$work/nested.obj" "$work/n2.obj" --nested-shells cavity --report "$work/n2.json"
+  [ "$(json_field "$work/n2.json" faces_flipped)" = 6 ] || fail "cavity: flipped $(json_field "$work/n2.json" faces_flipped)"
+  expect_exit 1 "$mb" check "$work/nested.obj" --nested-shells cavity
+  mkdir -p "$work/nin" && cp "$work/nested.obj" "$work/nin/"
+  expect_exit 0 "$mb" batch "$work/nin" "$work/nout" --nested-shells cavity --json --quiet
+  [ "$(json_line_field "$work/out" 0 faces_flipped)" = 6 ] || fail "batch --nested-shells cavity"
+  cmp -s "$work/n2.obj" "$work/nout/nested.obj" || fail "batch and repair wrote different meshes"
+  expect_exit 0 "$mb" batch "$work/nin" "$work/nout2" --json --quiet
+  [ "$(json_line_field "$work/out" 0 faces_flipped)" = 0 ] || fail "batch default material"
+  expect_exit 2 "$mb" batch "$work/nin" "$work/nout3" --nested-shells hollow
+  ;;
 bad_input)
   : >"$work/empty.obj"
   expect_exit 2 "$mb" check "$work/empty.obj"

@@ -452,3 +452,21 @@ def test_check_self_intersections_counts():
     result = meshbridge.repair(vertices, faces)
     after = meshbridge.check(result.vertices, result.faces, self_intersections=True)
     assert after["self_intersections"]["face_pairs"] == 0
+
+
+def test_nested_shells_option_turns_an_insert_into_a_cavity_on_request():
+    # A cube of side 4 with a cube of side 2 inside, both wound outward.
+    corners = np.array([[x, y, z] for z in (0, 1) for y in (0, 1) for x in (0, 1)], float)
+    quads = np.array([[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2],
+                      [1, 3, 7, 5]])
+    vertices = np.vstack([corners * 4, corners * 2 + 1])
+    faces = np.vstack([quads, quads + 8])
+    material = meshbridge.repair(vertices, faces)
+    assert material.report["faces_flipped"] == 0
+    assert material.report["ambiguous_nested_shells"] == 1
+    cavity = meshbridge.repair(vertices, faces, nested_shells="cavity")
+    assert cavity.report["faces_flipped"] == 6
+    assert sorted(set(np.nonzero(np.any(cavity.faces != faces, axis=1))[0])) == [6, 7, 8, 9, 10, 11]
+    with pytest.raises(ValueError, match="nested_shells must be 'material' or 'cavity'"):
+        meshbridge.repair(vertices, faces, nested_shells="hollow")
+    assert meshbridge.REPAIR_OPTIONS["nested_shells"] == "material"
