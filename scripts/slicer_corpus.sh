@@ -11,7 +11,12 @@ shift
 command -v prusa-slicer >/dev/null || { echo "prusa-slicer is not installed (scripts/install_deps.sh)" >&2; exit 2; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-info() { prusa-slicer --info "$1" 2>/dev/null | sed -n 's/^\([a-z_]*\) = *\(.*\)$/\1=\2/p'; }
+# (a file the slicer cannot load gives no lines: its exit status is read as "no fields")
+info() {
+  local text
+  text=$(prusa-slicer --info "$1" 2>/dev/null) || text=""
+  sed -n 's/^\([a-z_]*\) = *\(.*\)$/\1=\2/p' <<<"$text"
+}
 field() { sed -n "s/^$2=//p" <<<"$1" | head -1; }
 declare -A worse=([plain]=0 [print]=0) manifold=([input]=0 [plain]=0 [print]=0) open=([input]=0 [plain]=0 [print]=0)
 files=0 unloadable=0 failed=0

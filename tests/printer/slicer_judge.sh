@@ -32,7 +32,12 @@ while IFS=$'\t' read -r package path license; do
 done <"$source_dir/tests/printer/debian_models.tsv"
 
 # key = value lines of prusa-slicer --info
-info() { prusa-slicer --info "$1" 2>/dev/null | sed -n 's/^\([a-z_]*\) = *\(.*\)$/\1=\2/p'; }
+# (a file the slicer cannot load gives no lines: its exit status is read as "no fields")
+info() {
+  local text
+  text=$(prusa-slicer --info "$1" 2>/dev/null) || text=""
+  sed -n 's/^\([a-z_]*\) = *\(.*\)$/\1=\2/p' <<<"$text"
+}
 field() { sed -n "s/^$2=//p" <<<"$1" | head -1; }
 
 # Files whose original bounds no solid, so that the original's volume is asserted to be 0 and the
