@@ -99,4 +99,16 @@ std::string print_summary(const RepairReport& r) {
   return out.str();
 }
 
+std::string open_edges_hint(const RepairReport& r) {
+  if (r.after.boundary_edges.empty())
+    return "";
+  std::ostringstream out;
+  out << "hint: " << counted(r.after.boundary_edges.size(), "open edge") << " in "
+      << counted(r.after.num_boundary_loops, "boundary loop") << " left; ";
+  if (r.holes.max_edges == 0)
+    out << "--fill-holes closes holes of up to " << kDefaultFillHolesMaxEdges << " edges, and ";
+  out << "--print (OUT.3mf) is the slicer preset that says why each stays open\n";
+  return out.str();
+}
+
 }  // namespace meshbridge::cli

@@ -37,4 +37,8 @@ RepairResult repair_for_print(const Soup& soup, RepairOptions options, std::stri
 //! boundaries of odd singular edges, gap closing refused) with the option that would change it.
 std::string print_summary(const RepairReport& report);
 
+//! For a repair without --print that leaves open edges: one `hint:` line naming them and what
+//! would close them (--fill-holes when filling was off, --print); "" when the result is closed.
+std::string open_edges_hint(const RepairReport& report);
+
 }  // namespace meshbridge::cli

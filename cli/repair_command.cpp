@@ -222,6 +222,8 @@ int run_repair(RepairArguments& arguments) {
   summary << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
   if (arguments.print)
     summary << print_note << print_summary(result.report);
+  else
+    summary << open_edges_hint(result.report);
   if (crossings)
     summary << "self-intersections of the result:\n" << to_text(*crossings);
   if (written.polygons_fanned != 0) {

@@ -343,6 +343,29 @@ stl_warning)
   expect_exit 2 "$mb" check "$work/b3/twocubes.3mf" --weld -1
   expect_in "$work/err" "--weld: expects auto or a finite number >= 0, got '-1'"
   ;;
+print_preset)
+  # --print: 3MF only; a closed result says so; what stays open is named with its reason.
+  expect_exit 2 "$mb" repair "$models/cube_with_hole.obj" "$work/p.obj" --print
+  expect_in "$work/err" "p.obj: --print writes 3MF"
+  expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/p.3mf" --print --report "$work/p.json"
+  expect_in "$work/out" "print: watertight as written"
+  [ "$(json_field "$work/p.json" holes.holes_filled) $(json_field "$work/p.json" after.boundary_edges)" = "1 0" ] ||
+    fail "--print filled: $(cat "$work/p.json")"
+  expect_exit 0 "$mb" check "$work/p.3mf"
+  printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' >"$work/sheet.obj"
+  expect_exit 0 "$mb" repair "$work/sheet.obj" "$work/sheet.3mf" --print --report "$work/s.json"
+  expect_in "$work/out" "print: 4 open edges in 1 boundary loop left: 1 loop outlining an open sheet"
+  [ "$(json_field "$work/s.json" holes.patches_refused) $(json_field "$work/s.json" faces_out)" = "1 1" ] ||
+    fail "sheet outline filled: $(cat "$work/s.json")"
+  # A triangle written twice back to back (a slicer reads it as a closed part of no volume):
+  # removing the duplicate would open it, so the preset keeps it and says so.
+  printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n' >"$work/twice.obj"
+  expect_exit 0 "$mb" repair "$work/twice.obj" "$work/twice.3mf" --print
+  expect_in "$work/out" "print: kept the 1 duplicate face: removing them left 3 open edges (keeping them: 0"
+  # Without --print, an open result gets a hint of what would close it.
+  expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj"
+  expect_in "$work/out" "hint: 4 open edges in 1 boundary loop left; --fill-holes closes holes of up to 32 edges"
+  ;;
 nested_shells)
   # A cube of side 4 with a cube of side 2 inside, both wound outward: an insert, or a cavity
   # written the wrong way. Kept as written (material) by default; --nested-shells cavity turns
