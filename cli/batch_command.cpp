@@ -86,9 +86,9 @@ void take_result(Entry& entry, const FileJobResult& result, const FileJob& job) 
                p.faces_out, after.num_components,           after.watertight};
 }
 
-// With --jobs > 1 every file is repaired in a child process of its own: OpenMesh's readers and
-// writers keep per-call state in process-wide objects, so threads would have to take turns for
-// reading and writing, and a file that crashes its child fails alone instead of ending the run.
+// With --jobs > 1 every file is repaired in a child process of its own: a file that crashes its
+// child or runs it out of memory fails alone instead of ending the run, and each child's memory
+// goes back to the system when it ends.
 // The child sends its result over a pipe: "status faces_in singular_edges singular_vertices
 // faces_out components_after watertight reason_length warnings_length\n", the reason, the
 // warnings, then the record.

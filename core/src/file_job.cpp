@@ -13,7 +13,6 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <mutex>
 #include <new>
 #include <set>
 #include <stdexcept>
@@ -24,13 +23,6 @@ namespace meshbridge {
 namespace {
 
 namespace fs = std::filesystem;
-
-//! OpenMesh's readers and writers keep per-call state in process-wide singletons (and mute its
-//! global error stream): one file at a time goes through them.
-std::mutex& openmesh_io_lock() {
-  static std::mutex lock;
-  return lock;
-}
 
 std::string lower(std::string text) {
   for (auto& ch : text)
@@ -237,10 +229,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
   try {
     Soup soup;
     MeshAttributes attributes;
-    {
-      const std::lock_guard<std::mutex> guard(openmesh_io_lock());
-      soup = read_soup(job.input, &info, &attributes);
-    }
+    soup = read_soup(job.input, &info, &attributes);
     read = true;
     if (info.changed_anything())
       result.reading = describe_reading(info);
@@ -267,10 +256,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     StlSeparation separated;
     if (stl && options.separate_stl_copies && repaired.report.vertices_split > 0)
       separated = separate_copies_for_stl(repaired.mesh);
-    {
-      const std::lock_guard<std::mutex> guard(openmesh_io_lock());
-      write_mesh(job.output, repaired.mesh, &attributes);  // maps them through the origins
-    }
+    write_mesh(job.output, repaired.mesh, &attributes);  // maps them through the origins
     result.written = describe_written(job.output, repaired.mesh.soup, attributes,
                                       repaired.report.gaps.vertices_welded);
     result.written.copies_moved = separated.vertices_moved;
@@ -278,12 +264,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     result.report = std::move(repaired.report);
     if (stl) {
       // STL keeps no shared vertices: report the file as a reader will get it back.
-      Soup again;
-      {
-        const std::lock_guard<std::mutex> guard(openmesh_io_lock());
-        again = read_soup(job.output);
-      }
-      result.reread = detect_defects(again);
+      result.reread = detect_defects(read_soup(job.output));
     }
     const RepairReport& r = result.report;
     // Clean: the mesh is written as read, every vertex and face in place.

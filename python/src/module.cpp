@@ -25,7 +25,6 @@
 #include <chrono>
 #include <cstring>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -54,12 +53,6 @@ struct PySoup {
   //! What the file held that the soup does not (describe_not_held()); empty from arrays.
   std::vector<std::string> not_held;
 };
-
-//! OpenMesh's readers and writers keep state in process-wide singletons: one file at a time.
-std::mutex& io_lock() {
-  static std::mutex lock;
-  return lock;
-}
 
 PyObject* new_exception(py::module_& m, const char* name, py::handle base1, py::handle base2,
                         const char* doc) {
@@ -266,7 +259,6 @@ PYBIND11_MODULE(_core, m) {
         auto soup = std::make_shared<PySoup>();
         {
           py::gil_scoped_release release;
-          const std::lock_guard<std::mutex> lock(io_lock());
           MeshAttributes attributes;
           soup->soup = read_soup(path, &soup->info, &attributes);
           soup->path = path;
@@ -306,7 +298,6 @@ PYBIND11_MODULE(_core, m) {
             std::get<2>(written) = separated.vertices_moved;
             std::get<3>(written) = separated.distance;
           }
-          const std::lock_guard<std::mutex> lock(io_lock());
           write_mesh(path, mesh);
           if (stl) {
             // What every STL reader gets back: positions welded, split copies merged again.

@@ -100,8 +100,7 @@ struct FileJobResult {
 //! bad file: every error becomes a `failed` result whose reason names the path and the cause (OS
 //! reason included). With `options.resume` an output newer than the input is `skipped`. An input
 //! that cannot be opened (permission) is `skipped`. Thread-safe: jobs with distinct outputs may run
-//! concurrently (OpenMesh's reader and writer objects are process-wide singletons, so reading and
-//! writing take turns under one lock; repair, most of the time, runs in parallel).
+//! concurrently (MeshBridge's own readers and writers keep no shared state).
 FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options = {});
 
 //! The `skipped` record of an unreadable entry from BatchPlan::unreadable.
