@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cmesh_adapter.h"
 
+#include "meshbridge/polygon_triangles.h"
+
 #include <vcg/complex/allocate.h>
 
 #include <algorithm>
@@ -50,8 +52,8 @@ struct TrianglePlan {
   Index origin = kNoIndex;           //!< input (soup) face
   Index vertex[3] = {0, 0, 0};       //!< output vertices
   signed char local[3] = {0, 1, 2};  //!< input corner (0..2 within the input triangle) per corner;
-                                     //!< -1: a corner made by a fan (no wedge origin)
-  bool fan_inner[3] = {false, false, false};  //!< edge k is a diagonal made by fanning
+                                     //!< -1: no input corner (no wedge origin)
+  bool fan_inner[3] = {false, false, false};  //!< edge k is a diagonal of a cut polygon
 };
 
 //! The input edge (0..2) that output edge (la -> lb) lies on, or -1 if none.
@@ -199,6 +201,7 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
       ++report.set_aside_faces_kept;
     }
   };
+  const PolygonTriangles triangles = triangles_as_written(out);
   for (std::size_t f = 0; f < out.num_faces(); ++f) {
     const Index origin = repaired.face_origin[f];
     // kNoIndex: a face hole filling added (they come last, after every set-aside face).
@@ -234,16 +237,20 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
       ++report.polygons_fanned;
       report.triangles_from_fans += arity - 3;
     }
-    for (std::size_t k = 1; k + 1 < arity; ++k) {  // fan around corner 0
+    // The core's triangles (as the STL and 3MF writers cut the polygon): an edge between two
+    // corners that are not neighbours in the polygon is a diagonal, marked faux for MeshLab.
+    for (Index i = triangles.first[f]; i < triangles.first[f + 1]; ++i) {
       TrianglePlan t;
       t.origin = origin;
-      const std::size_t idx[3] = {0, k, k + 1};
+      const auto& idx = triangles.corners[i];
       for (int j = 0; j < 3; ++j) {
         t.vertex[j] = poly[idx[j]];
         t.local[j] = local[idx[j]];
       }
-      t.fan_inner[0] = k > 1;          // edge 0 -> k is a diagonal unless k == 1
-      t.fan_inner[2] = k + 2 < arity;  // edge k+1 -> 0 is a diagonal unless the last one
+      for (int j = 0; j < 3; ++j) {
+        const std::size_t a = idx[j], b = idx[(j + 1) % 3];
+        t.fan_inner[j] = (a + 1) % arity != b && (b + 1) % arity != a;
+      }
       plan.push_back(t);
     }
   }

@@ -51,10 +51,12 @@ struct WriteBackReport {
   std::size_t vertices_in = 0;           //!< live vertices of `m` before
   std::size_t vertices_out = 0;          //!< vertices of `m` after
   std::size_t set_aside_faces_kept = 0;  //!< faces the core set aside, put back unchanged
-  std::size_t polygons_fanned = 0;       //!< output polygons with more than 3 corners
-  std::size_t triangles_from_fans = 0;   //!< extra triangles those fans made
-  std::size_t faces_flipped = 0;         //!< triangles whose corner order was reversed
-  std::size_t faces_added = 0;           //!< faces with no input face (hole filling), last
+  //! output polygons with more than 3 corners, cut into triangles as the STL and 3MF writers cut
+  //! them (triangles_as_written(): ear clipping, no diagonal on an existing edge)
+  std::size_t polygons_fanned = 0;
+  std::size_t triangles_from_fans = 0;  //!< extra triangles those polygons made
+  std::size_t faces_flipped = 0;        //!< triangles whose corner order was reversed
+  std::size_t faces_added = 0;          //!< faces with no input face (hole filling), last
 };
 
 //! Replaces the content of `m` with `repaired` (the result of repairing `input.soup`).

@@ -5,6 +5,7 @@
 #include "meshbridge/close_gaps.h"
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/models/canonical_models.h"
+#include "meshbridge/polygon_triangles.h"
 #include "meshbridge/repair.h"
 #include "meshbridge/separate_copies.h"
 
@@ -163,6 +164,19 @@ TEST(StlRoundTrip, written_triangles_never_reuse_an_edge_as_a_diagonal) {
     ASSERT_EQ(detect_defects(soup).singular_edges.size(), 0u);
     const Soup triangles = stl_round_trip(soup);
     EXPECT_EQ(triangles.num_faces(), 4u);
+    // The public triangulation (the MeshLab plugin's) cuts the quad along 0-2, as the writers do.
+    const PolygonTriangles cut = triangles_as_written(soup);
+    ASSERT_EQ(cut.first, (std::vector<Index>{0, 2, 3, 4}));
+    for (Index i = 0; i < 2; ++i) {
+      const auto& t = cut.corners[i];
+      const PolygonView quad = soup.polygon(0);
+      std::vector<Index> vertices{quad[t[0]], quad[t[1]], quad[t[2]]};
+      std::sort(vertices.begin(), vertices.end());
+      EXPECT_TRUE(vertices == (std::vector<Index>{0, 1, 2}) ||
+                  vertices == (std::vector<Index>{0, 2, 3}))
+          << vertices[0] << vertices[1] << vertices[2];
+    }
+    EXPECT_EQ(cut.corners[2], (std::array<std::uint32_t, 3>{0, 1, 2}));
     EXPECT_EQ(detect_defects(triangles).singular_edges.size(), 0u) << "reversed " << reversed;
   }
 }

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/triangulate.h"
 
+#include "meshbridge/polygon_triangles.h"
+
 #include "pipeline/grouping.h"
 #include "working_soup.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -157,3 +160,31 @@ std::size_t polygon_triangle_count(PolygonView polygon) {
 }
 
 }  // namespace meshbridge::detail
+
+namespace meshbridge {
+
+PolygonTriangles triangles_as_written(const Soup& soup) {
+  PolygonTriangles out;
+  out.first.reserve(soup.num_faces() + 1);
+  out.corners.reserve(soup.num_faces());
+  detail::Triangulation t;
+  detail::avoid_existing_edges(soup, t);
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    out.first.push_back(static_cast<Index>(out.corners.size()));
+    const PolygonView p = soup.polygon(f);
+    if (p.size() == 3) {
+      out.corners.push_back({0, 1, 2});
+      continue;
+    }
+    detail::triangulate_polygon(soup, f, t);
+    const auto position = [&p](Index v) {
+      return static_cast<std::uint32_t>(std::find(p.begin(), p.end(), v) - p.begin());
+    };
+    for (const auto& [a, b, c] : t.triangles)
+      out.corners.push_back({position(a), position(b), position(c)});
+  }
+  out.first.push_back(static_cast<Index>(out.corners.size()));
+  return out;
+}
+
+}  // namespace meshbridge
