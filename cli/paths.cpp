@@ -38,15 +38,10 @@ std::string first_missing(const std::string& folder) {
 
 }  // namespace
 
-bool has_extension(std::string path, const std::string& extension) {
+bool ends_with_png(std::string path) {
   for (auto& ch : path)
     ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return path.size() >= extension.size() &&
-         path.compare(path.size() - extension.size(), extension.size(), extension) == 0;
-}
-
-bool ends_with_png(const std::string& path) {
-  return has_extension(path, ".png");
+  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".png") == 0;
 }
 
 std::string folder_of(const std::string& path) {

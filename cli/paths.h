@@ -14,11 +14,8 @@ std::string folder_of(const std::string& path);
 //! The last part of a path: "a/b/c.obj" gives "c.obj".
 std::string file_name_of(const std::string& path);
 
-//! True when `path` ends in `extension` (lower case, with its dot: ".3mf"), in any case.
-bool has_extension(std::string path, const std::string& extension);
-
 //! True when `path` ends in ".png" (any case).
-bool ends_with_png(const std::string& path);
+bool ends_with_png(std::string path);
 
 //! Throws ReadError naming `path` when it cannot be read: "the folder 'D' does not exist",
 //! "no such file", "it is a folder", or the OS reason (e.g. "Permission denied"). Other

@@ -123,20 +123,8 @@ std::string wider_weld_hint(const Soup& soup, const CloseGapsOptions& weld,
   return out.str();
 }
 
-namespace {
-
-bool has_extension(const std::string& path, const char* extension) {
-  std::string lower = path;
-  for (auto& ch : lower)
-    ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  const std::string e = extension;
-  return lower.size() >= e.size() && lower.compare(lower.size() - e.size(), e.size(), e) == 0;
-}
-
-}  // namespace
-
 bool is_stl_path(const std::string& path) {
-  return has_extension(path, ".stl");
+  return mesh_format(path) == MeshFormat::stl;
 }
 
 StlSeparation apply_separate(const std::string& text, bool given, IndexedMesh& mesh,

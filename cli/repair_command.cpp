@@ -76,7 +76,7 @@ int run_repair(RepairArguments& arguments) {
   if (!is_supported_mesh_file(out)) {
     throw UsageError(out + ": unknown output format (expected .obj, .off, .ply, .stl or .3mf)");
   }
-  if (arguments.print && !has_extension(out, ".3mf")) {
+  if (arguments.print && mesh_format(out) != MeshFormat::threemf) {
     throw UsageError(out +
                      ": --print writes 3MF, the format slicers read with units, objects "
                      "and no re-weld; name OUT .3mf");

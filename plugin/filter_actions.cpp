@@ -5,6 +5,7 @@
 
 #include "meshbridge/close_gaps.h"
 #include "meshbridge/detect_defects.h"
+#include "meshbridge/io.h"
 #include "meshbridge/stl_round_trip.h"
 
 #include <vcg/complex/algorithms/update/bounding.h>
@@ -96,12 +97,7 @@ void clear_selection(CMeshO& mesh) {
 }  // namespace
 
 bool is_stl_file_name(const std::string& file_name) {
-  if (file_name.size() < 4)
-    return false;
-  std::string ext = file_name.substr(file_name.size() - 4);
-  for (char& c : ext)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".stl";
+  return mesh_format(file_name) == MeshFormat::stl;
 }
 
 std::string defect_layer_label(const std::string& mesh_label) {

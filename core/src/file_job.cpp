@@ -252,7 +252,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
                       nullptr, &info);
       }
     }
-    const bool stl = lower(fs::path(job.output).extension().string()) == ".stl";
+    const bool stl = mesh_format(job.output) == MeshFormat::stl;
     StlSeparation separated;
     if (stl && options.separate_stl_copies && repaired.report.vertices_split > 0)
       separated = separate_copies_for_stl(repaired.mesh);

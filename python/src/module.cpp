@@ -35,16 +35,6 @@ using namespace meshbridge::python;
 
 namespace {
 
-//! True if `path` ends with ".stl" (any case).
-bool is_stl_file(const std::string& path) {
-  if (path.size() < 4)
-    return false;
-  std::string tail = path.substr(path.size() - 4);
-  for (char& c : tail)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return tail == ".stl";
-}
-
 //! A soup read from a file or built from arrays, with what its file declared.
 struct PySoup {
   Soup soup;
@@ -286,7 +276,7 @@ PYBIND11_MODULE(_core, m) {
           py::gil_scoped_release release;
           IndexedMesh mesh;
           mesh.soup = soup.soup;
-          const bool stl = is_stl_file(path);
+          const bool stl = mesh_format(path) == MeshFormat::stl;
           if (stl && origins) {  // a repair result: its split vertex copies moved apart
             if (origins->size() != mesh.soup.num_vertices()) {
               throw std::invalid_argument("write: vertex_origin has " +

@@ -246,7 +246,14 @@ bool written_in_place(const std::string& path);
 //! link stays), else `path` itself.
 std::string replaced_file(const std::string& path);
 
-//! True if `path` has an extension read_soup/write_mesh handle (.obj .off .ply .stl, any case).
+//! The mesh file formats, by extension.
+enum class MeshFormat { unknown, obj, off, ply, stl, threemf };
+
+//! The format of `path` by its extension (.obj .off .ply .stl .3mf, any case); unknown without
+//! one or for any other. The one place a path's extension is read.
+MeshFormat mesh_format(const std::string& path);
+
+//! True if `path` has an extension read_soup/write_mesh handle (mesh_format() is not unknown).
 bool is_supported_mesh_file(const std::string& path);
 
 //! Writes a file the way write_mesh does (MeshBridge's one atomic-write helper): `fill` writes

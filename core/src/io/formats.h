@@ -46,10 +46,11 @@
 
 namespace meshbridge::detail {
 
-//! The file formats, by extension.
-enum class Format { unknown, obj, off, ply, stl, threemf };
-//! The format of `path` by its extension (any case; unknown without one).
-Format format_of(const std::string& path);
+//! The file formats, by extension (mesh_format()).
+using Format = MeshFormat;
+inline Format format_of(const std::string& path) {
+  return mesh_format(path);
+}
 //! For a file (its whole bytes) that the reader of `format` cannot read or finds no polygon in:
 //! what it looks like instead, as "; it begins with 'ply': a PLY file under another name?" (other
 //! formats' first words, a zip archive's magic bytes, a binary STL's size, NUL bytes in text),

@@ -20,30 +20,26 @@
 
 namespace meshbridge {
 
-namespace detail {
-
-Format format_of(const std::string& path) {
+MeshFormat mesh_format(const std::string& path) {
   const auto dot = path.find_last_of('.');
   const auto slash = path.find_last_of('/');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return Format::unknown;
+    return MeshFormat::unknown;
   std::string ext = path.substr(dot + 1);
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
   if (ext == "obj")
-    return Format::obj;
+    return MeshFormat::obj;
   if (ext == "off")
-    return Format::off;
+    return MeshFormat::off;
   if (ext == "ply")
-    return Format::ply;
+    return MeshFormat::ply;
   if (ext == "stl")
-    return Format::stl;
+    return MeshFormat::stl;
   if (ext == "3mf")
-    return Format::threemf;
-  return Format::unknown;
+    return MeshFormat::threemf;
+  return MeshFormat::unknown;
 }
-
-}  // namespace detail
 
 namespace {
 
