@@ -134,8 +134,7 @@ int run_repair(RepairArguments& arguments) {
       crossings =
           std::make_unique<SelfIntersectionReport>(find_self_intersections(result.mesh.soup));
     write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
-    written =
-        describe_written(out, result.mesh.soup, attributes, result.report.gaps.vertices_welded);
+    written = describe_written(out, result.mesh, attributes, result.report.gaps.vertices_welded);
     std::error_code status_error;  // (a device or pipe cannot be read back)
     if (is_stl_path(out) && std::filesystem::is_regular_file(out, status_error)) {
       // Only the picture reads the mesh again: without one it is freed before the file is read

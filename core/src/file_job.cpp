@@ -266,7 +266,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
       const std::lock_guard<std::mutex> guard(openmesh_io_lock());
       write_mesh(job.output, repaired.mesh, &attributes);  // maps them through the origins
     }
-    result.written = describe_written(job.output, repaired.mesh.soup, attributes,
+    result.written = describe_written(job.output, repaired.mesh, attributes,
                                       repaired.report.gaps.vertices_welded);
     result.report = std::move(repaired.report);
     if (lower(fs::path(job.output).extension().string()) == ".stl") {

@@ -38,6 +38,15 @@ MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& 
   out.texture_coordinates = input.texture_coordinates;
   out.normals = input.normals;
   out.not_kept = input.not_kept;
+  out.metadata = input.metadata;
+  // The 3MF object of each output face; an added face (kNoIndex) is of the model.
+  if (!input.face_objects.empty()) {
+    out.face_objects.reserve(mesh.face_origin.size());
+    for (Index origin : mesh.face_origin) {
+      out.face_objects.push_back(origin < input.face_objects.size() ? input.face_objects[origin]
+                                                                    : FaceObject{});
+    }
+  }
   carry_colors(input.vertex_colors, input.vertex_color_missing, mesh.vertex_origin,
                out.vertex_colors, out.vertex_color_missing);
   carry_colors(input.face_colors, input.face_color_missing, mesh.face_origin, out.face_colors,

@@ -10,7 +10,9 @@
 #include <Model/COM/NMR_DLLInterfaces.h>
 
 #include <array>
+#include <cstring>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace meshbridge::detail {
@@ -60,6 +62,17 @@ Affine compose(const Affine& outer, const Affine& inner) {
   return c;
 }
 
+// True if `a` mirrors (its linear part has a negative determinant): the triangles it places
+// would be turned inside out unless their corner order is reversed, as slicers do (PrusaSlicer
+// reverses them). `a` is the whole placement, composed down the component tree: two mirrors
+// cancel.
+bool mirrors(const Affine& a) {
+  const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                     a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                     a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+  return det < 0;
+}
+
 Point apply(const Affine& a, const float p[3]) {
   Point q;
   for (int j = 0; j < 3; ++j)
@@ -76,14 +89,27 @@ class Reader {
   struct Properties {
     std::size_t triangles = 0;  //!< triangles with a colour, material or texture coordinate
     std::size_t names = 0;      //!< mesh objects with a name
-    std::size_t unplaced = 0;   //!< mesh objects in no build item, read as stored
-    std::size_t not_model = 0;  //!< mesh objects of another type than "model" (support...)
   };
   const Properties& properties() const { return properties_; }
 
-  // Appends the triangles of mesh object `object`, its vertices mapped by `placement`.
-  void add_mesh(NMR::PLib3MFModelObjectResource* object, const Affine& placement,
-                bool transformed) {
+  //! One per soup face (MeshAttributes::face_objects), or empty when every face is of a placed
+  //! "model" object.
+  std::vector<FaceObject> face_objects() const {
+    std::vector<FaceObject> faces;
+    if (!any_other_object_)
+      return faces;
+    faces.reserve(soup_.num_faces());
+    for (std::size_t r = 0; r < runs_.size(); ++r) {
+      const std::size_t end = r + 1 < runs_.size() ? runs_[r + 1].first : soup_.num_faces();
+      faces.resize(end, runs_[r].second);
+    }
+    return faces;
+  }
+
+  // Appends the triangles of mesh object `object`, its vertices mapped by `placement` (their
+  // corner order reversed where it mirrors); `in_build` tells whether a build item placed it.
+  void add_mesh(NMR::PLib3MFModelObjectResource* object, const Affine& placement, bool transformed,
+                bool in_build) {
     DWORD vertex_count = 0, triangle_count = 0;
     check(NMR::lib3mf_meshobject_getvertexcount(object, &vertex_count), path_, "count vertices");
     check(NMR::lib3mf_meshobject_gettrianglecount(object, &triangle_count), path_,
@@ -97,6 +123,13 @@ class Reader {
       check(NMR::lib3mf_meshobject_gettriangleindices(object, triangles_.data(), triangle_count,
                                                       nullptr),
             path_, "get triangles");
+    DWORD type = NMR::MODELOBJECTTYPE_MODEL;
+    check(NMR::lib3mf_object_gettype(object, &type), path_, "get an object's type");
+    const FaceObject kind{object_type(type), in_build};
+    any_other_object_ = any_other_object_ || !kind.is_printed_model();
+    if (runs_.empty() || runs_.back().second != kind)
+      runs_.emplace_back(soup_.num_faces(), kind);
+    const bool reversed = transformed && mirrors(placement);
     const Index offset = static_cast<Index>(soup_.num_vertices());
     for (const auto& v : vertices_) {
       const float* p = v.m_fPosition;
@@ -110,23 +143,22 @@ class Reader {
                           std::to_string(vertex_count) + " vertices");
         }
       }
-      soup_.add_polygon(
-          {offset + t.m_nIndices[0], offset + t.m_nIndices[1], offset + t.m_nIndices[2]});
+      const DWORD* i = t.m_nIndices;
+      if (reversed)
+        soup_.add_polygon({offset + i[0], offset + i[2], offset + i[1]});
+      else
+        soup_.add_polygon({offset + i[0], offset + i[1], offset + i[2]});
     }
     count_properties(object, triangle_count);
   }
 
   // Counts the triangles of `object` that carry a property (a colour of an m:colorgroup, a base
   // material, texture coordinates; the object's own pid gives one to every triangle without
-  // one), whether the object has a name, and whether it is of another type than "model": read
-  // past, so named (NotKept).
+  // one) and whether the object has a name: read past, so named (NotKept).
   void count_properties(NMR::PLib3MFModelObjectResource* object, DWORD triangle_count) {
     ULONG name_length = 0;
     if (NMR::lib3mf_object_getnameutf8(object, nullptr, 0, &name_length) == LIB3MF_OK)
       properties_.names += name_length > 0;
-    DWORD type = NMR::MODELOBJECTTYPE_MODEL;
-    if (NMR::lib3mf_object_gettype(object, &type) == LIB3MF_OK)
-      properties_.not_model += type != NMR::MODELOBJECTTYPE_MODEL;
     Released defaults, handler;
     NMR::eModelPropertyType property = NMR::MODELPROPERTYTYPE_NONE;
     bool object_default = false;
@@ -159,7 +191,7 @@ class Reader {
           "tell an object's kind");
     if (is_mesh) {
       placed_.insert(id);
-      add_mesh(object, placement, transformed);
+      add_mesh(object, placement, transformed, true);
       return;
     }
     if (!is_components)
@@ -214,8 +246,7 @@ class Reader {
                DWORD id = 0;
                check(NMR::lib3mf_resource_getresourceid(object, &id), path_, "get an object's id");
                if (placed_.count(id) == 0) {
-                 add_mesh(object, kIdentity, false);
-                 ++properties_.unplaced;
+                 add_mesh(object, kIdentity, false, false);
                }
              });
   }
@@ -251,6 +282,22 @@ class Reader {
     return true;
   }
 
+  // lib3mf's eModelObjectType as ObjectType ("other" for a number it does not list).
+  static ObjectType object_type(DWORD type) {
+    switch (type) {
+      case NMR::MODELOBJECTTYPE_MODEL:
+        return ObjectType::model;
+      case NMR::MODELOBJECTTYPE_SUPPORT:
+        return ObjectType::support;
+      case NMR::MODELOBJECTTYPE_SOLIDSUPPORT:
+        return ObjectType::solidsupport;
+      case NMR::MODELOBJECTTYPE_SURFACE:
+        return ObjectType::surface;
+      default:
+        return ObjectType::other;
+    }
+  }
+
   static constexpr int kMaxDepth = 64;
   const std::string& path_;
   Soup& soup_;
@@ -258,7 +305,29 @@ class Reader {
   std::vector<NMR::MODELMESHVERTEX> vertices_;
   std::vector<NMR::MODELMESHTRIANGLE> triangles_;
   Properties properties_;
+  // The soup's faces by object kind: (first face, kind) where the kind changes.
+  std::vector<std::pair<std::size_t, FaceObject>> runs_;
+  bool any_other_object_ = false;
 };
+
+// The model's <metadata> entries, in file order.
+void read_metadata(NMR::PLib3MFModel* model, const std::string& path,
+                   std::vector<Metadata>& metadata) {
+  DWORD count = 0;
+  check(NMR::lib3mf_model_getmetadatacount(model, &count), path, "count the metadata");
+  const auto text = [&](auto get, DWORD index) {
+    ULONG length = 0;
+    check(get(model, index, nullptr, 0, &length), path, "get a metadata entry");
+    std::string s(length + 1, '\0');
+    check(get(model, index, s.data(), length + 1, &length), path, "get a metadata entry");
+    s.resize(std::strlen(s.c_str()));
+    return s;
+  };
+  for (DWORD m = 0; m < count; ++m) {
+    metadata.push_back({text(NMR::lib3mf_model_getmetadatakeyutf8, m),
+                        text(NMR::lib3mf_model_getmetadatavalueutf8, m)});
+  }
+}
 
 }  // namespace
 
@@ -304,19 +373,11 @@ void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   }
   if (read.properties().names > 0)
     attributes->not_kept.push_back({"3MF object names", read.properties().names, "object"});
-  // What a slicer would not print as part of the model: named, so that it is not taken for it.
-  if (read.properties().unplaced > 0) {
-    attributes->not_kept.push_back(
-        {"3MF mesh objects in no build item (a slicer does not print them), read as stored, "
-         "after the build",
-         read.properties().unplaced, "object", true});
-  }
-  if (read.properties().not_model > 0) {
-    attributes->not_kept.push_back(
-        {"3MF object types other than 'model' (support, solidsupport, surface, other), read as "
-         "model shells",
-         read.properties().not_model, "object", true});
-  }
+  // What a slicer would not print as part of the model (supports, surfaces, objects in no build
+  // item): kept per face, written back as objects of their own (describe_unwritten() names what
+  // other formats make of them).
+  attributes->face_objects = read.face_objects();
+  read_metadata(model.instance, path, attributes->metadata);
 }
 
 }  // namespace meshbridge::detail
