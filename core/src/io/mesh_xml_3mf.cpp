@@ -1,13 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The model part is read in two steps. The text between <vertices> and </vertices> and between
+// <triangles> and </triangles> is cut out, and pugixml parses the rest (small: the structure,
+// build, metadata, materials), which tells which cut is the vertex or triangle list of which
+// object's mesh. Each list is then parsed by pugixml as a run of fragments of about 256 KiB
+// (copied, so the part stays as written), one document reused for all, so that the tree of a
+// million elements is never held at once (it would take 200 bytes an element, and the page
+// faults cost more than the parse). A list of a mesh this reader does not take stays in the
+// part, for lib3mf.
 #include "io/mesh_xml_3mf.h"
 
 #include "io/package_3mf.h"
 
 #include <pugixml.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <string_view>
 
 namespace meshbridge::detail {
 
@@ -18,41 +28,108 @@ bool is_prefixed(const char* name) {
   return std::strchr(name, ':') != nullptr;
 }
 
-// The whole of `text` as a number (std::from_chars: no leading space or '+').
+// The whole of the NUL-terminated `text` as a number (std::from_chars: no space, no '+');
+// `end` bounds the search (the end of the buffer `text` is in).
 template <class Number>
-bool parse(const char* text, Number& value) {
-  const char* end = text + std::strlen(text);
+bool parse(const char* text, const char* end, Number& value) {
   const auto result = std::from_chars(text, end, value);
-  return result.ec == std::errc() && result.ptr == end && result.ptr != text;
+  return result.ec == std::errc() && result.ptr != text && *result.ptr == '\0';
 }
 
 enum class Outcome { read, left_for_lib3mf, refused };
 
-// The vertices and triangles of `mesh` into `out`.
-Outcome read_mesh(pugi::xml_node mesh, MeshXml& out) {
-  pugi::xml_node vertices, triangles;
-  for (pugi::xml_node child : mesh.children()) {
-    if (child.type() != pugi::node_element)
+// A list's content in the model part: [begin, end), after its start tag.
+struct Cut {
+  std::size_t tag = 0;  // offset of the '<' of its start tag
+  std::size_t begin = 0, end = 0;
+  bool taken = false;  // a list of a mesh read here (else put back for lib3mf)
+};
+
+// Every cut: the lists "<vertices>...</vertices>" and "<triangles>...</triangles>", in order.
+// Their ends are found by the byte 's', which no vertex or triangle of the core specification
+// holds: the scan passes over a list at memchr's speed, not stopping at each '<'.
+void find_cuts(std::string_view text, std::vector<Cut>& cuts) {
+  std::size_t at = 0;
+  while ((at = text.find('<', at)) != std::string_view::npos) {
+    const std::string_view rest = text.substr(at);
+    const std::string_view name = rest.substr(0, 10) == "<vertices>"    ? "vertices"
+                                  : rest.substr(0, 11) == "<triangles>" ? "triangles"
+                                                                        : "";
+    if (name.empty()) {
+      ++at;
       continue;
-    if (std::strcmp(child.name(), "vertices") == 0 && !vertices)
-      vertices = child;
-    else if (std::strcmp(child.name(), "triangles") == 0 && !triangles)
-      triangles = child;
-    else
-      return Outcome::left_for_lib3mf;  // a beam lattice, a second list...
+    }
+    const std::size_t begin = at + name.size() + 2;
+    std::size_t s = begin;
+    // "</vertices>": its 's' is 2 bytes before its end.
+    while ((s = text.find('s', s)) != std::string_view::npos) {
+      const std::size_t close = s + 2 - (name.size() + 3);
+      if (s + 2 <= text.size() && s + 2 >= begin + name.size() + 3 &&
+          text.substr(close, 2) == "</" && text.substr(close + 2, name.size()) == name &&
+          text[s + 1] == '>') {
+        break;
+      }
+      ++s;
+    }
+    if (s == std::string_view::npos)
+      return;  // no end: pugixml refuses the structure
+    cuts.push_back({at, begin, s + 2 - (name.size() + 3), false});
+    at = s + 2;
   }
-  for (pugi::xml_node vertex : vertices.children()) {
-    if (vertex.type() != pugi::node_element)
-      continue;
-    if (std::strcmp(vertex.name(), "vertex") != 0)
-      return Outcome::left_for_lib3mf;
+}
+
+// Reused by every fragment of every list: the copy of the fragment pugixml parses in place (the
+// model part stays as written, for lib3mf where a list is left to it) and its document.
+struct Fragments {
+  std::vector<char> text;
+  pugi::xml_document document;
+};
+
+// Calls element(node, end of the fragment's text) for every element of the list [begin, end),
+// parsed in fragments; an element of another name than `name`, or text, leaves the list to
+// lib3mf.
+template <class Element>
+Outcome parse_list(const char* begin, const char* end, const char* name, Fragments& fragments,
+                   Element element) {
+  constexpr std::size_t kFragment = std::size_t(1) << 18;
+  const unsigned options = pugi::parse_minimal | pugi::parse_fragment;
+  while (begin < end) {
+    // Fragments end before a '<' (never inside a tag: '<' is not allowed in attribute values).
+    const char* stop = end;
+    if (std::size_t(end - begin) > kFragment) {
+      stop = static_cast<const char*>(std::memchr(begin + kFragment, '<', end - begin - kFragment));
+      if (stop == nullptr)
+        stop = end;
+    }
+    fragments.text.assign(begin, stop);
+    fragments.text.push_back('\0');
+    if (!fragments.document.load_buffer_inplace(fragments.text.data(), fragments.text.size() - 1,
+                                                options, pugi::encoding_utf8)) {
+      return Outcome::refused;  // lib3mf names the fault
+    }
+    const char* text_end = fragments.text.data() + fragments.text.size();
+    for (pugi::xml_node node : fragments.document.children()) {
+      if (node.type() != pugi::node_element || std::strcmp(node.name(), name) != 0)
+        return Outcome::left_for_lib3mf;
+      const Outcome outcome = element(node, text_end);
+      if (outcome != Outcome::read)
+        return outcome;
+    }
+    begin = stop;
+  }
+  return Outcome::read;
+}
+
+// The vertex list [begin, end) into `out`.
+Outcome read_vertices(const char* begin, const char* end, Fragments& fragments, MeshXml& out) {
+  return parse_list(begin, end, "vertex", fragments, [&](pugi::xml_node vertex, const char* stop) {
     double xyz[3];
     int given = 0;
     for (pugi::xml_attribute a : vertex.attributes()) {
       const char* name = a.name();
       if (name[0] >= 'x' && name[0] <= 'z' && name[1] == '\0') {
         // As lib3mf reads them: a double, rounded to a float.
-        if (!parse(a.value(), xyz[name[0] - 'x']))
+        if (!parse(a.value(), stop, xyz[name[0] - 'x']))
           return Outcome::refused;
         given |= 1 << (name[0] - 'x');
       } else if (!is_prefixed(name)) {
@@ -64,82 +141,119 @@ Outcome read_mesh(pugi::xml_node mesh, MeshXml& out) {
     for (double c : xyz) {
       const float f = static_cast<float>(c);
       if (!std::isfinite(f) || std::abs(f) > 1e9f)
-        return Outcome::refused;
+        return Outcome::refused;  // lib3mf's limit
       out.positions.push_back(f);
     }
-  }
-  const std::size_t vertex_count = out.positions.size() / 3;
-  for (pugi::xml_node triangle : triangles.children()) {
-    if (triangle.type() != pugi::node_element)
-      continue;
-    if (std::strcmp(triangle.name(), "triangle") != 0)
-      return Outcome::left_for_lib3mf;
-    std::uint32_t v[3];
-    int given = 0;
-    for (pugi::xml_attribute a : triangle.attributes()) {
-      const char* name = a.name();
-      if (name[0] == 'v' && name[1] >= '1' && name[1] <= '3' && name[2] == '\0') {
-        if (!parse(a.value(), v[name[1] - '1']))
-          return Outcome::refused;
-        given |= 1 << (name[1] - '1');
-      } else if (!is_prefixed(name)) {
-        return Outcome::left_for_lib3mf;  // pid, p1...: properties lib3mf checks and counts
-      }
-    }
-    if (given != 7 || v[0] >= vertex_count || v[1] >= vertex_count || v[2] >= vertex_count ||
-        v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
-      return Outcome::refused;
-    }
-    out.corners.insert(out.corners.end(), v, v + 3);
-  }
-  return Outcome::read;
+    return Outcome::read;
+  });
 }
 
-// Appends what pugixml writes to a string.
-struct StringWriter : pugi::xml_writer {
-  std::string& text;
-  explicit StringWriter(std::string& t) : text(t) {}
-  void write(const void* data, std::size_t size) override {
-    text.append(static_cast<const char*>(data), size);
+// The triangle list [begin, end) into `out`, its corners checked against the vertices.
+Outcome read_triangles(const char* begin, const char* end, Fragments& fragments, MeshXml& out) {
+  const std::size_t vertex_count = out.positions.size() / 3;
+  return parse_list(
+      begin, end, "triangle", fragments, [&](pugi::xml_node triangle, const char* stop) {
+        std::uint32_t v[3];
+        int given = 0;
+        for (pugi::xml_attribute a : triangle.attributes()) {
+          const char* name = a.name();
+          if (name[0] == 'v' && name[1] >= '1' && name[1] <= '3' && name[2] == '\0') {
+            if (!parse(a.value(), stop, v[name[1] - '1']))
+              return Outcome::refused;
+            given |= 1 << (name[1] - '1');
+          } else if (!is_prefixed(name)) {
+            return Outcome::left_for_lib3mf;  // pid, p1...: properties lib3mf checks and counts
+          }
+        }
+        if (given != 7 || v[0] >= vertex_count || v[1] >= vertex_count || v[2] >= vertex_count ||
+            v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
+          return Outcome::refused;
+        }
+        out.corners.insert(out.corners.end(), v, v + 3);
+        return Outcome::read;
+      });
+}
+
+// `text` without the contents of the cuts taken (all of them with `all`), and where each cut's
+// start tag lands in it (`landed`, by cut).
+std::string without_cuts(std::string_view text, const std::vector<Cut>& cuts, bool all,
+                         std::vector<std::size_t>* landed) {
+  std::string out;
+  std::size_t from = 0;
+  for (const Cut& cut : cuts) {
+    if (landed != nullptr)
+      landed->push_back(out.size() + (cut.tag - from));
+    if (!all && !cut.taken)
+      continue;
+    out.append(text.substr(from, cut.begin - from));
+    from = cut.end;
   }
-};
+  out.append(text.substr(from));
+  return out;
+}
 
 }  // namespace
 
-bool read_meshes_xml(std::vector<char>& xml, std::map<std::uint32_t, MeshXml>& meshes,
+bool read_meshes_xml(const std::vector<char>& xml, std::map<std::uint32_t, MeshXml>& meshes,
                      std::string& stripped) {
+  if (xml.empty())
+    return false;
+  const std::string_view text(xml.data(), xml.size() - 1);
+  std::vector<Cut> cuts;
+  find_cuts(text, cuts);
+  // The structure: the model part without any list.
+  std::vector<std::size_t> landed;
+  std::string structure = without_cuts(text, cuts, true, &landed);
   pugi::xml_document document;
-  // In place, no conversion: escapes stay as written, and are written back as they were.
-  const unsigned options = pugi::parse_minimal | pugi::parse_cdata | pugi::parse_declaration;
-  if (xml.empty() ||
-      !document.load_buffer_inplace(xml.data(), xml.size() - 1, options, pugi::encoding_utf8)) {
+  // In place, no conversion: only the structure is read here; lib3mf reads it again.
+  if (!document.load_buffer_inplace(structure.data(), structure.size(),
+                                    pugi::parse_minimal | pugi::parse_cdata, pugi::encoding_utf8)) {
     return false;
   }
-  pugi::xml_node model = document.child("model");
-  if (!model)
-    return false;
-  for (pugi::xml_node resources : model.children("resources")) {
+  // The cut whose start tag is the one of `list` (cuts.size() if none).
+  const auto cut_of = [&](pugi::xml_node list) {
+    const std::size_t tag = static_cast<std::size_t>(list.name() - structure.data()) - 1;
+    const auto at = std::lower_bound(landed.begin(), landed.end(), tag);
+    return at != landed.end() && *at == tag ? std::size_t(at - landed.begin()) : cuts.size();
+  };
+  Fragments fragments;
+  for (pugi::xml_node resources : document.child("model").children("resources")) {
     for (pugi::xml_node object : resources.children("object")) {
       pugi::xml_node mesh = object.child("mesh");
       std::uint32_t id = 0;
-      if (!mesh || !parse(object.attribute("id").value(), id) || meshes.count(id) != 0)
+      const char* id_text = object.attribute("id").value();
+      if (!mesh || !parse(id_text, id_text + std::strlen(id_text), id) || meshes.count(id) != 0)
         continue;  // lib3mf's to read (and to refuse)
+      // Its lists, both cut, and nothing else in it.
+      std::size_t lists[2] = {cuts.size(), cuts.size()};
+      bool other = false;
+      for (pugi::xml_node child : mesh.children()) {
+        const bool vertices = std::strcmp(child.name(), "vertices") == 0;
+        const bool triangles = std::strcmp(child.name(), "triangles") == 0;
+        const std::size_t c = vertices || triangles ? cut_of(child) : cuts.size();
+        if (c == cuts.size() || lists[triangles ? 1 : 0] != cuts.size() || child.first_child())
+          other = true;
+        else
+          lists[triangles ? 1 : 0] = c;
+      }
+      if (other || lists[0] == cuts.size() || lists[1] == cuts.size())
+        continue;
       MeshXml read;
-      const Outcome outcome = read_mesh(mesh, read);
+      Outcome outcome = read_vertices(xml.data() + cuts[lists[0]].begin,
+                                      xml.data() + cuts[lists[0]].end, fragments, read);
+      if (outcome == Outcome::read) {
+        outcome = read_triangles(xml.data() + cuts[lists[1]].begin, xml.data() + cuts[lists[1]].end,
+                                 fragments, read);
+      }
       if (outcome == Outcome::refused)
         return false;
       if (outcome == Outcome::left_for_lib3mf)
         continue;
+      cuts[lists[0]].taken = cuts[lists[1]].taken = true;
       meshes.emplace(id, std::move(read));
-      while (mesh.first_child())
-        mesh.remove_child(mesh.first_child());
-      mesh.append_child("vertices");
-      mesh.append_child("triangles");
     }
   }
-  StringWriter writer(stripped);
-  document.save(writer, "",
-                pugi::format_raw | pugi::format_no_escapes | pugi::format_no_declaration);
+  stripped = without_cuts(text, cuts, false, nullptr);
   return true;
 }
 

@@ -19,7 +19,7 @@ struct MeshXml {
   std::vector<std::uint32_t> corners;  //!< v1, v2, v3 of each triangle
 };
 
-//! The model part `xml` (its bytes, NUL-terminated; parsed in place, so changed) read: into
+//! The model part `xml` (its bytes, NUL-terminated) read: into
 //! `meshes` the mesh of every object (by its id) whose mesh holds nothing but vertices and
 //! triangles with their coordinates and indices (attributes of other namespaces are read past),
 //! and into `stripped` the model part with those meshes emptied. A mesh that is anything else
@@ -28,7 +28,7 @@ struct MeshXml {
 //! reader, and lib3mf should read it all: not well-formed XML, a coordinate that is no number or
 //! beyond lib3mf's +-1e9, a triangle that names a vertex twice or one its mesh lacks (lib3mf
 //! refuses such a file and names the fault).
-bool read_meshes_xml(std::vector<char>& xml, std::map<std::uint32_t, MeshXml>& meshes,
+bool read_meshes_xml(const std::vector<char>& xml, std::map<std::uint32_t, MeshXml>& meshes,
                      std::string& stripped);
 
 //! The 3MF package in `data` (`size` bytes) for lib3mf to read, with the meshes of its root
