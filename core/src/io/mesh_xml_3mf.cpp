@@ -10,6 +10,7 @@
 #include "io/mesh_xml_3mf.h"
 
 #include "io/package_3mf.h"
+#include "parallel_parts.h"
 
 #include <pugixml.hpp>
 
@@ -148,9 +149,10 @@ Outcome read_vertices(const char* begin, const char* end, Fragments& fragments, 
   });
 }
 
-// The triangle list [begin, end) into `out`, its corners checked against the vertices.
-Outcome read_triangles(const char* begin, const char* end, Fragments& fragments, MeshXml& out) {
-  const std::size_t vertex_count = out.positions.size() / 3;
+// The triangle list [begin, end) into `out`, its corners checked against the mesh's
+// `vertex_count` vertices.
+Outcome read_triangles(const char* begin, const char* end, Fragments& fragments,
+                       std::size_t vertex_count, MeshXml& out) {
   return parse_list(
       begin, end, "triangle", fragments, [&](pugi::xml_node triangle, const char* stop) {
         std::uint32_t v[3];
@@ -174,6 +176,48 @@ Outcome read_triangles(const char* begin, const char* end, Fragments& fragments,
       });
 }
 
+// The list [begin, end) (of triangles, else of vertices) read into `out`: in parts side by side
+// (worker_threads(), parts of at least 4 MiB, each cut before a '<'), appended in order.
+Outcome read_list(bool triangles, const char* begin, const char* end, std::size_t vertex_count,
+                  MeshXml& out) {
+  constexpr std::size_t kPart = std::size_t(1) << 22;
+  const unsigned n = static_cast<unsigned>(
+      std::max<std::size_t>(1, std::min<std::size_t>(worker_threads(), (end - begin) / kPart)));
+  std::vector<const char*> bounds{begin};
+  for (unsigned k = 1; k < n; ++k) {
+    const char* at = begin + (end - begin) / n * k;
+    const char* tag = static_cast<const char*>(std::memchr(at, '<', end - at));
+    bounds.push_back(std::max(tag != nullptr ? tag : end, bounds.back()));
+  }
+  bounds.push_back(end);
+  std::vector<MeshXml> parts(n);
+  std::vector<Outcome> outcomes(n, Outcome::read);
+  run_parts(n, [&](unsigned k) {
+    Fragments fragments;
+    outcomes[k] = triangles
+                      ? read_triangles(bounds[k], bounds[k + 1], fragments, vertex_count, parts[k])
+                      : read_vertices(bounds[k], bounds[k + 1], fragments, parts[k]);
+  });
+  for (const Outcome o : {Outcome::refused, Outcome::left_for_lib3mf}) {
+    if (std::find(outcomes.begin(), outcomes.end(), o) != outcomes.end())
+      return o;
+  }
+  std::vector<float>& positions = out.positions;
+  std::vector<std::uint32_t>& corners = out.corners;
+  if (n == 1) {
+    (triangles ? corners.swap(parts[0].corners) : positions.swap(parts[0].positions));
+    return Outcome::read;
+  }
+  for (MeshXml& part : parts) {
+    if (triangles)
+      corners.insert(corners.end(), part.corners.begin(), part.corners.end());
+    else
+      positions.insert(positions.end(), part.positions.begin(), part.positions.end());
+    part = MeshXml();
+  }
+  return Outcome::read;
+}
+
 // `text` without the contents of the cuts taken (all of them with `all`), and where each cut's
 // start tag lands in it (`landed`, by cut).
 std::string without_cuts(std::string_view text, const std::vector<Cut>& cuts, bool all,
@@ -194,11 +238,8 @@ std::string without_cuts(std::string_view text, const std::vector<Cut>& cuts, bo
 
 }  // namespace
 
-bool read_meshes_xml(const std::vector<char>& xml, std::map<std::uint32_t, MeshXml>& meshes,
+bool read_meshes_xml(std::string_view text, std::map<std::uint32_t, MeshXml>& meshes,
                      std::string& stripped) {
-  if (xml.empty())
-    return false;
-  const std::string_view text(xml.data(), xml.size() - 1);
   std::vector<Cut> cuts;
   find_cuts(text, cuts);
   // The structure: the model part without any list.
@@ -216,7 +257,6 @@ bool read_meshes_xml(const std::vector<char>& xml, std::map<std::uint32_t, MeshX
     const auto at = std::lower_bound(landed.begin(), landed.end(), tag);
     return at != landed.end() && *at == tag ? std::size_t(at - landed.begin()) : cuts.size();
   };
-  Fragments fragments;
   for (pugi::xml_node resources : document.child("model").children("resources")) {
     for (pugi::xml_node object : resources.children("object")) {
       pugi::xml_node mesh = object.child("mesh");
@@ -239,11 +279,13 @@ bool read_meshes_xml(const std::vector<char>& xml, std::map<std::uint32_t, MeshX
       if (other || lists[0] == cuts.size() || lists[1] == cuts.size())
         continue;
       MeshXml read;
-      Outcome outcome = read_vertices(xml.data() + cuts[lists[0]].begin,
-                                      xml.data() + cuts[lists[0]].end, fragments, read);
+      const Cut& vertices = cuts[lists[0]];
+      const Cut& triangles = cuts[lists[1]];
+      Outcome outcome =
+          read_list(false, text.data() + vertices.begin, text.data() + vertices.end, 0, read);
       if (outcome == Outcome::read) {
-        outcome = read_triangles(xml.data() + cuts[lists[1]].begin, xml.data() + cuts[lists[1]].end,
-                                 fragments, read);
+        outcome = read_list(true, text.data() + triangles.begin, text.data() + triangles.end,
+                            read.positions.size() / 3, read);
       }
       if (outcome == Outcome::refused)
         return false;
@@ -261,13 +303,13 @@ std::vector<unsigned char> package_without_meshes(const void* data, std::size_t 
                                                   std::map<std::uint32_t, MeshXml>& meshes) {
   Package3mf package(data, size);
   std::string root, stripped;
-  std::vector<char> xml;
+  PartBytes xml;
   if (!package.is_open() || (root = package.root_model()).empty() || !package.read(root, xml) ||
-      !read_meshes_xml(xml, meshes, stripped) || meshes.empty()) {
+      !read_meshes_xml(xml.view(), meshes, stripped) || meshes.empty()) {
     meshes.clear();
     return {};
   }
-  xml = std::vector<char>();  // freed before lib3mf's turn
+  xml = PartBytes();  // freed before lib3mf's turn
   std::vector<unsigned char> without = package.replaced(root, stripped);
   if (without.empty())
     meshes.clear();

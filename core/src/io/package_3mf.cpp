@@ -33,11 +33,11 @@ Package3mf::~Package3mf() {
 }
 
 std::string Package3mf::root_model() const {
-  std::vector<char> rels;
+  PartBytes rels;
   if (!read("_rels/.rels", rels))
     return {};
   pugi::xml_document document;
-  if (!document.load_buffer_inplace(rels.data(), rels.size() - 1))
+  if (!document.load_buffer_inplace(rels.data.get(), rels.size))
     return {};
   std::string root;
   for (pugi::xml_node r : document.child("Relationships").children("Relationship")) {
@@ -67,30 +67,29 @@ std::string Package3mf::root_model() const {
   return root;
 }
 
-bool Package3mf::read(const std::string& name, std::vector<char>& bytes) const {
+bool Package3mf::read(const std::string& name, PartBytes& bytes) const {
   const zip_int64_t index = zip_name_locate(archive_, name.c_str(), 0);
   zip_stat_t stat;
   if (index < 0 || zip_stat_index(archive_, static_cast<zip_uint64_t>(index), 0, &stat) != 0 ||
       (stat.valid & ZIP_STAT_SIZE) == 0 || (stat.valid & ZIP_STAT_COMP_SIZE) == 0 ||
       (stat.valid & ZIP_STAT_COMP_METHOD) == 0 || (stat.valid & ZIP_STAT_CRC) == 0 ||
-      stat.size > (std::uint64_t(1) << 40)) {
+      stat.size > (std::uint64_t(1) << 40) || stat.comp_size > (std::uint64_t(1) << 40)) {
     return false;
   }
-  bytes.resize(static_cast<std::size_t>(stat.size) + 1);
-  bytes.back() = '\0';
+  bytes.size = static_cast<std::size_t>(stat.size);
+  bytes.data.reset(new char[bytes.size + 1]);
+  bytes.data[bytes.size] = '\0';
   // Deflated parts are inflated whole by libdeflate (about twice zlib's speed), the rest by
   // libzip.
   const bool deflated = stat.comp_method == ZIP_CM_DEFLATE;
-  std::vector<char> compressed;
+  const std::size_t wanted = static_cast<std::size_t>(deflated ? stat.comp_size : stat.size);
+  std::unique_ptr<char[]> compressed(deflated ? new char[wanted + 1] : nullptr);
   zip_file_t* file =
       zip_fopen_index(archive_, static_cast<zip_uint64_t>(index), deflated ? ZIP_FL_COMPRESSED : 0);
   if (file == nullptr)
     return false;
-  std::vector<char>& target = deflated ? compressed : bytes;
-  const std::size_t wanted = static_cast<std::size_t>(deflated ? stat.comp_size : stat.size);
-  if (deflated)
-    compressed.resize(wanted);
-  const zip_int64_t got = wanted == 0 ? 0 : zip_fread(file, target.data(), wanted);
+  const zip_int64_t got =
+      wanted == 0 ? 0 : zip_fread(file, deflated ? compressed.get() : bytes.data.get(), wanted);
   zip_fclose(file);
   if (got < 0 || static_cast<std::size_t>(got) != wanted)
     return false;
@@ -100,10 +99,10 @@ bool Package3mf::read(const std::string& name, std::vector<char>& bytes) const {
       return false;
     std::size_t size = 0;
     const libdeflate_result result = libdeflate_deflate_decompress(
-        inflater, compressed.data(), compressed.size(), bytes.data(), bytes.size() - 1, &size);
+        inflater, compressed.get(), wanted, bytes.data.get(), bytes.size, &size);
     libdeflate_free_decompressor(inflater);
-    if (result != LIBDEFLATE_SUCCESS || size != stat.size ||
-        libdeflate_crc32(0, bytes.data(), size) != stat.crc) {
+    if (result != LIBDEFLATE_SUCCESS || size != bytes.size ||
+        libdeflate_crc32(0, bytes.data.get(), size) != stat.crc) {
       return false;
     }
   }

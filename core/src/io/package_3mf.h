@@ -7,12 +7,20 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 struct zip;         // libzip's archive
 struct zip_source;  // libzip's source
 
 namespace meshbridge::detail {
+
+//! The bytes of a part, followed by one NUL (not counted in `size`).
+struct PartBytes {
+  std::unique_ptr<char[]> data;  // not initialised before it is filled: no pass to clear it
+  std::size_t size = 0;
+  std::string_view view() const { return {data.get(), size}; }
+};
 
 class Package3mf {
  public:
@@ -27,9 +35,9 @@ class Package3mf {
   //! relationship of type .../3dmodel in _rels/.rels; empty if there is none, or if the package
   //! holds another model part (the production extension's parts, which lib3mf reads alone).
   std::string root_model() const;
-  //! The whole part `name` into `bytes`, followed by one NUL (not counted in the part's size);
-  //! false if it cannot be read (or its CRC-32 does not match).
-  bool read(const std::string& name, std::vector<char>& bytes) const;
+  //! The whole part `name` into `bytes`; false if it cannot be read (or its CRC-32 does not
+  //! match).
+  bool read(const std::string& name, PartBytes& bytes) const;
   //! The whole package with part `name` replaced by `content` (stored, not compressed), every
   //! other part as it was; empty on failure. Closes the package (is_open() is false after it).
   std::vector<unsigned char> replaced(const std::string& name, const std::string& content);
