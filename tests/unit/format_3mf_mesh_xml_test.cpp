@@ -146,6 +146,11 @@ TEST(Format3mfMeshXml, meshes_left_to_lib3mf_and_files_it_refuses_read_the_same_
       {"not_a_number", tetrahedron(1, "model", "abc")},
       {"huge", tetrahedron(1, "model", "2e9")},
       {"unknown_attribute", tetrahedron(1, "model", "0", " w=\"1\"")},
+      // an attribute of a namespace never declared: lib3mf refuses the file (found by fuzzing)
+      {"undeclared_prefix", tetrahedron(1, "model", "0", " q:a=\"1\"")},
+      // an element of another kind in a list, a list that never ends
+      {"other_element", tetrahedron(1, "model", "0", "", "", "<slic3rpe:v/>")},
+      {"unended", replaced(tetrahedron(1, "model", "0"), "</triangles>", "")},
   };
   for (const auto& [name, resources] : cases) {
     SCOPED_TRACE(name);

@@ -24,9 +24,26 @@ namespace meshbridge::detail {
 
 namespace {
 
-// True for the name of an attribute of another namespace ("p:UUID", "slic3rpe:...").
-bool is_prefixed(const char* name) {
-  return std::strchr(name, ':') != nullptr;
+// True for the name of an attribute of another namespace ("p:UUID", "slic3rpe:...") whose prefix
+// is one of `prefixes` (declared around the mesh; lib3mf refuses one that is not declared).
+bool is_declared_prefixed(const char* name, const std::vector<std::string>& prefixes) {
+  const char* colon = std::strchr(name, ':');
+  if (colon == nullptr)
+    return false;
+  const std::string_view prefix(name, std::size_t(colon - name));
+  return prefix == "xml" || std::find(prefixes.begin(), prefixes.end(), prefix) != prefixes.end();
+}
+
+// The namespace prefixes declared on `node` and the elements around it ("xmlns:p=...": "p").
+std::vector<std::string> declared_prefixes(pugi::xml_node node) {
+  std::vector<std::string> prefixes;
+  for (; node; node = node.parent()) {
+    for (pugi::xml_attribute a : node.attributes()) {
+      if (std::strncmp(a.name(), "xmlns:", 6) == 0)
+        prefixes.emplace_back(a.name() + 6);
+    }
+  }
+  return prefixes;
 }
 
 // The whole of the NUL-terminated `text` as a number (std::from_chars: no space, no '+');
@@ -82,6 +99,7 @@ void find_cuts(std::string_view text, std::vector<Cut>& cuts) {
 // Reused by every fragment of every list: the copy of the fragment pugixml parses in place (the
 // model part stays as written, for lib3mf where a list is left to it) and its document.
 struct Fragments {
+  const std::vector<std::string>& prefixes;  // declared around the mesh
   std::vector<char> text;
   pugi::xml_document document;
 };
@@ -133,7 +151,7 @@ Outcome read_vertices(const char* begin, const char* end, Fragments& fragments, 
         if (!parse(a.value(), stop, xyz[name[0] - 'x']))
           return Outcome::refused;
         given |= 1 << (name[0] - 'x');
-      } else if (!is_prefixed(name)) {
+      } else if (!is_declared_prefixed(name, fragments.prefixes)) {
         return Outcome::left_for_lib3mf;
       }
     }
@@ -163,7 +181,7 @@ Outcome read_triangles(const char* begin, const char* end, Fragments& fragments,
             if (!parse(a.value(), stop, v[name[1] - '1']))
               return Outcome::refused;
             given |= 1 << (name[1] - '1');
-          } else if (!is_prefixed(name)) {
+          } else if (!is_declared_prefixed(name, fragments.prefixes)) {
             return Outcome::left_for_lib3mf;  // pid, p1...: properties lib3mf checks and counts
           }
         }
@@ -179,7 +197,7 @@ Outcome read_triangles(const char* begin, const char* end, Fragments& fragments,
 // The list [begin, end) (of triangles, else of vertices) read into `out`: in parts side by side
 // (worker_threads(), parts of at least 4 MiB, each cut before a '<'), appended in order.
 Outcome read_list(bool triangles, const char* begin, const char* end, std::size_t vertex_count,
-                  MeshXml& out) {
+                  const std::vector<std::string>& prefixes, MeshXml& out) {
   constexpr std::size_t kPart = std::size_t(1) << 22;
   const unsigned n = static_cast<unsigned>(
       std::max<std::size_t>(1, std::min<std::size_t>(worker_threads(), (end - begin) / kPart)));
@@ -193,7 +211,7 @@ Outcome read_list(bool triangles, const char* begin, const char* end, std::size_
   std::vector<MeshXml> parts(n);
   std::vector<Outcome> outcomes(n, Outcome::read);
   run_parts(n, [&](unsigned k) {
-    Fragments fragments;
+    Fragments fragments{prefixes, {}, {}};
     outcomes[k] = triangles
                       ? read_triangles(bounds[k], bounds[k + 1], fragments, vertex_count, parts[k])
                       : read_vertices(bounds[k], bounds[k + 1], fragments, parts[k]);
@@ -281,11 +299,12 @@ bool read_meshes_xml(std::string_view text, std::map<std::uint32_t, MeshXml>& me
       MeshXml read;
       const Cut& vertices = cuts[lists[0]];
       const Cut& triangles = cuts[lists[1]];
-      Outcome outcome =
-          read_list(false, text.data() + vertices.begin, text.data() + vertices.end, 0, read);
+      const std::vector<std::string> prefixes = declared_prefixes(mesh);
+      Outcome outcome = read_list(false, text.data() + vertices.begin, text.data() + vertices.end,
+                                  0, prefixes, read);
       if (outcome == Outcome::read) {
         outcome = read_list(true, text.data() + triangles.begin, text.data() + triangles.end,
-                            read.positions.size() / 3, read);
+                            read.positions.size() / 3, prefixes, read);
       }
       if (outcome == Outcome::refused)
         return false;
@@ -299,8 +318,10 @@ bool read_meshes_xml(std::string_view text, std::map<std::uint32_t, MeshXml>& me
   return true;
 }
 
-std::vector<unsigned char> package_without_meshes(const void* data, std::size_t size,
-                                                  std::map<std::uint32_t, MeshXml>& meshes) {
+namespace {
+
+std::vector<unsigned char> package_without_meshes_or_throw(
+    const void* data, std::size_t size, std::map<std::uint32_t, MeshXml>& meshes) {
   Package3mf package(data, size);
   std::string root, stripped;
   PartBytes xml;
@@ -314,6 +335,18 @@ std::vector<unsigned char> package_without_meshes(const void* data, std::size_t 
   if (without.empty())
     meshes.clear();
   return without;
+}
+
+}  // namespace
+
+std::vector<unsigned char> package_without_meshes(const void* data, std::size_t size,
+                                                  std::map<std::uint32_t, MeshXml>& meshes) {
+  try {
+    return package_without_meshes_or_throw(data, size, meshes);
+  } catch (const std::exception&) {  // out of memory: lib3mf's turn (it names what it cannot do)
+    meshes.clear();
+    return {};
+  }
 }
 
 }  // namespace meshbridge::detail

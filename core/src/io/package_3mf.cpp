@@ -76,6 +76,10 @@ bool Package3mf::read(const std::string& name, PartBytes& bytes) const {
       stat.size > (std::uint64_t(1) << 40) || stat.comp_size > (std::uint64_t(1) << 40)) {
     return false;
   }
+  // Deflate expands at most 1032 times: a larger size is a false header (a zip bomb's), left to
+  // lib3mf rather than allocated.
+  if (stat.comp_method == ZIP_CM_DEFLATE && stat.size > 1032 * stat.comp_size + 1024)
+    return false;
   bytes.size = static_cast<std::size_t>(stat.size);
   bytes.data.reset(new char[bytes.size + 1]);
   bytes.data[bytes.size] = '\0';
