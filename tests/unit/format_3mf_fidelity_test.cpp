@@ -259,6 +259,39 @@ TEST(Format3mfFidelity, object_types_are_kept_per_face_and_written_back_as_objec
                         "none"));
 }
 
+TEST(Format3mfFidelity, a_filled_hole_stays_in_the_object_it_closes) {
+  // A closed tetrahedron of the model, and a support tetrahedron without its last face.
+  Soup soup;
+  for (int k = 0; k < 2; ++k) {
+    const double x = 10.0 * k;
+    for (const Point& p : {Point(x, 0, 0), Point(x + 1, 0, 0), Point(x, 1, 0), Point(x, 0, 1)})
+      soup.add_vertex(p);
+    const Index o = static_cast<Index>(4 * k);
+    soup.add_polygon({o, o + 2, o + 1});
+    soup.add_polygon({o, o + 1, o + 3});
+    soup.add_polygon({o, o + 3, o + 2});
+    if (k == 0)
+      soup.add_polygon({o + 1, o + 2, o + 3});
+  }
+  MeshAttributes attributes;
+  attributes.face_objects.assign(4, FaceObject{});
+  attributes.face_objects.resize(7, FaceObject{ObjectType::support, true});
+  RepairOptions options;
+  options.fill_holes.max_edges = 3;
+  const RepairResult repaired = repair(soup, options);
+  ASSERT_EQ(repaired.mesh.soup.num_faces(), 8u);
+  ASSERT_EQ(repaired.mesh.face_origin.back(), kNoIndex);  // the patch
+  EXPECT_EQ(carry_attributes(attributes, repaired.mesh).face_objects.back().type,
+            ObjectType::support);
+  const std::string out = scratch("patched.3mf");
+  write_mesh(out, repaired.mesh, &attributes);
+  const std::vector<ObjectSeen> expected = {{NMR::MODELOBJECTTYPE_MODEL, true, 4},
+                                            {NMR::MODELOBJECTTYPE_SUPPORT, true, 4}};
+  EXPECT_EQ(objects_in(out), expected);
+  EXPECT_TRUE(describe_written(out, repaired.mesh, attributes).left_out.empty());
+  std::remove(out.c_str());
+}
+
 TEST(Format3mfFidelity, a_file_of_the_model_alone_has_no_objects_to_tell) {
   const std::string path = scratch("model.3mf");
   write_inch_tetrahedron(path);

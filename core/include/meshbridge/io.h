@@ -201,7 +201,7 @@ struct MeshAttributes {
   //! support, a surface, an object in no build item). The 3MF writer writes the faces of each
   //! kind as an object of its own, of that type (outside the build where they were);
   //! describe_unwritten() names what other formats make of them. An added face (origin
-  //! kNoIndex) is of the model.
+  //! kNoIndex: a filled hole) is of the object of the faces at its first corner.
   std::vector<FaceObject> face_objects;
   //! The 3MF model's <metadata> entries in file order (title, designer, an application's own
   //! names...); the 3MF writer writes them back, describe_unwritten() names them for others.

@@ -281,7 +281,7 @@ WrittenOutput describe_written(const std::string& path, const Soup& soup,
 #ifdef MESHBRIDGE_WITH_3MF
   if (format == detail::Format::threemf) {
     const detail::ThreeMfRounding r = detail::measure_3mf_rounding(
-        path, soup, detail::output_face_objects(face_origin, soup.num_faces(), &attributes));
+        path, soup, detail::output_face_objects(soup, face_origin, attributes.face_objects));
     if (r.moved > 0) {
       written.left_out.push_back("positions of " + counted(r.moved, "vertex") + " moved by up to " +
                                  shortest(r.largest_move) +

@@ -125,6 +125,14 @@ ThreeMfRounding measure_3mf_rounding(const std::string& path, const Soup& soup,
 //! Called by the dispatcher after every reader. \throw InvalidSoupError as validate_soup()
 void account_faces(const Soup& soup, ReadInfo& info);
 
+//! The 3MF object kind of every face of `soup` (`input` belongs to the input soup, one per input
+//! face, mapped through `face_origin`, which may be empty: identity). A face repair added (origin
+//! kNoIndex: a filled hole) takes the kind of the first face that has an input and shares its
+//! first corner with it, else of the model: a patch in a support stays in the support. Empty
+//! when `input` is, or when every face is of a placed "model" object.
+std::vector<FaceObject> output_face_objects(const Soup& soup, const std::vector<Index>& face_origin,
+                                            const std::vector<FaceObject>& input);
+
 //! White, the colour of an element the file gave none (MeshAttributes::*_color_missing).
 inline constexpr Rgba kNoColor{255, 255, 255, 255};
 

@@ -8,23 +8,6 @@
 
 namespace meshbridge::detail {
 
-std::vector<FaceObject> output_face_objects(const std::vector<Index>& face_origin,
-                                            std::size_t faces, const MeshAttributes* attributes) {
-  std::vector<FaceObject> kinds;
-  if (attributes == nullptr || attributes->face_objects.empty())
-    return kinds;
-  const std::vector<FaceObject>& input = attributes->face_objects;
-  kinds.reserve(faces);
-  for (std::size_t f = 0; f < faces; ++f) {
-    const Index origin = face_origin.empty() ? static_cast<Index>(f) : face_origin[f];
-    kinds.push_back(origin < input.size() ? input[origin] : FaceObject{});
-  }
-  if (std::all_of(kinds.begin(), kinds.end(),
-                  [](const FaceObject& k) { return k.is_printed_model(); }))
-    kinds.clear();
-  return kinds;
-}
-
 std::vector<Object3mf> objects_3mf(const Soup& soup, const std::vector<FaceObject>& face_objects,
                                    const std::string& path) {
   std::vector<Object3mf> objects;

@@ -23,12 +23,6 @@ struct Object3mf {
   std::vector<NMR::MODELMESHTRIANGLE> triangles;  //!< corners as the object's vertex indices
 };
 
-//! The 3MF object kind of every face of `mesh` (`attributes` belong to the input soup, mapped
-//! through `mesh.face_origin`; an added face is of the model), or empty when every face is of a
-//! placed "model" object.
-std::vector<FaceObject> output_face_objects(const std::vector<Index>& face_origin,
-                                            std::size_t faces, const MeshAttributes* attributes);
-
 //! The objects of `soup` whose faces have the kinds `face_objects` (one per face, or empty: all
 //! of the model): one per kind, in the order of their first faces, each face's triangles
 //! (triangulate_polygon()) in face order.

@@ -47,7 +47,11 @@ void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
     }
   }
   const std::vector<Object3mf> objects =
-      objects_3mf(soup, output_face_objects(mesh.face_origin, soup.num_faces(), attributes), path);
+      objects_3mf(soup,
+                  output_face_objects(
+                      soup, mesh.face_origin,
+                      attributes != nullptr ? attributes->face_objects : std::vector<FaceObject>()),
+                  path);
   Released model, writer;
   check(NMR::lib3mf_createmodel(&model.instance), path, "create a model");
   // The input's unit (a 3MF read in inches stays in inches); millimetres otherwise.
