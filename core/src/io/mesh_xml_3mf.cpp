@@ -212,9 +212,17 @@ Outcome read_list(bool triangles, const char* begin, const char* end, std::size_
   std::vector<Outcome> outcomes(n, Outcome::read);
   run_parts(n, [&](unsigned k) {
     Fragments fragments{prefixes, {}, {}};
-    outcomes[k] = triangles
-                      ? read_triangles(bounds[k], bounds[k + 1], fragments, vertex_count, parts[k])
-                      : read_vertices(bounds[k], bounds[k + 1], fragments, parts[k]);
+    // Room for as many elements as the shortest can fill (<vertex x="0" y="0" z="0"/>: 27
+    // bytes; a triangle's: 32): address space only, never touched beyond what is read, so no
+    // vector grows by copying.
+    const std::size_t bytes = std::size_t(bounds[k + 1] - bounds[k]);
+    if (triangles) {
+      parts[k].corners.reserve(3 * (bytes / 32 + 1));
+      outcomes[k] = read_triangles(bounds[k], bounds[k + 1], fragments, vertex_count, parts[k]);
+    } else {
+      parts[k].positions.reserve(3 * (bytes / 27 + 1));
+      outcomes[k] = read_vertices(bounds[k], bounds[k + 1], fragments, parts[k]);
+    }
   });
   for (const Outcome o : {Outcome::refused, Outcome::left_for_lib3mf}) {
     if (std::find(outcomes.begin(), outcomes.end(), o) != outcomes.end())
@@ -226,6 +234,10 @@ Outcome read_list(bool triangles, const char* begin, const char* end, std::size_
     (triangles ? corners.swap(parts[0].corners) : positions.swap(parts[0].positions));
     return Outcome::read;
   }
+  std::size_t total = 0;
+  for (const MeshXml& part : parts)
+    total += triangles ? part.corners.size() : part.positions.size();
+  (triangles ? corners.reserve(total) : positions.reserve(total));
   for (MeshXml& part : parts) {
     if (triangles)
       corners.insert(corners.end(), part.corners.begin(), part.corners.end());
