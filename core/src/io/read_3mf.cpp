@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // 3MF reading through lib3mf 1.8's v1 C API: what a slicer prints, the build items with their
-// transforms (3MF Core Specification 1.2, section 3.4: build; 4.1: components).
+// transforms (3MF Core Specification 1.2, section 3.4: build; 4.1: components). The meshes'
+// vertices and triangles are read apart by pugixml where they can be (mesh_xml_3mf.h), and lib3mf
+// reads the package with those lists emptied; where it refuses that, it reads the file itself.
 #include "io/formats.h"
 #include "io/mesh_xml_3mf.h"
 #include "io/units_3mf.h"
