@@ -17,6 +17,13 @@
 //                               and median of each), then detect, repair and write,
 //                               best of RUNS: the parse/floor ratio and the parse/compute/write
 //                               split measured side by side
+//   read-3mf DIR [RUNS] [F.3mf...] 3MF against binary STL (DESIGN.md section 9: "3MF read within
+//                               2x of binary STL per face"): writes the clean 1M torus and the
+//                               1M checkerboard as .3mf and .stl into DIR (once), and each F's
+//                               triangles as DIR/F.stl; then reads every 3MF (its meshes read
+//                               apart, and by lib3mf alone) and STL RUNS (5) times in one
+//                               process, in a shuffled order every round; prints the best time
+//                               per face of each and the 3MF/STL ratios per model
 //
 // Every command prints one line: what it did and a count, so a wrong run is visible.
 #include "meshbridge/detect_defects.h"
@@ -209,6 +216,68 @@ int split(const std::string& path, int runs) {
   return 0;
 }
 
+//! See the usage at the top: the best read time per face of 3MF (its meshes read apart, and by
+//! lib3mf alone) and of binary STL, side by side.
+int read_3mf(const std::string& dir, int runs, const std::vector<std::string>& given) {
+  const std::vector<std::pair<std::string, std::function<Soup()>>> models = {
+      {"torus_1m", [] { return models::torus_grid(1176, 448); }},
+      {"checkerboard_1m", [] { return models::checkerboard_cubes(56); }}};
+  std::vector<std::pair<std::string, std::string>> pairs;  // 3MF, binary STL
+  for (const auto& [name, make_soup] : models) {
+    const std::string base = dir + "/" + name;
+    if (access((base + ".3mf").c_str(), R_OK) != 0 || access((base + ".stl").c_str(), R_OK) != 0) {
+      IndexedMesh mesh;
+      mesh.soup = make_soup();
+      write_mesh(base + ".stl", mesh);
+      write_mesh(base + ".3mf", mesh);
+    }
+    pairs.emplace_back(base + ".3mf", base + ".stl");
+  }
+  for (const std::string& path : given) {  // a real file, against its own triangles as STL
+    const std::size_t slash = path.find_last_of('/');
+    const std::string stem = path.substr(slash == std::string::npos ? 0 : slash + 1);
+    const std::string stl = dir + "/" + stem.substr(0, stem.find_last_of('.')) + ".stl";
+    IndexedMesh mesh;
+    mesh.soup = read_soup(path);
+    write_mesh(stl, mesh);
+    pairs.emplace_back(path, stl);
+  }
+  // Each read: a file and whether lib3mf reads it alone (MESHBRIDGE_3MF_MESHES=lib3mf).
+  std::vector<std::pair<std::string, bool>> reads;
+  for (const auto& [three_mf, stl] : pairs) {
+    reads.emplace_back(three_mf, false);
+    reads.emplace_back(three_mf, true);
+    reads.emplace_back(stl, false);
+  }
+  std::vector<double> best(reads.size(), 1e30);
+  std::vector<std::size_t> faces(reads.size(), 0);
+  std::vector<std::size_t> order(reads.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::mt19937 random(7);
+  for (int r = 0; r < runs; ++r) {
+    std::shuffle(order.begin(), order.end(), random);
+    for (std::size_t i : order) {
+      if (reads[i].second)
+        setenv("MESHBRIDGE_3MF_MESHES", "lib3mf", 1);
+      best[i] =
+          std::min(best[i], seconds_of([&] { faces[i] = read_soup(reads[i].first).num_faces(); }));
+      unsetenv("MESHBRIDGE_3MF_MESHES");
+    }
+  }
+  const auto per_face = [&](std::size_t i) { return best[i] / double(faces[i]) * 1e6; };
+  for (std::size_t i = 0; i + 2 < reads.size(); i += 3) {
+    std::printf(
+        "read-3mf %s (%zu faces): 3MF %.4f s (%.3f us/face; lib3mf alone %.4f s, %.3f us/face), "
+        "binary STL %.4f s (%.3f us/face): 3MF/STL %.2fx (lib3mf alone %.2fx), best of %d, "
+        "shuffled\n",
+        reads[i].first.c_str(), faces[i], best[i], per_face(i), best[i + 1], per_face(i + 1),
+        best[i + 2], per_face(i + 2), per_face(i) / per_face(i + 2),
+        per_face(i + 1) / per_face(i + 2), runs);
+  }
+  return 0;
+}
+
 double floor_sum(const std::string& path, std::size_t& numbers) {
   const int fd = ::open(path.c_str(), O_RDONLY);
   struct stat status {};
@@ -268,6 +337,10 @@ int main(int argc, char** argv) {
       return parse(argv[2]);
     if (command == "floor" && argc == 3)
       return floor_pass(argv[2]);
+    if (command == "read-3mf" && argc >= 3) {
+      return read_3mf(argv[2], std::max(1, argc >= 4 ? std::atoi(argv[3]) : 5),
+                      std::vector<std::string>(argv + std::min(argc, 4), argv + argc));
+    }
     if (command == "split" && (argc == 3 || argc == 4))
       return split(argv[2], std::max(1, argc == 4 ? std::atoi(argv[3]) : 5));
   } catch (const std::exception& e) {
@@ -276,6 +349,7 @@ int main(int argc, char** argv) {
   }
   std::fprintf(stderr,
                "usage: meshbridge-io-bench make DIR | make-soup DIR | openmesh-read FILE | "
-               "openmesh-readwrite IN OUT | parse FILE | floor FILE | split FILE [RUNS]\n");
+               "openmesh-readwrite IN OUT | parse FILE | floor FILE | split FILE [RUNS] | "
+               "read-3mf DIR [RUNS] [FILE.3mf...]\n");
   return 2;
 }

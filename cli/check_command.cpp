@@ -73,6 +73,11 @@ int run_check(const CheckArguments& arguments) {
       std::cout << "  unit: " << attributes.length_unit
                 << " (the 3MF model's; coordinates as written, in that unit)\n";
     }
+    const std::string others = describe_face_objects(attributes.face_objects);
+    if (!others.empty()) {
+      std::cout << "  3MF objects that are not the printed model: " << others
+                << " (kept apart in a 3MF output)\n";
+    }
     std::cout << to_text(report);
     if (crossings)
       std::cout << to_text(*crossings, arguments.elements ? crossings->face_pairs.size() : 10);

@@ -154,8 +154,7 @@ int run_repair(RepairArguments& arguments) {
       crossings =
           std::make_unique<SelfIntersectionReport>(find_self_intersections(result.mesh.soup));
     write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
-    written =
-        describe_written(out, result.mesh.soup, attributes, result.report.gaps.vertices_welded);
+    written = describe_written(out, result.mesh, attributes, result.report.gaps.vertices_welded);
     written.copies_moved = separated.vertices_moved;
     written.separation = separated.distance;
     std::error_code status_error;  // (a device or pipe cannot be read back)

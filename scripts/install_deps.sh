@@ -10,6 +10,7 @@ packages=(build-essential cmake pkg-config libopenmesh-dev libgtest-dev googlete
   prusa-slicer admesh jq  # the slicer judge (tests/printer)
   clang-format  # the test command checks every C++ file's formatting (.clang-format)
   lib3mf-dev  # 3MF read and write (core)
+  libpugixml-dev libzip-dev libdeflate-dev  # 3MF meshes read apart from lib3mf (core, faster)
   libcgal-dev libgmp-dev libmpfr-dev  # hole filling (core: CGAL PMP triangulate_hole, header-only)
   "$@")
 

@@ -257,7 +257,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     if (stl && options.separate_stl_copies && repaired.report.vertices_split > 0)
       separated = separate_copies_for_stl(repaired.mesh);
     write_mesh(job.output, repaired.mesh, &attributes);  // maps them through the origins
-    result.written = describe_written(job.output, repaired.mesh.soup, attributes,
+    result.written = describe_written(job.output, repaired.mesh, attributes,
                                       repaired.report.gaps.vertices_welded);
     result.written.copies_moved = separated.vertices_moved;
     result.written.separation = separated.distance;

@@ -133,6 +133,39 @@ struct NotKept {
   bool clamped = false;
 };
 
+//! The type of a 3MF object (3MF Core Specification 1.2, section 4.1: object type).
+enum class ObjectType : std::uint8_t { model, support, solidsupport, surface, other };
+
+//! The specification's name of `type`: "model", "support", "solidsupport", "surface", "other".
+const char* object_type_name(ObjectType type);
+
+//! What a face was part of in a 3MF file: its object's type, and whether a build item placed it.
+struct FaceObject {
+  ObjectType type = ObjectType::model;
+  //! False for a face of a mesh object that no build item reaches (a slicer does not print it).
+  bool in_build = true;
+  friend bool operator==(const FaceObject& x, const FaceObject& y) {
+    return x.type == y.type && x.in_build == y.in_build;
+  }
+  friend bool operator!=(const FaceObject& x, const FaceObject& y) { return !(x == y); }
+  //! True for a face of a placed "model" object: what a slicer prints as the model.
+  bool is_printed_model() const { return type == ObjectType::model && in_build; }
+};
+
+//! The faces of 3MF objects that a slicer does not print as the model, by kind in order of
+//! their first face, e.g. "4 faces of type support, 4 faces of an object in no build item, 2
+//! faces of type other in no build item"; empty when there are none.
+std::string describe_face_objects(const std::vector<FaceObject>& face_objects);
+
+//! A 3MF model's metadata entry (3MF Core Specification 1.2, section 3.4.2: <metadata>).
+struct Metadata {
+  std::string name;
+  std::string value;
+  friend bool operator==(const Metadata& x, const Metadata& y) {
+    return x.name == y.name && x.value == y.value;
+  }
+};
+
 //! What a file carries besides positions and polygons, where MeshBridge keeps it.
 struct MeshAttributes {
   std::vector<Rgba> vertex_colors;  //!< empty, or one per soup vertex
@@ -163,6 +196,16 @@ struct MeshAttributes {
   //! are kept as written, in this unit: the 3MF writer writes it back, and describe_unwritten()
   //! names a unit other than millimetres that an output without units cannot hold.
   std::string length_unit;
+  //! Empty, or one per soup face: the 3MF object each face was read from (its type, and whether
+  //! a build item placed it); filled only when some face is not of a placed "model" object (a
+  //! support, a surface, an object in no build item). The 3MF writer writes the faces of each
+  //! kind as an object of its own, of that type (outside the build where they were);
+  //! describe_unwritten() names what other formats make of them. An added face (origin
+  //! kNoIndex: a filled hole) is of the object of the faces at its first corner.
+  std::vector<FaceObject> face_objects;
+  //! The 3MF model's <metadata> entries in file order (title, designer, an application's own
+  //! names...); the 3MF writer writes them back, describe_unwritten() names them for others.
+  std::vector<Metadata> metadata;
 
   //! True if element `i` has a colour of its own (a colour vector that is non-empty and no
   //! missing flag). `i` may be kNoIndex (an element repair added: no colour).
@@ -189,8 +232,9 @@ Soup read_soup(const std::string& path, ReadInfo* info = nullptr,
 //! colours through `mesh.face_origin` (the copies of a split vertex and the pieces of a split
 //! face carry their original's colour), OBJ groups moved to the first output face of each (a
 //! group left with no face gives way to the next one that starts there); the missing-colour flags
-//! mapped the same way; channels, `material_libraries`, the vt/vn counts, `double_precision` and
-//! `length_unit` kept. An origin outside the input (kNoIndex: a face added by hole filling) gets
+//! mapped the same way; the 3MF objects of the faces (`face_objects`) through `mesh.face_origin`
+//! too; channels, `material_libraries`, the vt/vn counts, `double_precision`, `length_unit` and
+//! `metadata` kept. An origin outside the input (kNoIndex: a face added by hole filling) gets
 //! the default colour and is flagged as having none. The result belongs to `mesh` itself, element
 //! by element: it is for callers that keep attributes per output element. write_mesh() takes the
 //! input's attributes and maps them itself; handing it these instead would map them twice. \pre
@@ -236,6 +280,11 @@ struct WrittenOutput {
 //! rounded to 32-bit floats: STL holds no more"); and, when the input had vertex colours and
 //! repair welded `vertices_welded` vertices (RepairReport::gaps), that their colours gave way.
 WrittenOutput describe_written(const std::string& path, const Soup& soup,
+                               const MeshAttributes& attributes, std::size_t vertices_welded = 0);
+//! describe_written() of the mesh write_mesh(path, mesh, &attributes) wrote: the same, and
+//! where the faces are of several 3MF objects (MeshAttributes::face_objects, mapped through
+//! `mesh.face_origin`), a 3MF output's rounding is measured object by object.
+WrittenOutput describe_written(const std::string& path, const IndexedMesh& mesh,
                                const MeshAttributes& attributes, std::size_t vertices_welded = 0);
 
 //! True if write_mesh and write_file_atomically write `path` in place rather than through a

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/io.h"
 
+#include "io/formats.h"
+
 #include <algorithm>
 
 namespace meshbridge {
@@ -28,6 +30,52 @@ void carry_colors(const std::vector<Rgba>& colors, const std::vector<bool>& miss
 
 }  // namespace
 
+namespace detail {
+
+std::vector<FaceObject> output_face_objects(const Soup& soup, const std::vector<Index>& face_origin,
+                                            const std::vector<FaceObject>& input) {
+  std::vector<FaceObject> kinds;
+  if (input.empty())
+    return kinds;
+  const auto origin_of = [&](std::size_t f) {
+    return face_origin.empty() ? static_cast<Index>(f) : face_origin[f];
+  };
+  kinds.resize(soup.num_faces());
+  bool added = false, other = false;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const Index origin = origin_of(f);
+    added = added || origin >= input.size();
+    kinds[f] = origin < input.size() ? input[origin] : FaceObject{};
+    other = other || !kinds[f].is_printed_model();
+  }
+  if (added && other) {
+    // The kind at each vertex: of the first face with an input that uses it.
+    std::vector<FaceObject> at_vertex(soup.num_vertices());
+    std::vector<bool> known(soup.num_vertices(), false);
+    for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+      if (origin_of(f) >= input.size())
+        continue;
+      for (Index v : soup.polygon(f)) {
+        if (v < known.size() && !known[v]) {
+          known[v] = true;
+          at_vertex[v] = kinds[f];
+        }
+      }
+    }
+    for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+      const PolygonView polygon = soup.polygon(f);
+      if (origin_of(f) >= input.size() && polygon.size() > 0 && polygon[0] < known.size() &&
+          known[polygon[0]])
+        kinds[f] = at_vertex[polygon[0]];
+    }
+  }
+  if (!other)
+    kinds.clear();
+  return kinds;
+}
+
+}  // namespace detail
+
 MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& mesh) {
   MeshAttributes out;
   out.double_precision = input.double_precision;
@@ -38,6 +86,9 @@ MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& 
   out.texture_coordinates = input.texture_coordinates;
   out.normals = input.normals;
   out.not_kept = input.not_kept;
+  out.metadata = input.metadata;
+  // The 3MF object of each output face (an added face: of the faces around it).
+  out.face_objects = detail::output_face_objects(mesh.soup, mesh.face_origin, input.face_objects);
   carry_colors(input.vertex_colors, input.vertex_color_missing, mesh.vertex_origin,
                out.vertex_colors, out.vertex_color_missing);
   carry_colors(input.face_colors, input.face_color_missing, mesh.face_origin, out.face_colors,

@@ -4,12 +4,16 @@
 
 #include "io/formats.h"
 #include "io/triangulate.h"
+#ifdef MESHBRIDGE_WITH_3MF
+#include "io/objects_3mf.h"
+#endif
 #include "meshbridge/counted.h"
 #include "meshbridge/io.h"
 
 #include <algorithm>
 #include <charconv>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace meshbridge {
@@ -70,7 +74,55 @@ std::size_t missing_count(const std::vector<bool>& missing) {
   return static_cast<std::size_t>(std::count(missing.begin(), missing.end(), true));
 }
 
+//! The names of `metadata`, e.g. "Title, Designer".
+std::string metadata_names(const std::vector<Metadata>& metadata) {
+  std::string text;
+  for (const Metadata& entry : metadata)
+    text += (text.empty() ? "" : ", ") + entry.name;
+  return text;
+}
+
 }  // namespace
+
+std::string describe_face_objects(const std::vector<FaceObject>& face_objects) {
+  std::vector<std::pair<FaceObject, std::size_t>> kinds;
+  for (const FaceObject& kind : face_objects) {
+    if (kind.is_printed_model())
+      continue;
+    const auto known =
+        std::find_if(kinds.begin(), kinds.end(), [&](const auto& k) { return k.first == kind; });
+    if (known == kinds.end())
+      kinds.emplace_back(kind, 1);
+    else
+      ++known->second;
+  }
+  std::string text;
+  for (const auto& [kind, count] : kinds) {
+    text += (text.empty() ? "" : ", ") + counted(count, "face");
+    if (kind.type != ObjectType::model)
+      text += std::string(" of type ") + object_type_name(kind.type);
+    if (!kind.in_build)
+      text +=
+          kind.type != ObjectType::model ? " in no build item" : " of an object in no build item";
+  }
+  return text;
+}
+
+const char* object_type_name(ObjectType type) {
+  switch (type) {
+    case ObjectType::model:
+      return "model";
+    case ObjectType::support:
+      return "support";
+    case ObjectType::solidsupport:
+      return "solidsupport";
+    case ObjectType::surface:
+      return "surface";
+    case ObjectType::other:
+      break;
+  }
+  return "other";
+}
 
 std::vector<std::string> describe_unwritten(const std::string& path,
                                             const MeshAttributes& attributes) {
@@ -139,6 +191,18 @@ std::vector<std::string> describe_unwritten(const std::string& path,
                    " has no unit, and the coordinates stay as written, in " +
                    units(attributes.length_unit) + " (a slicer reads them as millimetres)");
   }
+  // Supports, surfaces and objects in no build item: 3MF keeps each an object of its own.
+  const std::string others = describe_face_objects(attributes.face_objects);
+  if (format != Format::threemf && !others.empty()) {
+    lost.push_back("3MF objects that are not the printed model (" + others +
+                   ") written into the one mesh with the model: " + name +
+                   " has no objects, so a slicer prints them as part of the model (write 3MF "
+                   "to keep them apart)");
+  }
+  if (format != Format::threemf && !attributes.metadata.empty()) {
+    lost.push_back("3MF metadata not written (" + counted(attributes.metadata.size(), "entry") +
+                   ": " + metadata_names(attributes.metadata) + "): " + name + " holds none");
+  }
   if (format != Format::obj &&
       (!attributes.face_groups.empty() || !attributes.material_libraries.empty())) {
     lost.push_back("OBJ groups and materials not written (" +
@@ -173,12 +237,22 @@ std::vector<std::string> describe_not_held(const MeshAttributes& attributes) {
     held_elsewhere.push_back(counted(attributes.normals, "normal") + " (vn)");
   if (!attributes.length_unit.empty() && attributes.length_unit != "millimeter")
     held_elsewhere.push_back("3MF unit '" + attributes.length_unit + "'");
+  const std::string others = describe_face_objects(attributes.face_objects);
+  if (!others.empty())
+    held_elsewhere.push_back("3MF objects that are not the printed model (" + others + ")");
+  if (!attributes.metadata.empty()) {
+    held_elsewhere.push_back("3MF metadata (" + counted(attributes.metadata.size(), "entry") +
+                             ": " + metadata_names(attributes.metadata) + ")");
+  }
   for (const NotKept& n : attributes.not_kept)
     held_elsewhere.push_back(n.what + ", on " + counted(n.count, n.noun));
   return held_elsewhere;
 }
 
+namespace {
+
 WrittenOutput describe_written(const std::string& path, const Soup& soup,
+                               const std::vector<Index>& face_origin,
                                const MeshAttributes& attributes, std::size_t vertices_welded) {
   WrittenOutput written;
   const detail::Format format = detail::format_of(path);
@@ -206,7 +280,8 @@ WrittenOutput describe_written(const std::string& path, const Soup& soup,
   }
 #ifdef MESHBRIDGE_WITH_3MF
   if (format == detail::Format::threemf) {
-    const detail::ThreeMfRounding r = detail::measure_3mf_rounding(path, soup);
+    const detail::ThreeMfRounding r = detail::measure_3mf_rounding(
+        path, soup, detail::output_face_objects(soup, face_origin, attributes.face_objects));
     if (r.moved > 0) {
       written.left_out.push_back("positions of " + counted(r.moved, "vertex") + " moved by up to " +
                                  shortest(r.largest_move) +
@@ -221,6 +296,18 @@ WrittenOutput describe_written(const std::string& path, const Soup& soup,
   }
 #endif
   return written;
+}
+
+}  // namespace
+
+WrittenOutput describe_written(const std::string& path, const Soup& soup,
+                               const MeshAttributes& attributes, std::size_t vertices_welded) {
+  return describe_written(path, soup, {}, attributes, vertices_welded);
+}
+
+WrittenOutput describe_written(const std::string& path, const IndexedMesh& mesh,
+                               const MeshAttributes& attributes, std::size_t vertices_welded) {
+  return describe_written(path, mesh.soup, mesh.face_origin, attributes, vertices_welded);
 }
 
 }  // namespace meshbridge

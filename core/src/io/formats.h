@@ -77,8 +77,14 @@ void read_stl(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
 //! (components objects: each component's object under the component's transform, then the
 //! item's, to any depth up to 64); an object placed twice is read twice. Then every mesh object
 //! that no build item reaches, as stored, so that nothing in the file is dropped. Vertex indices
-//! are offset per placement; positions are float32 from the file, transformed in double. No
-//! colours.
+//! are offset per placement; positions are float32 from the file, transformed in double. A
+//! placement that mirrors (the product of the transforms down to the mesh has a negative
+//! determinant) reverses its triangles' corner order, as slicers do, so that a correct file is
+//! read outward. With `attributes`: each face's 3MF object (type, in the build or not) where
+//! some face is not of a placed "model" object, the unit and the model's metadata. No colours.
+//! The meshes' vertex and triangle lists are read by pugixml where they can be
+//! (package_without_meshes(); the same soup to the bit as lib3mf's, about 3x as fast), unless
+//! MESHBRIDGE_3MF_MESHES=lib3mf.
 void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes);
 
 void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
@@ -95,8 +101,11 @@ void write_stl(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
 //! Rounding within the range is not an error (describe_written() names it).
 void require_float_range(const Soup& soup, const std::string& path, const char* format);
 
-//! 3MF through lib3mf 1.8 into `out.temporary_path()`: one mesh object with every polygon fanned
-//! from its first corner, positions as float32 (3MF's precision), one build item; no colours.
+//! 3MF through lib3mf 1.8 into `out.temporary_path()`: one mesh object per 3MF object kind of
+//! the faces (MeshAttributes::face_objects; one object when there are none: the model), each of
+//! its type, in a build item of its own unless it was in none (or is of type "other"); polygons
+//! cut into triangles (triangulate_polygon()), positions as float32 (3MF's precision); the
+//! attributes' unit and metadata; no colours.
 void write_3mf(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes* attributes,
                const WriteOptions& options);
 
@@ -109,14 +118,24 @@ struct ThreeMfRounding {
   std::size_t collapsed = 0;  //!< triangles with two corners that now coincide (none before)
   bool measured = false;      //!< false if the file could not be read back (nothing measured)
 };
-//! See ThreeMfRounding. Vertex order is the writer's (one object, one build item).
-ThreeMfRounding measure_3mf_rounding(const std::string& path, const Soup& soup);
+//! See ThreeMfRounding. `face_objects` are the kinds write_3mf() wrote the faces of `soup` with
+//! (output_face_objects(): one per face, or empty), which tell its objects' vertex order.
+ThreeMfRounding measure_3mf_rounding(const std::string& path, const Soup& soup,
+                                     const std::vector<FaceObject>& face_objects);
 
 //! Checks `soup` as validate_soup() does and, in the same walk over the faces, classifies every
 //! face as kept, split (pinched) or set aside (< 3 distinct corners) the way repair's WorkingSoup
 //! does, adding the counts to `info` (faces_without_corners are added to faces_set_aside too).
 //! Called by the dispatcher after every reader. \throw InvalidSoupError as validate_soup()
 void account_faces(const Soup& soup, ReadInfo& info);
+
+//! The 3MF object kind of every face of `soup` (`input` belongs to the input soup, one per input
+//! face, mapped through `face_origin`, which may be empty: identity). A face repair added (origin
+//! kNoIndex: a filled hole) takes the kind of the first face that has an input and shares its
+//! first corner with it, else of the model: a patch in a support stays in the support. Empty
+//! when `input` is, or when every face is of a placed "model" object.
+std::vector<FaceObject> output_face_objects(const Soup& soup, const std::vector<Index>& face_origin,
+                                            const std::vector<FaceObject>& input);
 
 //! White, the colour of an element the file gave none (MeshAttributes::*_color_missing).
 inline constexpr Rgba kNoColor{255, 255, 255, 255};

@@ -62,12 +62,15 @@ void check_attributes(const std::string& path, const IndexedMesh& mesh,
     }
     if (colours < needed) {
       throw WriteError(path + ": the attributes hold " + std::to_string(colours) + " " + what +
-                       " colour(s) but the mesh needs " + std::to_string(needed) +
+                       "(s) but the mesh needs " + std::to_string(needed) +
                        " (attributes of another mesh?)");
     }
   };
-  check(attributes->vertex_colors.size(), mesh.soup.num_vertices(), mesh.vertex_origin, "vertex");
-  check(attributes->face_colors.size(), mesh.soup.num_faces(), mesh.face_origin, "face");
+  check(attributes->vertex_colors.size(), mesh.soup.num_vertices(), mesh.vertex_origin,
+        "vertex colour");
+  check(attributes->face_colors.size(), mesh.soup.num_faces(), mesh.face_origin, "face colour");
+  check(attributes->face_objects.size(), mesh.soup.num_faces(), mesh.face_origin,
+        "face's 3MF object");
   const auto check_flags = [&](std::size_t flags, std::size_t colours, const char* what) {
     if (flags != 0 && flags != colours) {
       throw WriteError(path + ": the attributes hold " + std::to_string(flags) + " " + what +

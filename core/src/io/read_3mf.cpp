@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // 3MF reading through lib3mf 1.8's v1 C API: what a slicer prints, the build items with their
-// transforms (3MF Core Specification 1.2, section 3.4: build; 4.1: components).
+// transforms (3MF Core Specification 1.2, section 3.4: build; 4.1: components). The meshes'
+// vertices and triangles are read apart by pugixml where they can be (mesh_xml_3mf.h), and lib3mf
+// reads the package with those lists emptied; where it refuses that, it reads the file itself.
 #include "io/formats.h"
+#include "io/mesh_xml_3mf.h"
 #include "io/units_3mf.h"
 
 #include "meshbridge/errors.h"
@@ -10,7 +13,12 @@
 #include <Model/COM/NMR_DLLInterfaces.h>
 
 #include <array>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <map>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace meshbridge::detail {
@@ -60,6 +68,17 @@ Affine compose(const Affine& outer, const Affine& inner) {
   return c;
 }
 
+// True if `a` mirrors (its linear part has a negative determinant): the triangles it places
+// would be turned inside out unless their corner order is reversed, as slicers do (PrusaSlicer
+// reverses them). `a` is the whole placement, composed down the component tree: two mirrors
+// cancel.
+bool mirrors(const Affine& a) {
+  const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                     a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                     a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+  return det < 0;
+}
+
 Point apply(const Affine& a, const float p[3]) {
   Point q;
   for (int j = 0; j < 3; ++j)
@@ -70,20 +89,90 @@ Point apply(const Affine& a, const float p[3]) {
 // Reads models, their objects and their build into one soup.
 class Reader {
  public:
-  Reader(const std::string& path, Soup& soup) : path_(path), soup_(soup) {}
+  using MeshesXml = std::map<std::uint32_t, MeshXml>;
+  //! `meshes`: the meshes pugixml read, by object id (may be null: lib3mf read them all).
+  Reader(const std::string& path, Soup& soup, const MeshesXml* meshes)
+      : path_(path), soup_(soup), meshes_(meshes) {}
 
   //! What the placed mesh objects carry that MeshBridge reads past (see add_mesh).
   struct Properties {
     std::size_t triangles = 0;  //!< triangles with a colour, material or texture coordinate
     std::size_t names = 0;      //!< mesh objects with a name
-    std::size_t unplaced = 0;   //!< mesh objects in no build item, read as stored
-    std::size_t not_model = 0;  //!< mesh objects of another type than "model" (support...)
   };
   const Properties& properties() const { return properties_; }
 
-  // Appends the triangles of mesh object `object`, its vertices mapped by `placement`.
-  void add_mesh(NMR::PLib3MFModelObjectResource* object, const Affine& placement,
-                bool transformed) {
+  //! One per soup face (MeshAttributes::face_objects), or empty when every face is of a placed
+  //! "model" object.
+  std::vector<FaceObject> face_objects() const {
+    std::vector<FaceObject> faces;
+    if (!any_other_object_)
+      return faces;
+    faces.reserve(soup_.num_faces());
+    for (std::size_t r = 0; r < runs_.size(); ++r) {
+      const std::size_t end = r + 1 < runs_.size() ? runs_[r + 1].first : soup_.num_faces();
+      faces.resize(end, runs_[r].second);
+    }
+    return faces;
+  }
+
+  // Appends the triangles of mesh object `object`, its vertices mapped by `placement` (their
+  // corner order reversed where it mirrors); `in_build` tells whether a build item placed it.
+  // The mesh is the one pugixml read (`meshes`, by the object's id) or else lib3mf's.
+  void add_mesh(NMR::PLib3MFModelObjectResource* object, const Affine& placement, bool transformed,
+                bool in_build) {
+    DWORD id = 0;
+    check(NMR::lib3mf_resource_getresourceid(object, &id), path_, "get an object's id");
+    const auto parsed = meshes_ != nullptr ? meshes_->find(id) : MeshesXml::const_iterator();
+    const bool from_xml = meshes_ != nullptr && parsed != meshes_->end();
+    const float* positions = nullptr;
+    const std::uint32_t* corners = nullptr;
+    std::size_t vertex_count = 0, triangle_count = 0;
+    if (from_xml) {
+      positions = parsed->second.positions.data();
+      corners = parsed->second.corners.data();
+      vertex_count = parsed->second.positions.size() / 3;
+      triangle_count = parsed->second.corners.size() / 3;
+    } else {
+      read_lib3mf_mesh(object);
+      positions = vertices_.empty() ? nullptr : vertices_[0].m_fPosition;
+      corners = triangles_.empty() ? nullptr : triangles_[0].m_nIndices;
+      vertex_count = vertices_.size();
+      triangle_count = triangles_.size();
+    }
+    DWORD type = NMR::MODELOBJECTTYPE_MODEL;
+    check(NMR::lib3mf_object_gettype(object, &type), path_, "get an object's type");
+    const FaceObject kind{object_type(type), in_build};
+    any_other_object_ = any_other_object_ || !kind.is_printed_model();
+    if (runs_.empty() || runs_.back().second != kind)
+      runs_.emplace_back(soup_.num_faces(), kind);
+    const bool reversed = transformed && mirrors(placement);
+    const Index offset = static_cast<Index>(soup_.num_vertices());
+    soup_.positions.reserve(soup_.num_vertices() + vertex_count);
+    for (std::size_t v = 0; v < vertex_count; ++v) {
+      const float* p = positions + 3 * v;
+      soup_.add_vertex(transformed ? apply(placement, p) : Point(p[0], p[1], p[2]));
+    }
+    soup_.corner_vertices.reserve(soup_.num_corners() + 3 * triangle_count);
+    soup_.face_begin.reserve(soup_.num_faces() + 1 + triangle_count);
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+      const std::uint32_t* i = corners + 3 * t;
+      for (int c = 0; c < 3; ++c) {
+        if (i[c] >= vertex_count) {
+          throw ReadError(path_ + ": 3MF triangle " + std::to_string(soup_.num_faces()) +
+                          " uses vertex " + std::to_string(i[c]) + " of an object with " +
+                          std::to_string(vertex_count) + " vertices");
+        }
+      }
+      if (reversed)
+        soup_.add_polygon({offset + i[0], offset + i[2], offset + i[1]});
+      else
+        soup_.add_polygon({offset + i[0], offset + i[1], offset + i[2]});
+    }
+    count_properties(object, triangle_count, from_xml);
+  }
+
+  // lib3mf's mesh of `object` into vertices_ and triangles_.
+  void read_lib3mf_mesh(NMR::PLib3MFModelObjectResource* object) {
     DWORD vertex_count = 0, triangle_count = 0;
     check(NMR::lib3mf_meshobject_getvertexcount(object, &vertex_count), path_, "count vertices");
     check(NMR::lib3mf_meshobject_gettrianglecount(object, &triangle_count), path_,
@@ -97,36 +186,18 @@ class Reader {
       check(NMR::lib3mf_meshobject_gettriangleindices(object, triangles_.data(), triangle_count,
                                                       nullptr),
             path_, "get triangles");
-    const Index offset = static_cast<Index>(soup_.num_vertices());
-    for (const auto& v : vertices_) {
-      const float* p = v.m_fPosition;
-      soup_.add_vertex(transformed ? apply(placement, p) : Point(p[0], p[1], p[2]));
-    }
-    for (const auto& t : triangles_) {
-      for (DWORD i : t.m_nIndices) {
-        if (i >= vertex_count) {
-          throw ReadError(path_ + ": 3MF triangle " + std::to_string(soup_.num_faces()) +
-                          " uses vertex " + std::to_string(i) + " of an object with " +
-                          std::to_string(vertex_count) + " vertices");
-        }
-      }
-      soup_.add_polygon(
-          {offset + t.m_nIndices[0], offset + t.m_nIndices[1], offset + t.m_nIndices[2]});
-    }
-    count_properties(object, triangle_count);
   }
 
   // Counts the triangles of `object` that carry a property (a colour of an m:colorgroup, a base
   // material, texture coordinates; the object's own pid gives one to every triangle without
-  // one), whether the object has a name, and whether it is of another type than "model": read
-  // past, so named (NotKept).
-  void count_properties(NMR::PLib3MFModelObjectResource* object, DWORD triangle_count) {
+  // one) and whether the object has a name: read past, so named (NotKept).
+  // A mesh pugixml read (`from_xml`) has no triangle properties (read_meshes_xml() leaves such
+  // meshes to lib3mf).
+  void count_properties(NMR::PLib3MFModelObjectResource* object, std::size_t triangle_count,
+                        bool from_xml) {
     ULONG name_length = 0;
     if (NMR::lib3mf_object_getnameutf8(object, nullptr, 0, &name_length) == LIB3MF_OK)
       properties_.names += name_length > 0;
-    DWORD type = NMR::MODELOBJECTTYPE_MODEL;
-    if (NMR::lib3mf_object_gettype(object, &type) == LIB3MF_OK)
-      properties_.not_model += type != NMR::MODELOBJECTTYPE_MODEL;
     Released defaults, handler;
     NMR::eModelPropertyType property = NMR::MODELPROPERTYTYPE_NONE;
     bool object_default = false;
@@ -134,6 +205,10 @@ class Reader {
         NMR::lib3mf_defaultpropertyhandler_getpropertytype(defaults.instance, &property) ==
             LIB3MF_OK) {
       object_default = property != NMR::MODELPROPERTYTYPE_NONE;
+    }
+    if (from_xml) {
+      properties_.triangles += object_default ? triangle_count : 0;
+      return;
     }
     if (NMR::lib3mf_meshobject_createpropertyhandler(object, &handler.instance) != LIB3MF_OK)
       return;
@@ -159,7 +234,7 @@ class Reader {
           "tell an object's kind");
     if (is_mesh) {
       placed_.insert(id);
-      add_mesh(object, placement, transformed);
+      add_mesh(object, placement, transformed, true);
       return;
     }
     if (!is_components)
@@ -214,8 +289,7 @@ class Reader {
                DWORD id = 0;
                check(NMR::lib3mf_resource_getresourceid(object, &id), path_, "get an object's id");
                if (placed_.count(id) == 0) {
-                 add_mesh(object, kIdentity, false);
-                 ++properties_.unplaced;
+                 add_mesh(object, kIdentity, false, false);
                }
              });
   }
@@ -251,31 +325,101 @@ class Reader {
     return true;
   }
 
+  // lib3mf's eModelObjectType as ObjectType ("other" for a number it does not list).
+  static ObjectType object_type(DWORD type) {
+    switch (type) {
+      case NMR::MODELOBJECTTYPE_MODEL:
+        return ObjectType::model;
+      case NMR::MODELOBJECTTYPE_SUPPORT:
+        return ObjectType::support;
+      case NMR::MODELOBJECTTYPE_SOLIDSUPPORT:
+        return ObjectType::solidsupport;
+      case NMR::MODELOBJECTTYPE_SURFACE:
+        return ObjectType::surface;
+      default:
+        return ObjectType::other;
+    }
+  }
+
   static constexpr int kMaxDepth = 64;
   const std::string& path_;
   Soup& soup_;
+  const MeshesXml* meshes_;
   std::set<DWORD> placed_;  // mesh objects some build item reached
   std::vector<NMR::MODELMESHVERTEX> vertices_;
   std::vector<NMR::MODELMESHTRIANGLE> triangles_;
   Properties properties_;
+  // The soup's faces by object kind: (first face, kind) where the kind changes.
+  std::vector<std::pair<std::size_t, FaceObject>> runs_;
+  bool any_other_object_ = false;
 };
+
+// The model's <metadata> entries, in file order.
+void read_metadata(NMR::PLib3MFModel* model, const std::string& path,
+                   std::vector<Metadata>& metadata) {
+  DWORD count = 0;
+  check(NMR::lib3mf_model_getmetadatacount(model, &count), path, "count the metadata");
+  const auto text = [&](auto get, DWORD index) {
+    ULONG length = 0;
+    check(get(model, index, nullptr, 0, &length), path, "get a metadata entry");
+    std::string s(length + 1, '\0');
+    check(get(model, index, s.data(), length + 1, &length), path, "get a metadata entry");
+    s.resize(std::strlen(s.c_str()));
+    return s;
+  };
+  for (DWORD m = 0; m < count; ++m) {
+    metadata.push_back({text(NMR::lib3mf_model_getmetadatakeyutf8, m),
+                        text(NMR::lib3mf_model_getmetadatavalueutf8, m)});
+  }
+}
+
+// Reads the package into `model`: `package` if given (the meshes read apart), else the file.
+HRESULT read_package(Released& model, const std::string& path, std::vector<unsigned char>& package,
+                     DWORD& code, std::string& message) {
+  Released reader;
+  check(NMR::lib3mf_createmodel(&model.instance), path, "create a model");
+  check(NMR::lib3mf_model_queryreader(model.instance, "3mf", &reader.instance), path,
+        "create a reader");
+  const HRESULT status =
+      package.empty()
+          ? NMR::lib3mf_reader_readfromfileutf8(reader.instance, path.c_str())
+          : NMR::lib3mf_reader_readfrombuffer(reader.instance, package.data(), package.size());
+  if (status != LIB3MF_OK) {
+    LPCSTR what = nullptr;
+    NMR::lib3mf_getlasterror(reader.instance, &code, &what);
+    message = what != nullptr ? what : "";
+  }
+  return status;
+}
 
 }  // namespace
 
 void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
   const std::string& path = file.path();
-  Released model, reader;
-  check(NMR::lib3mf_createmodel(&model.instance), path, "create a model");
-  check(NMR::lib3mf_model_queryreader(model.instance, "3mf", &reader.instance), path,
-        "create a reader");
-  const HRESULT status = NMR::lib3mf_reader_readfromfileutf8(reader.instance, path.c_str());
+  std::map<std::uint32_t, MeshXml> meshes;
+  std::vector<unsigned char> package;
+#ifdef MESHBRIDGE_WITH_3MF_MESH_XML
+  const char* route = std::getenv("MESHBRIDGE_3MF_MESHES");
+  if (route == nullptr || std::string(route) != "lib3mf")
+    package = package_without_meshes(file.data(), file.size(), meshes);
+#endif
+  Released model;
+  DWORD code = 0;
+  std::string message;
+  HRESULT status = read_package(model, path, package, code, message);
+  if (status != LIB3MF_OK && !package.empty()) {
+    // lib3mf refuses what is left: it reads the whole file, and names the fault.
+    meshes.clear();
+    package = std::vector<unsigned char>();
+    NMR::lib3mf_release(model.instance);
+    model.instance = nullptr;
+    status = read_package(model, path, package, code, message);
+  }
+  package = std::vector<unsigned char>();
   if (status != LIB3MF_OK) {
     // lib3mf's own words ("Could not read ZIP file", "Could not create OPC Part": lib3mf 1.8
     // refuses a package whose relationships name a part the archive lacks).
-    DWORD code = 0;
-    LPCSTR message = nullptr;
-    NMR::lib3mf_getlasterror(reader.instance, &code, &message);
-    std::string why = message != nullptr && *message != '\0' ? message : "unknown error";
+    std::string why = !message.empty() ? message : "unknown error";
     if (why == "Could not create OPC Part")
       why += " (a relationship of the package names a part that is not in the archive?)";
     if (code == NMR_ERROR_INVALIDMODELCOORDINATEINDICES) {
@@ -286,7 +430,7 @@ void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
     throw ReadError(path + ": lib3mf cannot read the file as 3MF: " + why + " (error " +
                     std::to_string(status) + ", lib3mf code " + std::to_string(code) + ")");
   }
-  Reader read(path, soup);
+  Reader read(path, soup, meshes.empty() ? nullptr : &meshes);
   read.add_build(model.instance);
   read.add_unplaced(model.instance);
   info.declared_vertices = soup.num_vertices();
@@ -304,19 +448,11 @@ void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   }
   if (read.properties().names > 0)
     attributes->not_kept.push_back({"3MF object names", read.properties().names, "object"});
-  // What a slicer would not print as part of the model: named, so that it is not taken for it.
-  if (read.properties().unplaced > 0) {
-    attributes->not_kept.push_back(
-        {"3MF mesh objects in no build item (a slicer does not print them), read as stored, "
-         "after the build",
-         read.properties().unplaced, "object", true});
-  }
-  if (read.properties().not_model > 0) {
-    attributes->not_kept.push_back(
-        {"3MF object types other than 'model' (support, solidsupport, surface, other), read as "
-         "model shells",
-         read.properties().not_model, "object", true});
-  }
+  // What a slicer would not print as part of the model (supports, surfaces, objects in no build
+  // item): kept per face, written back as objects of their own (describe_unwritten() names what
+  // other formats make of them).
+  attributes->face_objects = read.face_objects();
+  read_metadata(model.instance, path, attributes->metadata);
 }
 
 }  // namespace meshbridge::detail

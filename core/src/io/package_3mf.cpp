@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "io/package_3mf.h"
+
+#include <libdeflate.h>
+#include <zip.h>
+#include <pugixml.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+
+namespace meshbridge::detail {
+
+Package3mf::Package3mf(const void* data, std::size_t size) {
+  zip_error_t error;
+  zip_error_init(&error);
+  source_ = zip_source_buffer_create(data, size, 0, &error);
+  if (source_ != nullptr) {
+    archive_ = zip_open_from_source(source_, 0, &error);
+    if (archive_ == nullptr) {
+      zip_source_free(source_);
+      source_ = nullptr;
+    }
+  }
+  zip_error_fini(&error);
+}
+
+Package3mf::~Package3mf() {
+  if (archive_ != nullptr)
+    zip_discard(archive_);  // frees the source too
+  else if (source_ != nullptr)
+    zip_source_free(source_);
+}
+
+std::string Package3mf::root_model() const {
+  PartBytes rels;
+  if (!read("_rels/.rels", rels))
+    return {};
+  pugi::xml_document document;
+  if (!document.load_buffer_inplace(rels.data.get(), rels.size))
+    return {};
+  std::string root;
+  for (pugi::xml_node r : document.child("Relationships").children("Relationship")) {
+    const std::string type = r.attribute("Type").value();
+    const std::string suffix = "/3dmodel";
+    if (type.size() > suffix.size() &&
+        type.compare(type.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      if (!root.empty())
+        return {};  // two roots: lib3mf's own choice
+      root = r.attribute("Target").value();
+    }
+  }
+  if (!root.empty() && root[0] == '/')
+    root.erase(0, 1);
+  // Every part named *.model other than the root: models of the production extension.
+  const zip_int64_t entries = zip_get_num_entries(archive_, 0);
+  for (zip_int64_t i = 0; i < entries; ++i) {
+    const char* name = zip_get_name(archive_, static_cast<zip_uint64_t>(i), 0);
+    if (name == nullptr)
+      return {};
+    std::string lower = name;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (lower.size() >= 6 && lower.compare(lower.size() - 6, 6, ".model") == 0 && name != root)
+      return {};
+  }
+  return root;
+}
+
+bool Package3mf::read(const std::string& name, PartBytes& bytes) const {
+  const zip_int64_t index = zip_name_locate(archive_, name.c_str(), 0);
+  zip_stat_t stat;
+  if (index < 0 || zip_stat_index(archive_, static_cast<zip_uint64_t>(index), 0, &stat) != 0 ||
+      (stat.valid & ZIP_STAT_SIZE) == 0 || (stat.valid & ZIP_STAT_COMP_SIZE) == 0 ||
+      (stat.valid & ZIP_STAT_COMP_METHOD) == 0 || (stat.valid & ZIP_STAT_CRC) == 0 ||
+      stat.size > (std::uint64_t(1) << 40) || stat.comp_size > (std::uint64_t(1) << 40)) {
+    return false;
+  }
+  // Deflate expands at most 1032 times: a larger size is a false header (a zip bomb's), left to
+  // lib3mf rather than allocated.
+  if (stat.comp_method == ZIP_CM_DEFLATE && stat.size > 1032 * stat.comp_size + 1024)
+    return false;
+  bytes.size = static_cast<std::size_t>(stat.size);
+  bytes.data.reset(new char[bytes.size + 1]);
+  bytes.data[bytes.size] = '\0';
+  // Deflated parts are inflated whole by libdeflate (about twice zlib's speed), the rest by
+  // libzip.
+  const bool deflated = stat.comp_method == ZIP_CM_DEFLATE;
+  const std::size_t wanted = static_cast<std::size_t>(deflated ? stat.comp_size : stat.size);
+  std::unique_ptr<char[]> compressed(deflated ? new char[wanted + 1] : nullptr);
+  zip_file_t* file =
+      zip_fopen_index(archive_, static_cast<zip_uint64_t>(index), deflated ? ZIP_FL_COMPRESSED : 0);
+  if (file == nullptr)
+    return false;
+  const zip_int64_t got =
+      wanted == 0 ? 0 : zip_fread(file, deflated ? compressed.get() : bytes.data.get(), wanted);
+  zip_fclose(file);
+  if (got < 0 || static_cast<std::size_t>(got) != wanted)
+    return false;
+  if (deflated) {
+    libdeflate_decompressor* inflater = libdeflate_alloc_decompressor();
+    if (inflater == nullptr)
+      return false;
+    std::size_t size = 0;
+    const libdeflate_result result = libdeflate_deflate_decompress(
+        inflater, compressed.get(), wanted, bytes.data.get(), bytes.size, &size);
+    libdeflate_free_decompressor(inflater);
+    if (result != LIBDEFLATE_SUCCESS || size != bytes.size ||
+        libdeflate_crc32(0, bytes.data.get(), size) != stat.crc) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::vector<unsigned char> Package3mf::replaced(const std::string& name,
+                                                const std::string& content) {
+  std::vector<unsigned char> package;
+  const zip_int64_t index = zip_name_locate(archive_, name.c_str(), 0);
+  if (index < 0)
+    return package;
+  zip_source_t* part = zip_source_buffer(archive_, content.data(), content.size(), 0);
+  if (part == nullptr)
+    return package;
+  if (zip_file_replace(archive_, static_cast<zip_uint64_t>(index), part, 0) != 0) {
+    zip_source_free(part);
+    return package;
+  }
+  if (zip_set_file_compression(archive_, static_cast<zip_uint64_t>(index), ZIP_CM_STORE, 0) != 0)
+    return package;
+  // The archive is written back into its source (a new buffer of the source's own: the mapped
+  // file is not touched), the other parts copied as they are.
+  zip_source_keep(source_);
+  const bool written = zip_close(archive_) == 0;
+  if (!written)
+    zip_discard(archive_);
+  archive_ = nullptr;
+  zip_stat_t stat;
+  if (written && zip_source_stat(source_, &stat) == 0 && (stat.valid & ZIP_STAT_SIZE) != 0 &&
+      zip_source_open(source_) == 0) {
+    package.resize(static_cast<std::size_t>(stat.size));
+    const zip_int64_t got = zip_source_read(source_, package.data(), package.size());
+    zip_source_close(source_);
+    if (got < 0 || static_cast<std::size_t>(got) != package.size())
+      package.clear();
+  }
+  zip_source_free(source_);
+  source_ = nullptr;
+  return package;
+}
+
+}  // namespace meshbridge::detail

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// A 3MF package (a zip archive, 3MF Core Specification 1.2, chapter 2) held in memory, through
+// libzip: its root model part found through the package relationships, read whole (inflated by
+// libdeflate), and a copy of the package with that part replaced, for lib3mf to read the rest.
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+struct zip;         // libzip's archive
+struct zip_source;  // libzip's source
+
+namespace meshbridge::detail {
+
+//! The bytes of a part, followed by one NUL (not counted in `size`).
+struct PartBytes {
+  std::unique_ptr<char[]> data;  // not initialised before it is filled: no pass to clear it
+  std::size_t size = 0;
+  std::string_view view() const { return {data.get(), size}; }
+};
+
+class Package3mf {
+ public:
+  //! Opens the package in `data` (`size` bytes, which must outlive this). Check is_open().
+  Package3mf(const void* data, std::size_t size);
+  ~Package3mf();
+  Package3mf(const Package3mf&) = delete;
+  Package3mf& operator=(const Package3mf&) = delete;
+
+  bool is_open() const { return archive_ != nullptr; }
+  //! The name of the root model part ("3D/3dmodel.model"), from the target of the package
+  //! relationship of type .../3dmodel in _rels/.rels; empty if there is none, or if the package
+  //! holds another model part (the production extension's parts, which lib3mf reads alone).
+  std::string root_model() const;
+  //! The whole part `name` into `bytes`; false if it cannot be read (or its CRC-32 does not
+  //! match).
+  bool read(const std::string& name, PartBytes& bytes) const;
+  //! The whole package with part `name` replaced by `content` (stored, not compressed), every
+  //! other part as it was; empty on failure. Closes the package (is_open() is false after it).
+  std::vector<unsigned char> replaced(const std::string& name, const std::string& content);
+
+ private:
+  ::zip* archive_ = nullptr;
+  ::zip_source* source_ = nullptr;
+};
+
+}  // namespace meshbridge::detail
