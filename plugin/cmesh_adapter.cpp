@@ -65,6 +65,27 @@ int input_edge(int la, int lb) {
   return -1;
 }
 
+//! The corner to fan output polygon `poly` of `out` from: the first whose fan has no triangle of
+//! (near) zero area, else 0. A triangle whose side the core split at its midpoint comes back as a
+//! polygon with three corners on a line; fanned from an end of the split side it gives a
+//! zero-area triangle and brings the split edge back (a singular edge and two duplicate faces
+//! for each split edge, found by scripts/pymeshlab_compare.sh on ur_ur20_forearm_collision.stl).
+std::size_t fan_apex(const Soup& out, const PolygonView& poly) {
+  const std::size_t n = poly.size();
+  for (std::size_t apex = 0; n > 3 && apex < n; ++apex) {
+    const Point& pa = out.positions[poly[apex]];
+    bool flat = false;
+    for (std::size_t k = 1; k + 1 < n && !flat; ++k) {
+      const Point e1 = out.positions[poly[(apex + k) % n]] - pa;
+      const Point e2 = out.positions[poly[(apex + k + 1) % n]] - pa;
+      flat = (e1 % e2).norm() <= 1e-9 * e1.norm() * e2.norm();
+    }
+    if (!flat)
+      return apex;
+  }
+  return 0;
+}
+
 //! A face hole filling added (no input face): corners from `t`, no flags, the default colour
 //! (opaque black, as the core's writers give it) and quality 0, wedge texture coordinates from
 //! an input face's corner at the same vertex, and its geometric normal unless the caller
@@ -234,16 +255,17 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
       ++report.polygons_fanned;
       report.triangles_from_fans += arity - 3;
     }
-    for (std::size_t k = 1; k + 1 < arity; ++k) {  // fan around corner 0
+    const std::size_t apex = fan_apex(out, poly);
+    for (std::size_t k = 1; k + 1 < arity; ++k) {  // fan around corner `apex`
       TrianglePlan t;
       t.origin = origin;
-      const std::size_t idx[3] = {0, k, k + 1};
+      const std::size_t idx[3] = {apex, (apex + k) % arity, (apex + k + 1) % arity};
       for (int j = 0; j < 3; ++j) {
         t.vertex[j] = poly[idx[j]];
         t.local[j] = local[idx[j]];
       }
-      t.fan_inner[0] = k > 1;          // edge 0 -> k is a diagonal unless k == 1
-      t.fan_inner[2] = k + 2 < arity;  // edge k+1 -> 0 is a diagonal unless the last one
+      t.fan_inner[0] = k > 1;          // edge apex -> k is a diagonal unless k == 1
+      t.fan_inner[2] = k + 2 < arity;  // edge k+1 -> apex is a diagonal unless the last one
       plan.push_back(t);
     }
   }
