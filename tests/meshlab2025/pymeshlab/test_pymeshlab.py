@@ -97,3 +97,16 @@ def test_sides_split_at_their_midpoint_stay_manifold_in_meshlab(name, faces_out,
     # each repaired polygon whose corners all lie on a line (8 in sumo_tram: no fan avoids them).
     assert found["duplicate_faces"] == 0
     assert found["zero_area_faces"] == zero_area_in + flat_polygons
+
+
+@pytest.mark.parametrize("which,message", [
+    ("DOUBLE", "has different floating point precision from the running MeshLab version."),
+    ("VERSION", "has different version from the running MeshLab version.")])
+def test_a_plugin_built_for_another_meshlab_is_refused(which, message):
+    """What a user sees when the plugin was built for another pymeshlab (docs/meshlab.md): a
+    plugin built for double precision, or for MeshLab 2023.12, against this float 2025.07."""
+    plugin = os.environ[f"MESHBRIDGE_ABI_{which}"]
+    with pytest.raises(pymeshlab.PyMeshLabException) as error:
+        pymeshlab.load_plugin(plugin)
+    assert str(error.value).strip() == f"{os.path.basename(plugin)} {message}"
+    assert "abi_mismatch" not in pymeshlab.filter_list()
