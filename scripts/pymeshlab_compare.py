@@ -101,7 +101,9 @@ def main(files):
     print()
     print(f"Summary over {len(rows)} files ({sum(b['faces'] for _, b, _ in rows)} faces, "
           f"{sum(b['components'] for _, b, _ in rows)} components, "
-          f"{sum(b['boundary_edges'] for _, b, _ in rows)} boundary edges in):")
+          f"{sum(b['boundary_edges'] for _, b, _ in rows)} boundary edges, "
+          f"{sum(1 for _, b, _ in rows if b['nm_edges'] or b['nm_vertices'])} files with "
+          "singular edges or vertices in):")
     print()
     print("| method | faces kept | files left with singular edges/vertices | components | boundary edges | time |")
     print("|---|---:|---:|---:|---:|---:|")
