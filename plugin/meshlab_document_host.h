@@ -7,6 +7,7 @@
 
 #include "filter_actions.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,10 @@ class MeshDocumentHost final : public DocumentHost {
       if (m != &mesh_ && m->label() == wanted)
         doomed.push_back(m);
     }
+    // MeshLab >= 2022's delMesh() makes the mesh after a deleted one current when the deleted
+    // one was current, and may move the current mesh otherwise; the filters never change which
+    // mesh is current (a following save_current_mesh() saves the mesh the user chose).
+    MeshModel* const current = md_.mm();
     for (MeshModel* m : doomed) {
 #if __has_include(<common/ml_document/mesh_document.h>)
       md_.delMesh(m->id());  // MeshLab >= 2022
@@ -41,6 +46,9 @@ class MeshDocumentHost final : public DocumentHost {
       md_.delMesh(m);  // MeshLab 2020.09
 #endif
     }
+    if (current != nullptr && md_.mm() != current &&
+        std::find(doomed.begin(), doomed.end(), current) == doomed.end())
+      md_.setCurrentMesh(current->id());
     return doomed.size();
   }
   bool can_save_3mf() const override {

@@ -10,7 +10,8 @@
 #  3. installs meshlab, g++, cmake, make, Qt5 (qtbase5-dev, libqt5opengl5-dev: sid's MeshLab
 #     2025.07 is a Qt5 build), Eigen, GLEW and OpenMesh's runtime, the libraries MeshLab's own
 #     plugins need (muparser, qhull_r, lib3ds, openctm), and for the real-GUI test Xvfb, xdotool,
-#     x11-utils, ImageMagick, Mesa's software GL and a font; OpenMesh's headers and CMake
+#     x11-utils, ImageMagick, Mesa's software GL and a font, for the real pymeshlab module
+#     python3-dev, pybind11-dev, numpy and pytest (and CLI11 for the CLI beside it); OpenMesh's headers and CMake
 #     files come from `apt-get download libopenmesh-dev` unpacked with dpkg-deb, because the
 #     package itself drags in OpenSceneGraph and GDAL (~400 MB) that nothing here uses;
 #  4. MeshLab's plugin headers: `apt-get source --tar-only meshlab` (the .dsc is not always on
@@ -29,7 +30,7 @@ set -euo pipefail
 root=${1:-${MESHBRIDGE_SID_ROOT:-/var/cache/meshbridge/sid-root}}
 mirror=${MESHBRIDGE_SID_MIRROR:-http://deb.debian.org/debian}
 # Bump when the recipe below changes: a root made by another recipe is completed (steps 2-5).
-recipe=6
+recipe=7
 packages=(nlohmann-json3-dev meshlab g++ cmake make qtbase5-dev libqt5opengl5-dev libeigen3-dev libglew-dev
           # Hole filling (CGAL PMP, header-only; the plugin's fill_holes parameter).
           libcgal-dev
@@ -38,7 +39,11 @@ packages=(nlohmann-json3-dev meshlab g++ cmake make qtbase5-dev libqt5opengl5-de
           # the GUI opens an "Error while loading plugins" dialog over its main window.
           libmuparser2v5 libqhull-r8.0 lib3ds-1-3 libopenctm1
           # The real-GUI test (tests/meshlab2025/gui): X server, driver, screenshots, fonts.
-          xvfb xdotool x11-utils imagemagick libgl1-mesa-dri fonts-dejavu-core)
+          xvfb xdotool x11-utils imagemagick libgl1-mesa-dri fonts-dejavu-core
+          # The real pymeshlab module (scripts/build_pymeshlab.sh, ~20 MB), the meshbridge Python
+          # module and CLI beside it (README's pymeshlab examples, pymeshlab batch vs meshbridge
+          # batch), run by pytest.
+          python3-dev pybind11-dev python3-numpy python3-pytest libcli11-dev)
 
 log() { echo "setup_sid_root: $*" >&2; }
 die() { echo "setup_sid_root: ERROR: $*" >&2; exit 1; }

@@ -35,7 +35,8 @@ else
   FUZZ_RUNS=40000 bash scripts/fuzz.sh 0 fuzz_read
 fi
 
-# MeshLab 2025.07 (plugin API >= 2022), built and tested inside a Debian sid root (made once in
-# /var/cache/meshbridge/sid-root; fails loudly without archive access; MESHBRIDGE_SKIP_MESHLAB2025=1
-# skips it for local work only).
+# MeshLab 2025.07 (plugin API >= 2022) and the real pymeshlab, built and tested inside a Debian sid
+# root (made once in /var/cache/meshbridge/sid-root, pymeshlab built once in it from
+# ../shared/third_party; fails loudly without archive access; MESHBRIDGE_SKIP_MESHLAB2025=1 skips
+# it for local work only).
 bash scripts/test_meshlab2025.sh

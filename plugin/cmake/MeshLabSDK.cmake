@@ -136,8 +136,10 @@ else()
     endif()
     message(STATUS "MeshLab installed: version ${CMAKE_MATCH_1}, ${CMAKE_MATCH_2} precision (from ${_probe_plugin})")
   endif()
+  # Debian's package is only MeshLab's version when the library is Debian's (not a pip-installed
+  # pymeshlab's lib/ folder).
   find_program(DPKG_QUERY dpkg-query)
-  if(DPKG_QUERY)
+  if(DPKG_QUERY AND MESHLAB_LIB_DIR MATCHES "^/usr/lib/")
     execute_process(COMMAND "${DPKG_QUERY}" -W -f=\${Version} meshlab
       OUTPUT_VARIABLE _deb_version RESULT_VARIABLE _deb_status ERROR_QUIET)
     if(_deb_status EQUAL 0 AND _deb_version MATCHES "^([0-9]+:)?([0-9.]+)")

@@ -2,13 +2,14 @@
 // The MeshLab adapter's API-free parts on CMeshO, without MeshLab running: the defect layer's
 // tubes, its label, the log lines MeshLab's rich-text log receives, the parameter catalogue,
 // what the filters log about gap closing and STL, and the write-back of faces that hole filling
-// added.
+// added, and the fans of polygons with a side split at its midpoint.
 #include "cmesh_adapter.h"
 #include "defect_tubes.h"
 #include "filter_actions.h"
 #include "filter_catalog.h"
 
 #include "meshbridge/detect_defects.h"
+#include "meshbridge/io.h"
 #include "meshbridge/repair.h"
 
 #include <vcg/complex/allocate.h>
@@ -356,4 +357,36 @@ TEST(WriteRepaired, faces_added_by_hole_filling_come_last_with_default_attribute
   const mbm::CMeshSoup other_soup = mbm::soup_from_cmesh(other);
   EXPECT_THROW(mbm::write_repaired(other, other_soup, wrong, {}), std::invalid_argument);
   EXPECT_EQ(other.fn, 10);
+}
+
+TEST(WriteRepaired, a_triangle_with_a_side_split_at_its_midpoint_is_fanned_without_a_flat_one) {
+  // A real-world part (tests/data/realworld2) whose repair splits edges at their midpoint: each
+  // triangle on such an edge comes back as a polygon with three corners on a line. Fanned from an
+  // end of the split side it gave a zero-area triangle and the split edge again (a singular edge
+  // in MeshLab's mesh that the filter did not report).
+  const meshbridge::Soup file = meshbridge::read_soup(
+      std::string(MESHBRIDGE_SOURCE_DIR) + "/tests/data/realworld2/ur_ur20_forearm_collision.stl");
+  CMeshO mesh;
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(mesh, file.num_vertices());
+  for (const meshbridge::Point& p : file.positions)
+    (vi++)->P() = CMeshO::CoordType(float(p[0]), float(p[1]), float(p[2]));
+  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(mesh, file.num_faces());
+  for (std::size_t f = 0; f < file.num_faces(); ++f, ++fi) {
+    const meshbridge::PolygonView poly = file.polygon(f);
+    ASSERT_EQ(poly.size(), 3u);
+    for (int k = 0; k < 3; ++k)
+      fi->V(k) = &mesh.vert[poly[std::size_t(k)]];
+  }
+  const mbm::CMeshSoup soup = mbm::soup_from_cmesh(mesh);
+  const meshbridge::RepairResult result = meshbridge::repair(soup.soup, {});
+  ASSERT_GT(result.report.edges_split_to_stay_manifold, 0u);
+  ASSERT_EQ(result.report.after.singular_edges.size(), 0u);
+  const mbm::WriteBackReport written = mbm::write_repaired(mesh, soup, result.mesh, {}, {});
+  EXPECT_GT(written.polygons_fanned, 0u);
+  const meshbridge::DefectReport in_meshlab =
+      meshbridge::detect_defects(mbm::soup_from_cmesh(mesh).soup);
+  EXPECT_EQ(in_meshlab.singular_edges.size(), 0u);
+  EXPECT_EQ(in_meshlab.num_singular_vertices(), 0u);
+  EXPECT_EQ(in_meshlab.duplicate_faces.size(), 0u);
+  EXPECT_EQ(in_meshlab.zero_area_faces.size(), 0u);
 }
