@@ -54,10 +54,15 @@ RepairResult repair_for_print(const Soup& soup, RepairOptions options, std::stri
   return kept;
 }
 
-std::string print_summary(const RepairReport& r) {
+std::string print_summary(const RepairReport& r, const DefectReport* written) {
   std::ostringstream out;
-  const DefectReport& after = r.after;
+  const DefectReport& after = written != nullptr ? *written : r.after;
   out << "print: " << (after.watertight ? "watertight" : "not watertight") << " as written";
+  if (!after.singular_edges.empty()) {
+    out << "; " << counted(after.singular_edges.size(), "singular edge")
+        << " in the written triangles (polygons split at an edge's midpoint on both sides of one "
+           "sheet share a diagonal)";
+  }
   if (r.duplicate_faces_removed > 0)
     out << "; removed " << counted(r.duplicate_faces_removed, "duplicate face");
   if (r.faces_set_aside > 0)

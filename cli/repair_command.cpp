@@ -12,6 +12,7 @@
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/errors.h"
 #include "meshbridge/io.h"
+#include "meshbridge/polygon_triangles.h"
 #include "meshbridge/repair.h"
 #include "meshbridge/report_json.h"
 #include "meshbridge/self_intersections.h"
@@ -168,6 +169,9 @@ int run_repair(RepairArguments& arguments) {
         written_soup = read_soup(out);
         reread = detect_defects(written_soup);
       }
+    } else if (mesh_format(out) == MeshFormat::threemf && written.polygons_fanned > 0) {
+      // The file holds triangles: detection on them, as any reader of the 3MF gets them.
+      reread = detect_defects(as_triangles(result.mesh.soup));
     }
     if (!arguments.report.empty()) {
       ReportJsonOptions json;
@@ -220,7 +224,7 @@ int run_repair(RepairArguments& arguments) {
   std::ostream& summary = report_to_stdout ? std::cerr : std::cout;
   summary << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
   if (arguments.print)
-    summary << print_note << print_summary(result.report);
+    summary << print_note << print_summary(result.report, reread ? &*reread : nullptr);
   else
     summary << open_edges_hint(result.report);
   if (crossings)
@@ -231,12 +235,19 @@ int run_repair(RepairArguments& arguments) {
             << " cut into triangles (the format holds triangles only)\n";
   }
   if (reread) {
-    // STL keeps no shared vertices: say what a reader gets back from the written file.
+    // STL keeps no shared vertices, 3MF holds triangles: say what a reader gets from the file.
     const std::size_t left = reread->singular_edges.size() + reread->num_singular_vertices();
     summary << "as re-read from " << out << ": singular edges " << reread->singular_edges.size()
             << ", singular vertices " << reread->num_singular_vertices() << ", watertight "
             << (reread->watertight ? "yes" : "no") << "\n";
-    if (left > 0) {
+    if (left > 0 && !is_stl_path(out)) {
+      std::cerr << "meshbridge: warning: " << out << " holds triangles only: cut into triangles, "
+                << "the repaired polygons have "
+                << counted(reread->singular_edges.size(), "singular edge") << " and "
+                << counted(reread->num_singular_vertices(), "singular vertex")
+                << " (polygons split at an edge's midpoint on both sides of one sheet share a "
+                   "diagonal); write OBJ, PLY or OFF to keep the polygons.\n";
+    } else if (left > 0) {
       std::cerr << "meshbridge: warning: STL has no shared vertices; reading " << out
                 << " welds the " << result.report.vertices_split
                 << " split vertex copies again and re-creates "

@@ -2,6 +2,7 @@
 #include "meshbridge/batch_warnings.h"
 
 #include "meshbridge/counted.h"
+#include "meshbridge/io.h"
 
 #include <string>
 
@@ -35,7 +36,13 @@ std::string batch_warning_lines(const FileJobResult& result, const FileJob& job)
   if (result.reread) {
     const std::size_t edges = result.reread->singular_edges.size();
     const std::size_t vertices = result.reread->num_singular_vertices();
-    if (edges + vertices > 0) {
+    if (edges + vertices > 0 && mesh_format(job.output_name) != MeshFormat::stl) {
+      lines += "output " + job.output_name + ": holds triangles only: cut into triangles, the " +
+               "repaired polygons have " + counted(edges, "singular edge") + " and " +
+               counted(vertices, "singular vertex") +
+               " (polygons split at an edge's midpoint on both sides of one sheet share a "
+               "diagonal)\n";
+    } else if (edges + vertices > 0) {
       lines += "output " + job.output_name +
                ": STL has no shared vertices; reading it welds the split vertex copies again "
                "and re-creates " +

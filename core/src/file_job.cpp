@@ -4,6 +4,7 @@
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
+#include "meshbridge/polygon_triangles.h"
 #include "meshbridge/read_accounting.h"
 
 #include <unistd.h>
@@ -265,6 +266,10 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     if (stl) {
       // STL keeps no shared vertices: report the file as a reader will get it back.
       result.reread = detect_defects(read_soup(job.output));
+    } else if (mesh_format(job.output) == MeshFormat::threemf &&
+               result.written.polygons_fanned > 0) {
+      // 3MF holds triangles: detection on them, as any reader of the file gets them.
+      result.reread = detect_defects(as_triangles(repaired.mesh.soup));
     }
     const RepairReport& r = result.report;
     // Clean: the mesh is written as read, every vertex and face in place.

@@ -362,6 +362,15 @@ print_preset)
   printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n' >"$work/twice.obj"
   expect_exit 0 "$mb" repair "$work/twice.obj" "$work/twice.3mf" --print
   expect_in "$work/out" "print: kept the 1 duplicate face: removing them left 3 open edges (keeping them: 0"
+  # 3MF holds triangles: where polygons split at a midpoint must share a diagonal, the report's
+  # reread, the summary and a warning say what the file holds (never "watertight" unseen).
+  hull="$models/../../tests/data/realworld2/dart_drchubo_convhull_RHR_merged.stl"
+  expect_exit 0 "$mb" repair "$hull" "$work/hull.3mf" --report "$work/hull.json"
+  expect_in "$work/err" "hull.3mf holds triangles only: cut into triangles, the repaired polygons have 4 singular edges"
+  [ "$(json_field "$work/hull.json" after.singular_edges) $(json_field "$work/hull.json" reread.singular_edges)" = "0 4" ] ||
+    fail "3MF reread: $(cat "$work/hull.json")"
+  expect_exit 1 "$mb" check "$work/hull.3mf" --json
+  [ "$(json_field "$work/out" singular_edges)" = 4 ] || fail "the 3MF as written: $(cat "$work/out")"
   # Without --print, an open result gets a hint of what would close it.
   expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj"
   expect_in "$work/out" "hint: 4 open edges in 1 boundary loop left; --fill-holes closes holes of up to 32 edges"

@@ -30,4 +30,9 @@ struct PolygonTriangles {
 //! \pre `soup` passes validate_soup()
 PolygonTriangles triangles_as_written(const Soup& soup);
 
+//! `soup` with each polygon replaced by its triangles_as_written(), in face order; the vertices
+//! are the same. What a 3MF file of `soup` holds (an STL file also welds by position:
+//! stl_round_trip()). #F' = number of triangles.
+Soup as_triangles(const Soup& soup);
+
 }  // namespace meshbridge

@@ -187,4 +187,18 @@ PolygonTriangles triangles_as_written(const Soup& soup) {
   return out;
 }
 
+Soup as_triangles(const Soup& soup) {
+  const PolygonTriangles cut = triangles_as_written(soup);
+  Soup out;
+  out.positions = soup.positions;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const PolygonView p = soup.polygon(f);
+    for (Index i = cut.first[f]; i < cut.first[f + 1]; ++i) {
+      const auto& t = cut.corners[i];
+      out.add_polygon({p[t[0]], p[t[1]], p[t[2]]});
+    }
+  }
+  return out;
+}
+
 }  // namespace meshbridge
