@@ -29,6 +29,7 @@ void apply_print_preset(const Soup& soup, bool weld_given, bool fill_holes_given
   if (!weld_given)
     options.close_gaps.tolerance = print_weld_tolerance(soup);
   options.remove_duplicate_faces = true;
+  options.remove_zero_area_faces = true;
   if (!fill_holes_given)
     options.fill_holes.max_edges = kDefaultFillHolesMaxEdges;
 }
@@ -36,22 +37,42 @@ void apply_print_preset(const Soup& soup, bool weld_given, bool fill_holes_given
 RepairResult repair_for_print(const Soup& soup, RepairOptions options, std::string& note) {
   note.clear();
   RepairResult result = repair(soup, options);
-  const RepairReport& r = result.report;
-  if (!options.remove_duplicate_faces || r.duplicate_faces_removed == 0 ||
-      r.boundary_edges_after <= r.boundary_edges_before)
+  const RepairReport& first = result.report;
+  const std::size_t duplicates = first.duplicate_faces_removed;
+  const std::size_t flat = first.zero_area_faces_removed;
+  if (duplicates + flat == 0 || first.boundary_edges_after <= first.boundary_edges_before)
     return result;
-  options.remove_duplicate_faces = false;
-  RepairResult kept = repair(soup, options);
-  if (kept.report.boundary_edges_after >= r.boundary_edges_after)
-    return result;
-  std::ostringstream text;
-  text << "print: kept the " << counted(r.duplicate_faces_removed, "duplicate face")
-       << ": removing them left " << counted(r.boundary_edges_after, "open edge") << " (keeping "
-       << "them: " << kept.report.boundary_edges_after
-       << "; faces written twice back to back, which a slicer reads as closed parts of no "
-          "volume)\n";
-  note = text.str();
-  return kept;
+  // The removals opened the surface: the first of (zero-area faces kept, duplicates kept, both
+  // kept) that leaves no more open edges than the input had, else the one that leaves fewest.
+  const std::size_t input_open = first.boundary_edges_before;
+  struct Choice {
+    bool keep_duplicates, keep_flat;
+  };
+  for (const Choice choice : {Choice{false, true}, Choice{true, false}, Choice{true, true}}) {
+    if ((choice.keep_duplicates && duplicates == 0) || (choice.keep_flat && flat == 0))
+      continue;
+    RepairOptions kept = options;
+    kept.remove_duplicate_faces = !choice.keep_duplicates;
+    kept.remove_zero_area_faces = !choice.keep_flat;
+    RepairResult trial = repair(soup, kept);
+    if (trial.report.boundary_edges_after >= result.report.boundary_edges_after)
+      continue;
+    std::ostringstream text;
+    text << "print: kept the ";
+    if (choice.keep_duplicates)
+      text << counted(duplicates, "duplicate face") << (choice.keep_flat ? " and the " : "");
+    if (choice.keep_flat)
+      text << flat << " faces of zero area";
+    text << ": removing them left " << counted(first.boundary_edges_after, "open edge")
+         << " (keeping them: " << trial.report.boundary_edges_after
+         << "; a sheet written twice back to back, which a slicer reads as closed parts of no "
+            "volume, or slivers that close a crack)\n";
+    note = text.str();
+    result = std::move(trial);
+    if (result.report.boundary_edges_after <= input_open)
+      break;
+  }
+  return result;
 }
 
 std::string print_summary(const RepairReport& r, const DefectReport* written) {
@@ -65,6 +86,8 @@ std::string print_summary(const RepairReport& r, const DefectReport* written) {
   }
   if (r.duplicate_faces_removed > 0)
     out << "; removed " << counted(r.duplicate_faces_removed, "duplicate face");
+  if (r.zero_area_faces_removed > 0)
+    out << "; removed " << counted(r.zero_area_faces_removed, "face") << " of zero area";
   if (r.faces_set_aside > 0)
     out << "; " << counted(r.faces_set_aside, "face")
         << " of no area (< 3 distinct corners) set aside";

@@ -19,7 +19,8 @@ double print_weld_tolerance(const Soup& soup);
 
 //! What `--print` sets on `options` for the soup read (`weld_given`, `fill_holes_given`: the
 //! user's own --weld and --fill-holes win): gap closing at print_weld_tolerance(), duplicate
-//! faces (same vertex set) removed (repair_for_print() keeps them where that opens a surface),
+//! faces (same vertex set) and faces of zero area removed (repair_for_print() keeps them where
+//! that opens a surface),
 //! holes of up to kDefaultFillHolesMaxEdges (32) edges filled. Faces of fewer than 3 distinct
 //! corners (admesh's "degenerate facets") are set aside by every repair; a polygon that merely
 //! repeats a vertex (pinched) is split into simple ones, not removed.
@@ -28,8 +29,9 @@ void apply_print_preset(const Soup& soup, bool weld_given, bool fill_holes_given
 
 //! repair(soup, options) for `--print`. Removing duplicate faces can open a surface: a sheet
 //! written twice, back to back (each triangle once per winding), which a slicer reads as closed
-//! parts of no volume. When the repair with the removal leaves more open edges than the input
-//! had, it runs again keeping the duplicates, and `note` says so (empty otherwise).
+//! parts of no volume; so can removing a sliver of zero area that closes a crack. When the repair
+//! with a removal leaves more open edges than the input had, it runs again without it (the
+//! duplicates first, then the zero-area faces), and `note` says so (empty otherwise).
 RepairResult repair_for_print(const Soup& soup, RepairOptions options, std::string& note);
 
 //! The `print:` paragraph of the summary: whether the written mesh is watertight, and for each

@@ -302,6 +302,9 @@ void add_repair_command(CLI::App& app, int& exit_code) {
   add_nested_shells_option(*command, options.nested_shells);
   command->add_flag("--remove-duplicates", options.remove_duplicate_faces,
                     "drop faces whose vertex set an earlier face has");
+  command->add_flag("--remove-zero-area", options.remove_zero_area_faces,
+                    "drop faces of (near) zero area: slivers and needles whose distinct corners "
+                    "lie on one line (check's zero-area faces)");
   command->add_flag("--remove-degenerate", options.remove_degenerate_faces,
                     "drop faces that repeat a vertex");
   command->add_flag("--remove-isolated", options.remove_isolated_vertices,

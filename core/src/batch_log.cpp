@@ -51,6 +51,7 @@ std::string batch_options_text(const FileJobOptions& options) {
        << " cut_nonorientable=" << r.cut_nonorientable
        << " remove_duplicates=" << r.remove_duplicate_faces
        << " remove_degenerate=" << r.remove_degenerate_faces
+       << " remove_zero_area=" << r.remove_zero_area_faces
        << " remove_isolated=" << r.remove_isolated_vertices
        << " detect_before_after=" << r.detect_before_after
        << " fill_holes=" << r.fill_holes.max_edges

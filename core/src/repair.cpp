@@ -136,7 +136,8 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
     gaps_closed = detail::close_gaps_if_any(input, options.close_gaps, gaps);
   }
   report.gaps = gaps.report;
-  const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
+  const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces ||
+                         options.remove_zero_area_faces;
   const bool detecting = options.detect_before_after || filtering;
   const bool before_later = known.before_later != nullptr && known.before_later->valid();
   if (detecting && !before_later) {
@@ -176,6 +177,17 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
         if (degenerate[simple.face_origin(f)] && !remove[f]) {
           remove[f] = 1;
           ++report.degenerate_faces_removed;
+        }
+      }
+    }
+    if (options.remove_zero_area_faces) {
+      std::vector<char> flat(soup.num_faces(), 0);
+      for (Index f : report.before.zero_area_faces)
+        flat[f] = 1;
+      for (Index f = 0; f < polygons.num_faces(); ++f) {
+        if (flat[simple.face_origin(f)] && !remove[f]) {
+          remove[f] = 1;
+          ++report.zero_area_faces_removed;
         }
       }
     }
@@ -282,7 +294,8 @@ std::optional<RepairReport> report_if_unchanged(const Soup& soup,
                                                 const detail::WorkingSoup& working,
                                                 const RepairOptions& options, DefectReport& before,
                                                 KnownInput& known) {
-  const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces;
+  const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces ||
+                         options.remove_zero_area_faces;
   if (!options.detect_before_after && !filtering)
     return std::nullopt;  // no detection asked for: the pipeline's own path
   std::vector<Index> mate;
@@ -297,6 +310,7 @@ std::optional<RepairReport> report_if_unchanged(const Soup& soup,
   known.before = &before;
   if (!working.is_identity() || !before.watertight || options.fill_holes.max_edges > 0 ||
       (options.remove_duplicate_faces && !before.duplicate_faces.empty()) ||
+      (options.remove_zero_area_faces && !before.zero_area_faces.empty()) ||
       (options.remove_isolated_vertices && !before.isolated_vertices.empty()))
     return std::nullopt;
   std::size_t ambiguous = 0;
@@ -429,8 +443,11 @@ std::string to_text(const RepairReport& r) {
       << (r.slits_set_aside != 0 ? " (" + counted(r.slits_set_aside, "keyhole slit") + " set aside)"
                                  : std::string())
       << ", " << counted(r.duplicate_faces_removed, "duplicate") << " and "
-      << r.degenerate_faces_removed << " degenerate removed, " << r.faces_flipped << " flipped, "
-      << r.faces_detached << " detached)\n";
+      << r.degenerate_faces_removed << " degenerate removed, "
+      << (r.zero_area_faces_removed != 0
+              ? std::to_string(r.zero_area_faces_removed) + " of zero area removed, "
+              : std::string())
+      << r.faces_flipped << " flipped, " << r.faces_detached << " detached)\n";
   out << "vertices: " << r.vertices_in << " in, " << r.vertices_out << " out ("
       << counted(r.vertices_split, "copy") << " from split fans, " << r.isolated_vertices_removed
       << " isolated removed)\n";

@@ -123,8 +123,9 @@ OpenMeshRepair repair_to_openmesh(const Soup& soup, const RepairOptions& options
   validate_soup(soup);
   OpenMeshRepair result;
   const bool plain = !options.detect_before_after && !options.remove_duplicate_faces &&
-                     !options.remove_degenerate_faces && !options.remove_isolated_vertices &&
-                     options.orient && options.fill_holes.max_edges == 0;
+                     !options.remove_degenerate_faces && !options.remove_zero_area_faces &&
+                     !options.remove_isolated_vertices && options.orient &&
+                     options.fill_holes.max_edges == 0;
   if (plain && build_if_already_manifold(soup, result.mesh)) {
     result.fast_path = true;
     OpenMesh::VPropHandleT<Index> vertex_origin;

@@ -146,6 +146,7 @@ void add_repair(Json& out, const RepairReport& r, bool elements, const DefectRep
   out["faces_detached"] = r.faces_detached;
   out["duplicate_faces_removed"] = r.duplicate_faces_removed;
   out["degenerate_faces_removed"] = r.degenerate_faces_removed;
+  out["zero_area_faces_removed"] = r.zero_area_faces_removed;
   out["vertices_in"] = r.vertices_in;
   out["vertices_out"] = r.vertices_out;
   out["vertices_split"] = r.vertices_split;

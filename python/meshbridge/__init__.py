@@ -63,6 +63,7 @@ REPAIR_OPTIONS: Dict[str, Any] = {
     "stitch": True,
     "remove_duplicate_faces": False,
     "remove_degenerate_faces": False,
+    "remove_zero_area_faces": False,
     "remove_isolated_vertices": False,
     "detect_before_after": True,
     "fill_holes": 0,
@@ -249,7 +250,8 @@ def repair(
     ``vertices`` (n, 3) and ``faces`` (m, k) or polygons, or a :class:`Soup` alone.
     Options (defaults as ``meshbridge repair``; see ``REPAIR_OPTIONS``): ``pairing``
     ('geometric' or 'combinatorial'), ``orient``, ``cut_nonorientable``, ``stitch``,
-    ``remove_duplicate_faces``, ``remove_degenerate_faces``, ``remove_isolated_vertices``,
+    ``remove_duplicate_faces``, ``remove_degenerate_faces``, ``remove_zero_area_faces``,
+    ``remove_isolated_vertices``,
     ``detect_before_after`` (False skips the before/after detection: faster, fewer counts),
     ``fill_holes`` (after the repair, close holes of at most this many edges with new
     triangles; ``True`` = 32, ``0``/``False`` = off, the default; as ``--fill-holes``),

@@ -34,6 +34,7 @@ class RepairOptions:
     stitch: bool
     remove_duplicate_faces: bool
     remove_degenerate_faces: bool
+    remove_zero_area_faces: bool
     remove_isolated_vertices: bool
     detect_before_after: bool
     fill_holes: int  # FillHolesOptions::max_edges; 0 = off

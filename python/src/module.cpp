@@ -104,6 +104,7 @@ PYBIND11_MODULE(_core, m) {
       .def_readwrite("stitch", &RepairOptions::stitch)
       .def_readwrite("remove_duplicate_faces", &RepairOptions::remove_duplicate_faces)
       .def_readwrite("remove_degenerate_faces", &RepairOptions::remove_degenerate_faces)
+      .def_readwrite("remove_zero_area_faces", &RepairOptions::remove_zero_area_faces)
       .def_readwrite("remove_isolated_vertices", &RepairOptions::remove_isolated_vertices)
       .def_readwrite("detect_before_after", &RepairOptions::detect_before_after)
       .def_readwrite("nested_shells", &RepairOptions::nested_shells)

@@ -34,6 +34,9 @@ struct RepairOptions {
   AmbiguousNesting nested_shells = AmbiguousNesting::material;
   bool remove_duplicate_faces = false;    //!< drop polygons whose vertex set an earlier one has
   bool remove_degenerate_faces = false;   //!< drop polygons that repeat a vertex index
+  //! drop polygons of (near) zero area (DefectReport::zero_area_faces: slivers and needles
+  //! whose corners are distinct but on one line or nearly at one point); default false
+  bool remove_zero_area_faces = false;
   bool remove_isolated_vertices = false;  //!< drop vertices that no kept polygon uses
   //! Fill RepairReport::before and ::after with full detection reports (two detection passes,
   //! about a third of the time on defective input). Off: both stay empty and the counts that
@@ -61,6 +64,7 @@ struct RepairReport {
   std::size_t slits_set_aside = 0;
   std::size_t duplicate_faces_removed = 0;    //!< by `remove_duplicate_faces`
   std::size_t degenerate_faces_removed = 0;   //!< by `remove_degenerate_faces`
+  std::size_t zero_area_faces_removed = 0;    //!< by `remove_zero_area_faces`
   std::size_t isolated_vertices_removed = 0;  //!< by `remove_isolated_vertices`
   std::size_t vertices_in = 0;
   std::size_t vertices_out = 0;

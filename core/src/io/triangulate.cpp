@@ -43,8 +43,29 @@ void triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t) {
     if (std::abs(normal[k]) > std::abs(normal[drop]))
       drop = k;
   }
+  // A fan from the first corner whose diagonals are no edges of the mesh yet (a flat polygon:
+  // a sliver split at its sides' midpoints has no ear, and its fan must not double an edge).
+  const auto free_fan = [&](std::size_t first, std::size_t count) {
+    if (!t.taken.empty()) {
+      Index apex = static_cast<Index>(first);
+      for (std::size_t tried = 0; tried < count; ++tried, apex = t.next[apex]) {
+        bool free = true;
+        Index q = t.next[t.next[apex]];
+        for (std::size_t k = 0; k + 3 < count && free; ++k, q = t.next[q])
+          free = t.taken.count(edge_key(p[apex], p[q])) == 0;
+        if (free) {
+          first = apex;
+          break;
+        }
+      }
+      Index q = t.next[t.next[static_cast<Index>(first)]];
+      for (std::size_t k = 0; k + 3 < count; ++k, q = t.next[q])
+        t.taken.insert(edge_key(p[first], p[q]));
+    }
+    fan(first, count);
+  };
   if (n == 3 || n > 4096 || !(std::abs(normal[drop]) > 0) || !std::isfinite(normal[drop])) {
-    fan(0, n);
+    free_fan(0, n);
     return;
   }
   int iu = (drop + 1) % 3, iv = (drop + 2) % 3;
@@ -60,7 +81,13 @@ void triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t) {
   // counts as inside, unless the corner is at one of its three points: a pinched polygon).
   const auto is_ear = [&](Index b) {
     const Index a = t.previous[b], c = t.next[b];
-    if (cross(t.u[a], t.v[a], t.u[b], t.v[b], t.u[c], t.v[c]) <= 0)
+    // Convex, and not flat: a corner on the line of its neighbours (a vertex repair put at an
+    // edge's midpoint) gives a triangle of no area, whose diagonal is that edge again; rounding
+    // makes such a corner's cross product a few units in the last place of either sign.
+    const double turn = cross(t.u[a], t.v[a], t.u[b], t.v[b], t.u[c], t.v[c]);
+    const double ab = std::hypot(t.u[b] - t.u[a], t.v[b] - t.v[a]);
+    const double bc = std::hypot(t.u[c] - t.u[b], t.v[c] - t.v[b]);
+    if (!(turn > 1e-12 * ab * bc))
       return false;
     for (Index q = t.next[c]; q != a; q = t.next[q]) {
       const bool at_corner = (t.u[q] == t.u[a] && t.v[q] == t.v[a]) ||
@@ -94,7 +121,7 @@ void triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t) {
     if (b == kNoIndex)
       b = find_ear(start, left, is_ear);
     if (b == kNoIndex) {  // no ear: not a simple polygon in this plane
-      fan(start, left);
+      free_fan(start, left);
       return;
     }
     const Index a = t.previous[b], c = t.next[b];
