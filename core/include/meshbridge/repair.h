@@ -32,8 +32,8 @@ struct RepairOptions {
   //! or a cavity wound the wrong way): kept as written (material, default) or turned into a
   //! cavity (even-odd nesting). Counted either way in RepairReport::ambiguous_nested_shells.
   AmbiguousNesting nested_shells = AmbiguousNesting::material;
-  bool remove_duplicate_faces = false;    //!< drop polygons whose vertex set an earlier one has
-  bool remove_degenerate_faces = false;   //!< drop polygons that repeat a vertex index
+  bool remove_duplicate_faces = false;   //!< drop polygons whose vertex set an earlier one has
+  bool remove_degenerate_faces = false;  //!< drop polygons that repeat a vertex index
   //! drop polygons of (near) zero area (DefectReport::zero_area_faces: slivers and needles
   //! whose corners are distinct but on one line or nearly at one point); default false
   bool remove_zero_area_faces = false;
