@@ -7,6 +7,7 @@
 #include "print_preset.h"
 #include "printer_options.h"
 #include "progress.h"
+#include "release_memory.h"
 #include "validators.h"
 
 #include "meshbridge/detect_defects.h"
@@ -146,6 +147,7 @@ int run_repair(RepairArguments& arguments) {
     } else {
       result = repair(soup, options);
     }
+    release_free_memory();  // the repair's working arrays, before the output is written
     count_records_without_corners(info, result.report);  // face records with no corner
     progress.stage(Stage::write, 0);
     const StlSeparation separated =

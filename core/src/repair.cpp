@@ -11,7 +11,6 @@
 #include "parallel_parts.h"
 #include "pipeline/orientation.h"
 #include "pipeline/run_pipeline.h"
-#include "release_memory.h"
 #include "working_soup.h"
 
 #include <algorithm>
@@ -278,7 +277,6 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
   report.components_after = report.after.num_components;
   report.boundary_edges_before = report.before.boundary_edges.size();
   report.boundary_edges_after = report.after.boundary_edges.size();
-  detail::release_free_memory();
   return result;
 }
 
@@ -411,7 +409,6 @@ RepairResult repair(Soup&& soup, const RepairOptions& options) {
   mesh.corner_origin.resize(soup.num_corners());
   std::iota(mesh.corner_origin.begin(), mesh.corner_origin.end(), Index(0));
   mesh.soup = std::move(soup);
-  detail::release_free_memory();
   return result;
 }
 
