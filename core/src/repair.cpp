@@ -168,28 +168,23 @@ RepairResult repair_valid(const Soup& input, const RepairOptions& options, Known
         ++report.duplicate_faces_removed;
       }
     }
-    if (options.remove_degenerate_faces) {
-      std::vector<char> degenerate(soup.num_faces(), 0);
-      for (Index f : report.before.degenerate_faces)
-        degenerate[f] = 1;
+    // The simple polygons of the listed input faces, not removed already, counted in `removed`.
+    const auto remove_input_faces = [&](const std::vector<Index>& input_faces,
+                                        std::size_t& removed) {
+      std::vector<char> listed(soup.num_faces(), 0);
+      for (Index f : input_faces)
+        listed[f] = 1;
       for (Index f = 0; f < polygons.num_faces(); ++f) {
-        if (degenerate[simple.face_origin(f)] && !remove[f]) {
+        if (listed[simple.face_origin(f)] && !remove[f]) {
           remove[f] = 1;
-          ++report.degenerate_faces_removed;
+          ++removed;
         }
       }
-    }
-    if (options.remove_zero_area_faces) {
-      std::vector<char> flat(soup.num_faces(), 0);
-      for (Index f : report.before.zero_area_faces)
-        flat[f] = 1;
-      for (Index f = 0; f < polygons.num_faces(); ++f) {
-        if (flat[simple.face_origin(f)] && !remove[f]) {
-          remove[f] = 1;
-          ++report.zero_area_faces_removed;
-        }
-      }
-    }
+    };
+    if (options.remove_degenerate_faces)
+      remove_input_faces(report.before.degenerate_faces, report.degenerate_faces_removed);
+    if (options.remove_zero_area_faces)
+      remove_input_faces(report.before.zero_area_faces, report.zero_area_faces_removed);
     filtered = without_faces(polygons, remove);
     for (Index& f : filtered.face_origin)
       f = simple.face_origin(f);

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/repair.h"
 #include "meshbridge/counted.h"
+#include "meshbridge/detect_defects.h"
 #include "meshbridge/models/canonical_models.h"
 
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include <set>
 
@@ -300,4 +303,33 @@ TEST(Repair, a_collapsed_polygon_that_duplicates_another_is_removed_once) {
   const RepairResult twice = repair(once.mesh.soup, options);
   EXPECT_EQ(twice.mesh.soup.corner_vertices, once.mesh.soup.corner_vertices);
   EXPECT_EQ(twice.report.duplicate_faces_removed, 0u);
+}
+
+TEST(Repair, zero_area_faces_are_removed_on_request_and_counted) {
+  // A unit square of two triangles plus slivers of distinct corners on one line (one lying on
+  // the square's diagonal, one on its own), in either winding.
+  for (const bool reversed : {false, true}) {
+    Soup soup;
+    for (const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0),
+                           Point(0.5, 0.5, 0), Point(5, 5, 5), Point(6, 6, 6), Point(7, 7, 7)})
+      soup.add_vertex(p);
+    const auto add = [&](std::vector<Index> corners) {
+      if (reversed)
+        std::reverse(corners.begin(), corners.end());
+      soup.add_polygon(corners);
+    };
+    add({0, 1, 2});
+    add({0, 2, 3});
+    add({0, 4, 2});  // zero area: 4 lies on the diagonal 0-2
+    add({5, 6, 7});  // zero area: on one line
+    ASSERT_EQ(detect_defects(soup).zero_area_faces, (std::vector<Index>{2, 3}));
+    RepairOptions options;
+    options.remove_zero_area_faces = true;
+    const RepairResult r = repair(soup, options);
+    EXPECT_EQ(r.report.zero_area_faces_removed, 2u);
+    EXPECT_EQ(r.report.faces_out, 2u);
+    EXPECT_EQ(r.mesh.face_origin, (std::vector<Index>{0, 1}));
+    EXPECT_EQ(repair(soup).report.faces_out, 4u);  // off by default
+    EXPECT_EQ(repair(soup).report.zero_area_faces_removed, 0u);
+  }
 }
