@@ -63,7 +63,8 @@ namespace {
 //! The first u * 2^k (see smallest_stl_separation()) after which `survives(moved soup)` holds; 0
 //! when `mesh` has no split vertex.
 template <class Survives>
-double smallest_separation(const IndexedMesh& mesh, const char* caller, Survives survives) {
+double smallest_separation(const IndexedMesh& mesh, const char* caller, Survives survives,
+                           double at_least = 0) {
   if (mesh.vertex_origin.size() != mesh.soup.num_vertices()) {
     throw std::invalid_argument(std::string(caller) + ": vertex_origin has " +
                                 std::to_string(mesh.vertex_origin.size()) + " entries for " +
@@ -87,7 +88,11 @@ double smallest_separation(const IndexedMesh& mesh, const char* caller, Survives
       largest = std::max(largest, std::abs(p[a]));
   const float at = static_cast<float>(largest);
   const double ulp = static_cast<double>(std::nextafter(at, 2 * at + 1.0f)) - at;
-  for (int k = 0; k <= 60; ++k) {
+  // Steps below `at_least` cannot survive: they are not tried (each costs a round trip).
+  int first = 0;
+  while (first < 60 && std::ldexp(ulp, first + 1) <= at_least)
+    ++first;
+  for (int k = first; k <= 60; ++k) {
     const double distance = std::ldexp(ulp, k);
     IndexedMesh moved = mesh;
     separate_split_vertices(moved, distance);
@@ -116,25 +121,30 @@ double stl_separation_surviving_weld(const IndexedMesh& mesh, const CloseGapsOpt
   const auto as_float = [](const Point& p) {
     return Point(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]));
   };
-  return smallest_separation(mesh, "stl_separation_surviving_weld", [&](const Soup& moved) {
-    if (singular_elements_after_stl_round_trip(moved) != 0)
-      return false;
-    // Gap closing welds vertices closer than its tolerance: no two copies may be that close once
-    // rounded to the floats of the file.
-    const double tolerance =
-        weld.tolerance < 0 ? default_weld_tolerance(moved, true) : weld.tolerance;  // STL: floats
-    for (const auto& [origin, copies] : groups) {
-      for (std::size_t i = 0; i < copies.size(); ++i) {
-        for (std::size_t j = i + 1; j < copies.size(); ++j) {
-          const Point d =
-              as_float(moved.positions[copies[i]]) - as_float(moved.positions[copies[j]]);
-          if (d.norm() <= tolerance)
-            return false;
+  // Two copies move apart by at most twice the distance (plus float rounding): distances below
+  // a quarter of the tolerance cannot keep them beyond it, and are not tried.
+  const double tolerance_before =
+      weld.tolerance < 0 ? default_weld_tolerance(mesh.soup, true) : weld.tolerance;
+  return smallest_separation(
+      mesh, "stl_separation_surviving_weld",
+      [&](const Soup& moved) {
+        // Gap closing welds vertices closer than its tolerance: no two copies may be that close
+        // once rounded to the floats of the file. (Checked first: it is the cheap test.)
+        const double tolerance = weld.tolerance < 0 ? default_weld_tolerance(moved, true)
+                                                    : weld.tolerance;  // STL: floats
+        for (const auto& [origin, copies] : groups) {
+          for (std::size_t i = 0; i < copies.size(); ++i) {
+            for (std::size_t j = i + 1; j < copies.size(); ++j) {
+              const Point d =
+                  as_float(moved.positions[copies[i]]) - as_float(moved.positions[copies[j]]);
+              if (d.norm() <= tolerance)
+                return false;
+            }
+          }
         }
-      }
-    }
-    return true;
-  });
+        return singular_elements_after_stl_round_trip(moved) == 0;
+      },
+      tolerance_before / 4);
 }
 
 StlSeparation separate_copies_for_stl(IndexedMesh& mesh) {
