@@ -231,5 +231,22 @@ TEST(Format3mfMeshXml, the_real_slicer_file_reads_the_same_both_ways) {
   EXPECT_EQ(o.soup.num_faces(), 55668u);
 }
 
+TEST(Format3mfMeshXml, a_mesh_object_before_the_components_object_placing_it_reads_the_same) {
+  // As a Cura printer bed has it: mesh object 2 first, then object 1 placing it through a
+  // component, the build placing object 1 with a translation (found by the slicer corpus: read
+  // apart, the mesh came back empty).
+  const std::string path = scratch("mesh_first");
+  write_package(path + ".3mf",
+                std::string(kHead) + "<resources>" + tetrahedron(2, "model", "0") +
+                    R"(<object id="1" type="model" name="bed"><components>)"
+                    R"(<component objectid="2"/></components></object></resources><build>)"
+                    R"(<item objectid="1" transform="1 0 0 0 1 0 0 0 1 1 1 1"/></build></model>)");
+  const Outcome read = expect_same_both_ways(path + ".3mf");
+  EXPECT_EQ(read.error, "");
+  EXPECT_EQ(read.soup.num_vertices(), 4u);
+  EXPECT_EQ(read.soup.num_faces(), 4u);
+  std::remove((path + ".3mf").c_str());
+}
+
 }  // namespace
 }  // namespace meshbridge

@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -87,6 +88,9 @@ Point apply(const Affine& a, const float p[3]) {
 }
 
 // Reads models, their objects and their build into one soup.
+//! Thrown by Reader when a mesh read apart cannot be matched to lib3mf's object (see add_mesh).
+struct MeshesApartUnmatched {};
+
 class Reader {
  public:
   using MeshesXml = std::map<std::uint32_t, MeshXml>;
@@ -138,6 +142,12 @@ class Reader {
       corners = triangles_.empty() ? nullptr : triangles_[0].m_nIndices;
       vertex_count = vertices_.size();
       triangle_count = triangles_.size();
+      // With meshes read apart, an empty mesh from lib3mf is most likely one pugixml read under
+      // an id lib3mf gives otherwise (it numbers some files' objects its own way): the whole
+      // file goes to lib3mf instead (found on a Cura printer bed whose mesh object precedes the
+      // components object placing it).
+      if (meshes_ != nullptr && vertex_count == 0)
+        throw MeshesApartUnmatched();
     }
     DWORD type = NMR::MODELOBJECTTYPE_MODEL;
     check(NMR::lib3mf_object_gettype(object, &type), path_, "get an object's type");
@@ -430,9 +440,26 @@ void read_3mf(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
     throw ReadError(path + ": lib3mf cannot read the file as 3MF: " + why + " (error " +
                     std::to_string(status) + ", lib3mf code " + std::to_string(code) + ")");
   }
-  Reader read(path, soup, meshes.empty() ? nullptr : &meshes);
-  read.add_build(model.instance);
-  read.add_unplaced(model.instance);
+  std::optional<Reader> reader;
+  try {
+    reader.emplace(path, soup, meshes.empty() ? nullptr : &meshes);
+    reader->add_build(model.instance);
+    reader->add_unplaced(model.instance);
+  } catch (const MeshesApartUnmatched&) {
+    meshes.clear();
+    soup = Soup();
+    NMR::lib3mf_release(model.instance);
+    model.instance = nullptr;
+    status = read_package(model, path, package, code, message);
+    if (status != LIB3MF_OK) {
+      throw ReadError(path + ": lib3mf cannot read the file as 3MF: " +
+                      (message.empty() ? std::string("unknown error") : message));
+    }
+    reader.emplace(path, soup, nullptr);
+    reader->add_build(model.instance);
+    reader->add_unplaced(model.instance);
+  }
+  Reader& read = *reader;
   info.declared_vertices = soup.num_vertices();
   info.declared_faces = soup.num_faces();
   if (attributes == nullptr)
