@@ -101,10 +101,7 @@ int run_check(const CheckArguments& arguments) {
   // clean file: check exits 0 exactly when repair would change nothing on it. Self-intersections,
   // when looked for, are defects too.
   const bool crossing = crossings && crossings->has_self_intersections();
-  return report.has_defects() || crossing || info.faces_dropped_by_reader > 0 ||
-                 orientation.faces_flipped > 0
-             ? kDefectsFound
-             : kOk;
+  return report.has_defects() || crossing || orientation.faces_flipped > 0 ? kDefectsFound : kOk;
 }
 
 //! run_check; with --json, an error is also a JSON object on stdout (for scripts that parse it),

@@ -162,7 +162,7 @@ struct RepairOutcome {
   std::string log;
   //! The numbers, in this order: vertices_in, vertices_out, faces_in, faces_out (the layer's,
   //! faces in triangles); the core's vertices_split, faces_flipped, sides_cut,
-  //! sides_cut_for_orientation, sides_stitched, faces_detached, faces_split,
+  //! sides_cut_for_orientation, sides_stitched, faces_split,
   //! faces_added_by_split, faces_set_aside, duplicate_faces_removed, degenerate_faces_removed,
   //! isolated_vertices_removed, before.components, after.components, before.boundary_edges,
   //! after.boundary_edges, before.nonorientable_components, before.singular_edges,

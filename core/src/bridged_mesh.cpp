@@ -34,7 +34,8 @@ BridgedMesh build_bridged_mesh(const Soup& soup, const BridgedMeshOptions& optio
   for (Index out = 0; out < origin.size(); ++out)
     bridged.copies[fill[origin[out]]++] = out;
 
-  bridged.add_face_failures = fill_openmesh(bridged.indexed, bridged.mesh);
+  if (fill_openmesh(bridged.indexed, bridged.mesh) != 0)  // every add_face succeeds by construction
+    throw std::logic_error("build_bridged_mesh: OpenMesh refused a face of the bridged mesh");
   return bridged;
 }
 

@@ -274,7 +274,7 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     const RepairReport& r = result.report;
     // Clean: the mesh is written as read, every vertex and face in place.
     const bool clean = !r.before.has_defects() && r.faces_flipped == 0 &&
-                       r.holes.faces_added == 0 && info.faces_dropped_by_reader == 0 &&
+                       r.holes.faces_added == 0 &&
                        r.gaps.vertices_welded + r.gaps.t_junctions_closed == 0 &&
                        r.duplicate_faces_removed + r.degenerate_faces_removed +
                                r.zero_area_faces_removed + r.isolated_vertices_removed ==

@@ -439,7 +439,7 @@ std::string to_text(const RepairReport& r) {
       << (r.zero_area_faces_removed != 0
               ? std::to_string(r.zero_area_faces_removed) + " of zero area removed, "
               : std::string())
-      << r.faces_flipped << " flipped, " << r.faces_detached << " detached)\n";
+      << r.faces_flipped << " flipped)\n";
   out << "vertices: " << r.vertices_in << " in, " << r.vertices_out << " out ("
       << counted(r.vertices_split, "copy") << " from split fans, " << r.isolated_vertices_removed
       << " isolated removed)\n";

@@ -146,7 +146,8 @@ OpenMeshRepair repair_to_openmesh(const Soup& soup, const RepairOptions& options
   result.mesh.~PolyMesh();
   new (&result.mesh) PolyMesh();
   RepairResult repaired = repair(soup, options);
-  result.add_face_failures = fill_openmesh(repaired.mesh, result.mesh);
+  if (fill_openmesh(repaired.mesh, result.mesh) != 0)  // a repaired mesh is manifold: a bug
+    throw std::logic_error("repair_to_openmesh: OpenMesh refused a face of the repaired mesh");
   result.report = std::move(repaired.report);
   return result;
 }

@@ -143,7 +143,6 @@ void add_repair(Json& out, const RepairReport& r, bool elements, const DefectRep
   out["faces_added_by_split"] = r.faces_added_by_split;
   out["slits_set_aside"] = r.slits_set_aside;
   out["faces_flipped"] = r.faces_flipped;
-  out["faces_detached"] = r.faces_detached;
   out["duplicate_faces_removed"] = r.duplicate_faces_removed;
   out["degenerate_faces_removed"] = r.degenerate_faces_removed;
   out["zero_area_faces_removed"] = r.zero_area_faces_removed;

@@ -207,10 +207,10 @@ PYBIND11_MODULE(_core, m) {
                 py::bytes(reinterpret_cast<const char*>(s.soup.face_begin.data()),
                           s.soup.face_begin.size() * sizeof(Index)),
                 s.path,
-                py::make_tuple(i.declared_vertices, i.declared_faces, i.faces_dropped_by_reader,
-                               i.faces_kept, i.faces_split, i.faces_set_aside, i.dangling_edges,
-                               i.lone_points, i.strip_joins, i.unknown_records, i.color_map_indices,
-                               i.empty_records, i.trailing_bytes),
+                py::make_tuple(i.declared_vertices, i.declared_faces, i.faces_kept, i.faces_split,
+                               i.faces_set_aside, i.dangling_edges, i.lone_points, i.strip_joins,
+                               i.unknown_records, i.color_map_indices, i.empty_records,
+                               i.trailing_bytes),
                 s.not_held);
           },
           [](const py::tuple& state) {
@@ -230,14 +230,14 @@ PYBIND11_MODULE(_core, m) {
             unpack(2, soup->soup.face_begin);
             soup->path = state[3].cast<std::string>();
             const auto i = state[4].cast<std::vector<std::size_t>>();
-            if (i.size() != 13)
+            if (i.size() != 12)
               throw InvalidSoupError("Soup: bad pickle state");
             ReadInfo& info = soup->info;
             info.declared_vertices = i[0], info.declared_faces = i[1];
-            info.faces_dropped_by_reader = i[2], info.faces_kept = i[3], info.faces_split = i[4];
-            info.faces_set_aside = i[5], info.dangling_edges = i[6], info.lone_points = i[7];
-            info.strip_joins = i[8], info.unknown_records = i[9], info.color_map_indices = i[10];
-            info.empty_records = i[11], info.trailing_bytes = i[12];
+            info.faces_kept = i[2], info.faces_split = i[3], info.faces_set_aside = i[4];
+            info.dangling_edges = i[5], info.lone_points = i[6], info.strip_joins = i[7];
+            info.unknown_records = i[8], info.color_map_indices = i[9], info.empty_records = i[10];
+            info.trailing_bytes = i[11];
             if (state.size() == 6)
               soup->not_held = state[5].cast<std::vector<std::string>>();
             validate_soup(soup->soup);

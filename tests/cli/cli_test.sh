@@ -125,7 +125,7 @@ check_json)
   [ "$(json_field "$work/out" faces)" = 120 ] || fail "prisms24 faces"
   [ "$(json_field "$work/out" duplicate_faces)" = 30 ] || fail "prisms24 duplicate faces"
   [ "$(json_field "$work/out" file)" = "$models/prisms24.obj" ] || fail "prisms24 file"
-  [ "$(json_field "$work/out" schema_version)" = 1 ] || fail "schema_version"
+  [ "$(json_field "$work/out" schema_version)" = 2 ] || fail "schema_version"
   [ "$(json_field "$work/out" kind)" = check ] || fail "kind"
   [ "$(json_field "$work/out" read.declared_faces)" = 120 ] || fail "read.declared_faces"
   [ "$(json_field "$work/out" read.faces_kept)" = 120 ] || fail "read.faces_kept"

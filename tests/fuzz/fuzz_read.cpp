@@ -55,12 +55,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     ReadInfo info;
     soup = read_soup(path, &info, &attributes);
     read = true;
-    fuzz::check(info.faces_dropped_by_reader <= info.declared_faces, "dropped > declared");
-    fuzz::check(info.faces_kept + info.faces_split + info.faces_set_aside ==
-                    info.declared_faces - info.faces_dropped_by_reader,
+    fuzz::check(info.faces_kept + info.faces_split + info.faces_set_aside == info.declared_faces,
                 "kept + split + set aside != declared faces");
-    fuzz::check(soup.num_faces() + info.faces_without_corners + info.faces_dropped_by_reader ==
-                    info.declared_faces,
+    fuzz::check(soup.num_faces() + info.faces_without_corners == info.declared_faces,
                 "the soup's faces are not the file's records");
     fuzz::check(
         attributes.vertex_colors.empty() || attributes.vertex_colors.size() == soup.num_vertices(),

@@ -22,13 +22,12 @@ struct BridgedMeshOptions {
 //! Result of build_bridged_mesh(). Faces keep their direction (nothing is flipped): a 2-sided
 //! edge whose sides run the same way, and every unpaired contender, is a boundary in `mesh`.
 struct BridgedMesh {
-  PolyMesh mesh;                      //!< every kept polygon, in order, vertices split per fan
-  std::size_t add_face_failures = 0;  //!< always 0: every add_face succeeds by construction
-  IndexedMesh indexed;                //!< the same mesh as plain arrays with provenance
-  EdgeBridges bridges;                //!< contenders per vertex pair, over indexed.soup corners
-  std::vector<Index> mate;            //!< pairing: side paired with each side, or kNoIndex
-  std::vector<Index> copies_begin;    //!< vertex bridge: #V_in+1 offsets into copies
-  std::vector<Index> copies;          //!< mesh vertices made from each input vertex
+  PolyMesh mesh;                    //!< every kept polygon, in order, vertices split per fan
+  IndexedMesh indexed;              //!< the same mesh as plain arrays with provenance
+  EdgeBridges bridges;              //!< contenders per vertex pair, over indexed.soup corners
+  std::vector<Index> mate;          //!< pairing: side paired with each side, or kNoIndex
+  std::vector<Index> copies_begin;  //!< vertex bridge: #V_in+1 offsets into copies
+  std::vector<Index> copies;        //!< mesh vertices made from each input vertex
 
   //! Mesh vertices (OpenMesh indices) that input vertex v became; one per fan.
   std::vector<Index> copies_of(Index v) const {

@@ -73,14 +73,11 @@ struct ReadInfo {
   //! The coordinates were stored as 32-bit floats (STL, 3MF, PLY `float`): gap closing's
   //! automatic tolerance then respects float rounding (CloseGapsOptions::float_coordinates).
   bool float_coordinates = false;
-  //! Declared faces OpenMesh's reader never passed on (only while a format still goes through
-  //! OpenMesh; MeshBridge's own readers keep every record and leave this 0).
-  std::size_t faces_dropped_by_reader = 0;
 
   //! True if some record was not kept as one simple polygon.
   bool changed_anything() const {
-    return faces_split + faces_set_aside + dangling_edges + lone_points + faces_dropped_by_reader +
-               unknown_records + color_map_indices + empty_records + trailing_bytes >
+    return faces_split + faces_set_aside + dangling_edges + lone_points + unknown_records +
+               color_map_indices + empty_records + trailing_bytes >
            0;
   }
 };

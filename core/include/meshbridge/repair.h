@@ -91,9 +91,6 @@ struct RepairReport {
   //! Each adds one vertex (its IndexedMesh::vertex_origin is kNoIndex: no input vertex) and one
   //! corner to each of the two faces.
   std::size_t edges_split_to_stay_manifold = 0;
-  //! Always 0: no face is ever cut loose (the pipeline proves every output edge manifold
-  //! without it); kept so reports keep their fields.
-  std::size_t faces_detached = 0;
   std::size_t components_before = 0;  //!< as the user sees the input (through all contenders)
   std::size_t components_after = 0;
   std::size_t boundary_edges_before = 0;

@@ -13,8 +13,7 @@ namespace meshbridge {
 struct OpenMeshRepair {
   PolyMesh mesh;
   RepairReport report;
-  std::size_t add_face_failures = 0;  //!< always 0
-  bool fast_path = false;             //!< true if the input was already a repaired mesh (see below)
+  bool fast_path = false;  //!< true if the input was already a repaired mesh (see below)
 };
 
 //! The same result as `to_openmesh(repair(soup, options).mesh)`, faster on clean input.

@@ -27,7 +27,7 @@
 namespace meshbridge {
 
 //! Version of the report schema; raised whenever a key is renamed, removed or changes meaning.
-constexpr int kReportSchemaVersion = 1;
+constexpr int kReportSchemaVersion = 2;
 
 //! How a report is written.
 struct ReportJsonOptions {

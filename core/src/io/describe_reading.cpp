@@ -11,7 +11,7 @@ namespace meshbridge {
 
 std::string describe_reading(const ReadInfo& info) {
   std::string text = counted(info.declared_faces, "face record") + ": ";
-  if (info.faces_split + info.faces_set_aside + info.faces_dropped_by_reader == 0) {
+  if (info.faces_split + info.faces_set_aside == 0) {
     text += "all kept";
   } else {
     text += std::to_string(info.faces_kept) + " kept";
@@ -23,8 +23,6 @@ std::string describe_reading(const ReadInfo& info) {
         text += "; " + std::to_string(info.faces_without_corners) + " without any corner";
       text += ")";
     }
-    if (info.faces_dropped_by_reader > 0)
-      text += ", " + std::to_string(info.faces_dropped_by_reader) + " dropped by the reader";
   }
   if (info.vertices_welded_by_position > 0) {
     text += "; the file repeats each vertex per face: " +
