@@ -41,15 +41,15 @@ def imported_optional(code):
     return [m for m in OPTIONAL if re.search(rf"^\s*(import|from) {m}\b", code, flags=re.M)]
 
 
-def run_block(code, where, name, extra_path=()):
-    """Saves the block as where/example_NAME.py and runs `python3 example_NAME.py` in `where`;
-    fails with its output unless it exits 0 within 5 minutes."""
+def run_block(code, where, name, extra_path=(), args=()):
+    """Saves the block as where/example_NAME.py and runs `python3 example_NAME.py ARGS...` in
+    `where`; fails with its output unless it exits 0 within 5 minutes."""
     (where / "resources").symlink_to(SOURCE / "resources")
     script = where / f"example_{name}.py"
     script.write_text(code)
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join([*map(str, extra_path), env.get("PYTHONPATH", "")])
-    result = subprocess.run([sys.executable, script.name], cwd=where, env=env,
+    result = subprocess.run([sys.executable, script.name, *map(str, args)], cwd=where, env=env,
                             capture_output=True, text=True, timeout=300)
     assert result.returncode == 0, f"python3 {script.name} exited {result.returncode}:\n" \
         f"{result.stdout[-3000:]}\n{result.stderr[-3000:]}"
@@ -113,11 +113,25 @@ def meshbridge_batch_summary(cli, indir, outdir):
     return rows
 
 
-def obj_face_counts(path):
-    """(triangles, polygons) of an OBJ file's face records."""
-    sizes = [len(line.split()) - 1 for line in path.read_text().splitlines()
-             if line.startswith("f ")]
-    return sum(n - 2 for n in sizes), len(sizes)
+def triangle_count(path):
+    """The triangles of a mesh file's polygons (n - 2 for a polygon of n corners): what MeshLab
+    holds after loading it."""
+    import meshbridge
+
+    soup = meshbridge.read(path)
+    return len(soup.corner_vertices) - 2 * soup.num_faces
+
+
+def batch_folder(where):
+    """The folder the pymeshlab batch runs on: the bundled models (OBJ and OFF, polygons among
+    them) and a real STL whose repair splits 4 edges at their midpoint (UR20 forearm)."""
+    folder = where / "batch_in"
+    folder.mkdir()
+    for path in (SOURCE / "resources" / "models").iterdir():
+        (folder / path.name).write_bytes(path.read_bytes())
+    ur20 = SOURCE / "tests" / "data" / "realworld2" / "ur_ur20_forearm_collision.stl"
+    (folder / ur20.name).write_bytes(ur20.read_bytes())
+    return folder
 
 
 @pytest.mark.parametrize("index", range(len(pymeshlab_blocks())))
@@ -130,30 +144,34 @@ def test_readme_pymeshlab_block(index, tmp_path):
     plugin = os.environ["MESHBRIDGE_PLUGIN"]
     if PLUGIN_PLACEHOLDER in code:
         code = code.replace(PLUGIN_PLACEHOLDER, plugin)
-    result = run_block(code, tmp_path, f"pymeshlab_{index}")
+    batch = "pymeshlab_batch.csv" in code
+    folder = batch_folder(tmp_path) if batch else None
+    result = run_block(code, tmp_path, f"pymeshlab_{index}", args=[folder] if batch else [])
     print(result.stdout)
     import meshbridge
 
-    if "pymeshlab_batch.csv" in code:  # the batch: its counts are meshbridge batch's
+    if batch:  # the batch: its counts are meshbridge batch's
         with open(tmp_path / "pymeshlab_batch.csv") as f:
             ours = {r["file"]: {k: int(v == "True") if v in ("True", "False") else int(v)
                                 for k, v in r.items() if k != "file"}
                     for r in csv.DictReader(f)}
-        theirs = meshbridge_batch_summary(os.environ["MESHBRIDGE_CLI"],
-                                          tmp_path / "resources" / "models", tmp_path / "cli_out")
-        theirs = {name: row for name, row in theirs.items() if name in ours}
-        assert len(ours) >= 10 and sorted(ours) == sorted(theirs)
+        cli_out = tmp_path / "cli_out"
+        theirs = meshbridge_batch_summary(os.environ["MESHBRIDGE_CLI"], folder, cli_out)
+        assert len(ours) == 21 and sorted(ours) == sorted(theirs)
+        assert theirs["ur_ur20_forearm_collision.stl"]["faces_out"] == 2486
+        assert ours["ur_ur20_forearm_collision.stl"]["faces_out"] == 2494  # 4 midpoint splits
         for name in ours:
-            # Faces: MeshLab splits OBJ polygons into triangles on loading, meshbridge keeps them.
-            triangles, polygons = obj_face_counts(tmp_path / "resources" / "models" / name)
+            # Faces: MeshLab's triangles, so the triangles of meshbridge batch's files; every
+            # other count is the same.
             a, b = dict(ours[name]), dict(theirs[name])
-            assert (a.pop("faces_in"), a.pop("faces_out")) == (triangles, triangles), name
-            assert (b.pop("faces_in"), b.pop("faces_out")) == (polygons, polygons), name
+            assert a.pop("faces_in") == triangle_count(folder / name), name
+            assert a.pop("faces_out") == triangle_count(cli_out / name), name
+            b.pop("faces_in"), b.pop("faces_out")
             assert a == b, name
-            # MeshLab's OBJ writer joins the triangles of a polygon again: the saved file holds
-            # the polygons, no singular edge, and the split vertices.
-            back = meshbridge.read(tmp_path / "repaired" / name)
-            assert back.num_faces == polygons, name
+            # The saved PLY holds MeshLab's triangles, no singular element, and the split
+            # vertices apart (the components are meshbridge batch's).
+            back = meshbridge.read(tmp_path / "repaired" / (name + ".ply"))
+            assert back.num_faces == triangle_count(cli_out / name), name
             saved = meshbridge.check(back)
             assert (saved["singular_edges"], saved["singular_vertices"]) == (0, 0), name
             assert saved["components"] == b["components"], name
