@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// meshbridge::to_text(const RepairReport&): the repair report as the CLI prints it.
+#include "meshbridge/repair.h"
+
+#include "meshbridge/counted.h"
+
+#include <sstream>
+
+namespace meshbridge {
+
+std::string to_text(const RepairReport& r) {
+  std::ostringstream out;
+  const CloseGapsReport& g = r.gaps;
+  if (g.tolerance > 0) {
+    out << "gaps (tolerance " << g.tolerance << "): " << counted(g.vertices_welded, "vertex")
+        << " welded (largest move " << g.largest_weld_distance << ", " << g.welds_refused
+        << " refused: same polygon), " << counted(g.t_junctions_closed, "T-junction") << " closed ("
+        << counted(g.sides_split, "side") << " split)\n";
+    if (g.welds_too_long != 0 || g.t_junctions_too_wide != 0) {
+      out << "gaps kept open: " << counted(g.welds_too_long, "weld") << " and "
+          << counted(g.t_junctions_too_wide, "T-junction closing")
+          << " would move a vertex by more than a quarter of the shortest edge there\n";
+    }
+  } else if (g.automatic) {
+    out << "gaps: none to close (no boundary edge)\n";
+  } else {
+    out << "gaps: not closed (tolerance 0)\n";
+  }
+  if (g.welds_undone != 0 || g.t_junctions_undone != 0) {
+    out << "gaps refused: " << counted(g.welds_undone, "weld") << " and "
+        << counted(g.t_junctions_undone, "T-junction closing") << " undone: " << g.refused_reason
+        << "\n";
+  }
+  out << "faces: " << r.faces_in << " in, " << r.faces_out << " out (" << r.faces_set_aside
+      << " set aside, " << r.faces_split << " split into " << r.faces_added_by_split << " more"
+      << (r.slits_set_aside != 0 ? " (" + counted(r.slits_set_aside, "keyhole slit") + " set aside)"
+                                 : std::string())
+      << ", " << counted(r.duplicate_faces_removed, "duplicate") << " and "
+      << r.degenerate_faces_removed << " degenerate removed, "
+      << (r.zero_area_faces_removed != 0
+              ? std::to_string(r.zero_area_faces_removed) + " of zero area removed, "
+              : std::string())
+      << r.faces_flipped << " flipped)\n";
+  out << "vertices: " << r.vertices_in << " in, " << r.vertices_out << " out ("
+      << counted(r.vertices_split, "copy") << " from split fans, " << r.isolated_vertices_removed
+      << " isolated removed)\n";
+  out << "sides: " << r.sides_cut << " cut on singular edges, " << r.sides_cut_for_orientation
+      << " cut for orientation, " << r.sides_cut_to_stay_manifold << " cut to stay manifold ("
+      << r.sides_paired_with_copies << " paired with copies and "
+      << counted(r.edges_split_to_stay_manifold, "edge") << " split at the midpoint instead), "
+      << r.sides_stitched << " stitched\n";
+  const FillHolesReport& h = r.holes;
+  if (h.max_edges > 0) {
+    out << "holes (up to " << h.max_edges << " edges): " << h.holes_filled << " filled with "
+        << counted(h.faces_added, "new triangle") << ", " << h.holes_left << " left open";
+    if (h.patches_refused > 0) {
+      out << " (" << h.patches_refused << " of them no hole: a patch would lie on the surface, "
+          << "as on the outline of an open sheet)";
+    }
+    out << "\n";
+  } else {
+    out << "holes: not filled (off)\n";
+  }
+  out << "components: " << r.components_before << " -> " << r.components_after
+      << "; boundary edges: " << r.boundary_edges_before << " -> " << r.boundary_edges_after
+      << "; non-orientable components met by orientation: " << r.nonorientable_components << "\n";
+  if (r.ambiguous_nested_shells != 0) {
+    out << "nested shells: " << r.ambiguous_nested_shells
+        << " wound like the shell around them (an insert, or a cavity wound the wrong way): "
+           "left as written\n";
+  }
+  out << "after: singular edges " << r.after.singular_edges.size() << ", singular vertices "
+      << r.after.num_singular_vertices() << ", non-orientable components "
+      << r.after.num_nonorientable_components << ", watertight "
+      << (r.after.watertight ? "yes" : "no") << "\n";
+  return out.str();
+}
+
+}  // namespace meshbridge
