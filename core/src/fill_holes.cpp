@@ -121,16 +121,26 @@ std::vector<Loop> boundary_loops(const HalfedgeMesh& mesh) {
   return loops;
 }
 
+// Holes of at most this many edges are triangulated by CGAL's cubic search over all
+// triangulations (Liepa 2003), which depends on nothing but the hole. Longer ones restrict the
+// search to the faces of a 3D Delaunay triangulation of the rim (CGAL's default, much faster
+// there), whose result can depend on the order of memory CGAL allocated before (handles are
+// compared by address): the same input repaired twice in one process could then differ.
+constexpr std::size_t kExhaustiveSearchMaxEdges = 500;
+
 // triangulate_hole: CGAL >= 5.6 takes the output as a named parameter (the positional form is
 // deprecated there); bookworm's 5.5 has only the positional one.
-std::vector<Face> triangulate(HalfedgeMesh& mesh, Halfedge border) {
+std::vector<Face> triangulate(HalfedgeMesh& mesh, Halfedge border, std::size_t edges) {
   std::vector<Face> patch;
   namespace PMP = CGAL::Polygon_mesh_processing;
+  const bool delaunay = edges > kExhaustiveSearchMaxEdges;
 #if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(5, 6, 0)
   PMP::triangulate_hole(mesh, border,
-                        CGAL::parameters::face_output_iterator(std::back_inserter(patch)));
+                        CGAL::parameters::face_output_iterator(std::back_inserter(patch))
+                            .use_delaunay_triangulation(delaunay));
 #else
-  PMP::triangulate_hole(mesh, border, std::back_inserter(patch));
+  PMP::triangulate_hole(mesh, border, std::back_inserter(patch),
+                        CGAL::parameters::use_delaunay_triangulation(delaunay));
 #endif
   return patch;
 }
@@ -226,7 +236,7 @@ FillHolesReport fill_holes(IndexedMesh& mesh, const FillHolesOptions& options) {
       ++report.holes_left;
       continue;
     }
-    const std::vector<Face> patch = triangulate(halfedges, loop.border);
+    const std::vector<Face> patch = triangulate(halfedges, loop.border, loop.edges);
     if (patch.empty()) {  // CGAL found no patch; it left the mesh as it was
       ++report.holes_left;
       continue;
