@@ -157,7 +157,7 @@ TEST(FillHoles, open_cylinder_with_16_gon_rims_closes_into_the_prism) {
 // CGAL's hole triangulation restricted to a 3D Delaunay triangulation of the rim (its default)
 // compares handles by address, so its patch could depend on what the process allocated before:
 // a SUMO car (Debian sumo-tools, tests/data/realworld2) repaired 30 times in one process gave 2
-// to 4 different meshes. Holes of up to 500 edges now take the exhaustive search.
+// to 4 different meshes. Holes of up to 100 edges now take the exhaustive search.
 TEST(FillHoles, the_same_repair_twice_in_one_process_gives_the_same_patches) {
   const Soup soup = read_soup(std::string(MESHBRIDGE_REALWORLD_DIR) +
                               "/../realworld2/sumo_car_minibus_citrus.obj");

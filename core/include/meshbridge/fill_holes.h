@@ -3,8 +3,11 @@
 //! \file fill_holes.h
 //! Closing small holes of a repaired mesh with new triangles (DESIGN 8a, "Holes"), through CGAL
 //! Polygon Mesh Processing's triangulate_hole: the minimum-weight triangulation of the hole's
-//! boundary polygon of P. Liepa, "Filling Holes in Meshes" (SGP 2003), searched over the 3D
-//! Delaunay triangulation of the boundary first. No vertex is added.
+//! boundary polygon of P. Liepa, "Filling Holes in Meshes" (SGP 2003). Loops of up to 100 edges
+//! are searched over all triangulations (cubic in the length: about 10 ms at 100 edges), so the
+//! patch depends on the loop alone; longer ones over the 3D Delaunay triangulation of the loop
+//! first (CGAL's default, fast), whose result can vary with the process's earlier allocations.
+//! No vertex is added.
 
 #include "meshbridge/indexed_mesh.h"
 
