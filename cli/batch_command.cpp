@@ -45,6 +45,8 @@ struct BatchArguments {
   bool progress = false;
   bool in_place = false;
   bool resume = false;
+  bool print = false;  //!< as repair --print: the slicer preset, 3MF outputs
+  bool weld_given = false, fill_holes_given = false;
   std::string log;                //!< "" = OUTDIR/.meshbridge-batch.jsonl
   std::string weld = "auto";      //!< as repair --weld
   std::string fill_holes;         //!< as repair --fill-holes ("" or "0" = off)
@@ -195,6 +197,18 @@ int run_batch(const BatchArguments& arguments) {
   options.repair.nested_shells = arguments.nested_shells;
   options.repair.pairing = arguments.pairing == "combinatorial" ? PairingPolicy::combinatorial
                                                                 : PairingPolicy::geometric;
+  if (arguments.print) {
+    if (!options.format.empty() && options.format != "3mf") {  // (--format is lower case)
+      throw UsageError(
+          "--print writes 3MF, the format slicers read with units, objects and no "
+          "re-weld; leave out --format " +
+          options.format + " (or give --format 3mf)");
+    }
+    options.format = "3mf";
+    options.print = true;
+    options.print_keeps_weld = arguments.weld_given;
+    options.print_keeps_fill_holes = arguments.fill_holes_given;
+  }
   BatchPlan plan;
   try {
     plan = plan_batch(arguments.in_dir, arguments.out_dir, options, arguments.in_place);
@@ -456,7 +470,16 @@ void add_batch_command(CLI::App& app, int& exit_code) {
                    "files repaired in parallel, each in a process of its own (default: cores)")
       ->capture_default_str()
       ->check(whole_number_in(1, 1024));
-  command->callback([arguments, &exit_code] { exit_code = run_batch(*arguments); });
+  command->add_flag("--print", arguments->print,
+                    "the slicer route of `repair --print` for every file: gap closing as wide "
+                    "as PrusaSlicer's load-time repair (unless --weld), duplicate and zero-area "
+                    "faces removed unless that opens the surface, holes of up to 32 edges filled "
+                    "(unless --fill-holes), every output written as 3MF");
+  command->callback([arguments, command, &exit_code] {
+    arguments->weld_given = command->count("--weld") > 0;
+    arguments->fill_holes_given = command->count("--fill-holes") > 0;
+    exit_code = run_batch(*arguments);
+  });
 }
 
 }  // namespace meshbridge::cli

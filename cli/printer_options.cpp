@@ -32,6 +32,10 @@ double parse_distance(const std::string& option, const std::string& text) {
 
 }  // namespace
 
+double parse_separation(const std::string& text) {
+  return text == "auto" ? kAutoSeparation : parse_distance("separate", text);
+}
+
 void add_nested_shells_option(CLI::App& command, AmbiguousNesting& nested) {
   const std::map<std::string, AmbiguousNesting> names{{"material", AmbiguousNesting::material},
                                                       {"cavity", AmbiguousNesting::cavity}};
@@ -127,51 +131,25 @@ bool is_stl_path(const std::string& path) {
   return mesh_format(path) == MeshFormat::stl;
 }
 
-StlSeparation apply_separate(const std::string& text, bool given, IndexedMesh& mesh,
-                             std::size_t vertices_split, const std::string& out,
-                             std::ostream& summary) {
-  const bool automatic = text == "auto";
-  StlSeparation done;
-  done.distance = automatic ? 0 : parse_distance("separate", text);
-  if (vertices_split == 0 || (!automatic && done.distance == 0))
-    return StlSeparation();
-  if (is_stl_path(out)) {
-    if (automatic) {  // one that a re-read's default gap closing does not undo either
-      done = separate_copies_for_stl(mesh);
-      if (!done.kept_reason.empty()) {
-        summary << "separate: the " << vertices_split
-                << " split vertex copies keep their positions (" << done.kept_reason << ")\n";
-        return done;
-      }
-      summary << "separated the " << vertices_split << " split vertex copies for STL: moved "
-              << done.vertices_moved << " vertices by " << done.distance
-              << " (the smallest move a reader's weld by float32 position keeps apart; "
-                 "--separate 0 keeps positions exact)\n";
-      return done;
-    }
-    IndexedMesh trial = mesh;
-    separate_split_vertices(trial, done.distance);
-    if (singular_elements_after_stl_round_trip(trial.soup) != 0) {
-      std::ostringstream message;
-      message << "--separate " << text << " is too small for float32 (STL) at this model's "
-              << "coordinates: the copies would weld again; the smallest EPS that works is "
-              << smallest_stl_separation(mesh) << " (or use --separate auto)";
-      throw UsageError(message.str());
-    }
-  } else if (automatic) {
-    if (given)
-      summary << "separate: not needed for " << out << " (the format keeps shared vertices)\n";
-    return StlSeparation();
+std::string separation_summary(const StlSeparation& separated, std::size_t vertices_split,
+                               const std::string& text, bool given, const std::string& out) {
+  std::ostringstream summary;
+  if (!separated.kept_reason.empty()) {
+    summary << "separate: the " << vertices_split << " split vertex copies keep their positions ("
+            << separated.kept_reason << ")\n";
+  } else if (separated.vertices_moved > 0 && text == "auto") {
+    summary << "separated the " << vertices_split << " split vertex copies for STL: moved "
+            << separated.vertices_moved << " vertices by " << separated.distance
+            << " (the smallest move a reader's weld by float32 position keeps apart; "
+               "--separate 0 keeps positions exact)\n";
+  } else if (separated.vertices_moved > 0) {
+    summary << "separated the " << vertices_split << " split vertex copies: moved "
+            << separated.vertices_moved << " vertices (every copy of a split vertex) by "
+            << separated.distance << "\n";
+  } else if (vertices_split > 0 && text == "auto" && given && !is_stl_path(out)) {
+    summary << "separate: not needed for " << out << " (the format keeps shared vertices)\n";
   }
-  done.vertices_moved = separate_split_vertices(mesh, done.distance);
-  summary << "separated the " << vertices_split << " split vertex copies: moved "
-          << done.vertices_moved << " vertices (every copy of a split vertex) by " << done.distance
-          << "\n";
-  return done;
-}
-
-DefectReport detect_as_reread(const std::string& path) {
-  return detect_defects(read_soup(path));
+  return summary.str();
 }
 
 }  // namespace meshbridge::cli

@@ -7,6 +7,7 @@
 #include "meshbridge/defect_report.h"
 #include "meshbridge/indexed_mesh.h"
 #include "meshbridge/pairing.h"
+#include "meshbridge/repair_file.h"
 #include "meshbridge/stl_round_trip.h"
 
 #include <CLI/CLI.hpp>
@@ -19,6 +20,10 @@ namespace meshbridge::cli {
 
 //! `--weld TOL`: "auto" (the default) or a distance >= 0 (0 = off). Throws UsageError otherwise.
 CloseGapsOptions parse_weld(const std::string& text);
+
+//! `--separate EPS`: "auto" (the default) is kAutoSeparation, else a distance >= 0 (0 = positions
+//! exact). Throws UsageError otherwise.
+double parse_separation(const std::string& text);
 
 //! Adds `--fill-holes [MAX_EDGES]` to `command` (repair and batch), storing its text into
 //! `max_edges`: given without a number it is kDefaultFillHolesMaxEdges (32); absent it stays
@@ -45,16 +50,11 @@ std::string wider_weld_hint(const Soup& soup, const CloseGapsOptions& weld,
 //! True if `path` ends with ".stl" (any case).
 bool is_stl_path(const std::string& path);
 
-//! `--separate auto|EPS` applied to a repaired mesh about to be written to `out`: for STL, auto
-//! (the default) is separate_copies_for_stl() and 0 keeps positions exact; an explicit EPS that
-//! float32 cannot hold is a UsageError naming the smallest EPS that works. Other formats keep
-//! shared vertices: nothing moves (an explicit EPS still moves the copies). Prints one summary
-//! line when anything moved, when copies could not be moved, or when `given` for another format.
-StlSeparation apply_separate(const std::string& text, bool given, IndexedMesh& mesh,
-                             std::size_t vertices_split, const std::string& out,
-                             std::ostream& summary);
-
-//! Detection on the file at `path` as a reader gets it back (read_soup, no repair).
-DefectReport detect_as_reread(const std::string& path);
+//! The summary line of `--separate TEXT` (`given`: on the command line) after repair_file()
+//! moved `separated` of a mesh with `vertices_split` copies written to `out`: what moved and how
+//! far, why copies kept their positions, or, when `given` for a format that keeps shared
+//! vertices, that nothing was needed; "" otherwise.
+std::string separation_summary(const StlSeparation& separated, std::size_t vertices_split,
+                               const std::string& text, bool given, const std::string& out);
 
 }  // namespace meshbridge::cli

@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "commands.h"
-#include "meshbridge/counted.h"
-#include "meshbridge/read_accounting.h"
 #include "paths.h"
 #include "pictures.h"
-#include "print_preset.h"
+#include "print_summary.h"
 #include "printer_options.h"
 #include "progress.h"
 #include "release_memory.h"
@@ -13,23 +11,14 @@
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/errors.h"
 #include "meshbridge/io.h"
-#include "meshbridge/polygon_triangles.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/repair_file.h"
 #include "meshbridge/report_json.h"
-#include "meshbridge/self_intersections.h"
-#include "meshbridge/separate_copies.h"
 
 #include <CLI/CLI.hpp>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <memory>
-#include <optional>
-#include <sstream>
 
 namespace meshbridge::cli {
 
@@ -117,120 +106,88 @@ int run_repair(RepairArguments& arguments) {
     find_pictures_module();  // a missing module is told now, not after the repair
   }
 
-  ReadInfo info;
-  RepairResult result;
-  std::ostringstream separate_summary;
-  std::string print_note;              // --print: why duplicates were kept
-  std::optional<DefectReport> reread;  // STL output as a reader gets it back
-  Soup written_soup;                   // ... and its soup, read back for --before-after
-  WrittenOutput written;               // triangles fanned, what the output format could not hold
-  std::unique_ptr<SelfIntersectionReport> crossings;  // of the result, with --self-intersections
+  RepairFileOptions file_options;
+  file_options.repair = options;
+  file_options.print = arguments.print;
+  file_options.print_keeps_weld = arguments.weld_given;
+  file_options.print_keeps_fill_holes = arguments.fill_holes_given;
+  file_options.separation = parse_separation(arguments.separate);
+  file_options.self_intersections = arguments.self_intersections;
+  file_options.keep_meshes = !arguments.before_after.empty();  // only the picture reads them
+  file_options.repaired = release_free_memory;  // the repair's working arrays, before writing
+  RepairedFile file;
   {
     ProgressDisplay progress(in, progress_wanted(arguments.progress), progress_wanted(false),
                              repair_plan());
-    progress.stage(Stage::read, 0);
-    MeshAttributes attributes;
-    Soup soup = read_soup(in, &info, &attributes);
-    options.close_gaps.float_coordinates = info.float_coordinates;
-    if (arguments.print)
-      apply_print_preset(soup, arguments.weld_given, arguments.fill_holes_given, options);
-    options.progress = progress.callback();
-    // Only the picture reads the input again. Without one the soup is consumed: an input repair
-    // leaves unchanged becomes the output (no copy), any other is freed before the writing.
-    if (arguments.print) {
-      result = repair_for_print(soup, options, print_note);
-      if (arguments.before_after.empty())
-        soup = Soup();
-    } else if (arguments.before_after.empty()) {
-      result = repair(std::move(soup), options);
-      soup = Soup();  // what repair left of it, freed before the output is written
-    } else {
-      result = repair(soup, options);
-    }
-    release_free_memory();  // the repair's working arrays, before the output is written
-    count_records_without_corners(info, result.report);  // face records with no corner
-    progress.stage(Stage::write, 0);
-    const StlSeparation separated =
-        apply_separate(arguments.separate, arguments.separate_given, result.mesh,
-                       result.report.vertices_split, out, separate_summary);
-    if (arguments.self_intersections)  // of the mesh as written (copies moved apart included)
-      crossings =
-          std::make_unique<SelfIntersectionReport>(find_self_intersections(result.mesh.soup));
-    write_mesh(out, result.mesh, &attributes);  // maps them through the mesh's origins
-    written = describe_written(out, result.mesh, attributes, result.report.gaps.vertices_welded);
-    written.copies_moved = separated.vertices_moved;
-    written.separation = separated.distance;
-    std::error_code status_error;  // (a device or pipe cannot be read back)
-    if (is_stl_path(out) && std::filesystem::is_regular_file(out, status_error)) {
-      // Only the picture reads the mesh again: without one it is freed before the file is read
-      // back, so the peak is not the mesh and the re-read soup together.
-      if (arguments.before_after.empty()) {
-        result.mesh = IndexedMesh();
-        reread = detect_as_reread(out);
-      } else {  // the picture shows the file as written: the re-read soup and its defects
-        written_soup = read_soup(out);
-        reread = detect_defects(written_soup);
-      }
-    } else if (mesh_format(out) == MeshFormat::threemf && written.polygons_fanned > 0) {
-      // The file holds triangles: detection on them, as any reader of the 3MF gets them.
-      reread = detect_defects(as_triangles(result.mesh.soup));
-    }
-    if (!arguments.report.empty()) {
-      ReportJsonOptions json;
-      json.elements = arguments.elements;
-      const std::string text =
-          repair_report_json(in, out, result.report, &info, json, reread ? &*reread : nullptr,
-                             &written, crossings.get()) +
-          "\n";
-      if (report_to_stdout) {
-        std::cout << text << std::flush;
-      } else {
-        try {
-          write_text_atomically(arguments.report, text);
-        } catch (const WriteError& error) {
-          // Name what failed: the report, after OUT was written.
-          std::string why = error.what();
-          const std::string prefix = arguments.report + ": ";
-          if (why.compare(0, prefix.size(), prefix) == 0)
-            why.erase(0, prefix.size());
-          throw WriteError(arguments.report + ": cannot write the report (" + why + "); " + out +
-                           " is written");
-        }
-      }
-    }
-    if (!arguments.before_after.empty()) {
-      // The result framed as the input, so the two pictures line up.
-      Picture before, after;
-      before.soup = &soup;
-      before.report = &result.report.before;
-      before.options.title = "before: " + file_name_of(in);
-      after.soup = reread ? &written_soup : &result.mesh.soup;
-      after.report = reread ? &*reread : &result.report.after;
-      after.options.title = "after: " + file_name_of(out);
-      after.frame_soup = &soup;
-      after.frame_report = &result.report.before;
-      for (Picture* picture : {&before, &after}) {
-        picture->options.view =
-            parse_snapshot_view(arguments.view.empty() ? "iso" : arguments.view);
-        picture->options.focus =
-            parse_snapshot_focus(arguments.focus.empty() ? "auto" : arguments.focus);
-        picture->options.y_up = arguments.up == "y";
-      }
-      write_pictures_png(arguments.before_after, {before, after});
+    file_options.repair.progress = progress.callback();
+    try {
+      file = repair_file(in, out, file_options);
+    } catch (const std::invalid_argument& error) {  // --separate too small: nothing written
+      throw UsageError(error.what());
     }
   }
-  warn_about_reader(in, info);
+  const RepairReport& report = file.report;
+  const DefectReport* reread = file.reread ? &*file.reread : nullptr;
+  if (!arguments.report.empty()) {
+    ReportJsonOptions json;
+    json.elements = arguments.elements;
+    const std::string text =
+        repair_report_json(in, out, report, &file.info, json, reread, &file.written,
+                           file.crossings ? &*file.crossings : nullptr) +
+        "\n";
+    if (report_to_stdout) {
+      std::cout << text << std::flush;
+    } else {
+      try {
+        write_text_atomically(arguments.report, text);
+      } catch (const WriteError& error) {
+        // Name what failed: the report, after OUT was written.
+        std::string why = error.what();
+        const std::string prefix = arguments.report + ": ";
+        if (why.compare(0, prefix.size(), prefix) == 0)
+          why.erase(0, prefix.size());
+        throw WriteError(arguments.report + ": cannot write the report (" + why + "); " + out +
+                         " is written");
+      }
+    }
+  }
+  if (!arguments.before_after.empty()) {
+    // The result framed as the input, so the two pictures line up; the file as a reader gets
+    // it back where that differs (STL).
+    const bool reread_soup = !file.written_soup.positions.empty();
+    Picture before, after;
+    before.soup = &file.input;
+    before.report = &report.before;
+    before.options.title = "before: " + file_name_of(in);
+    after.soup = reread_soup ? &file.written_soup : &file.mesh.soup;
+    after.report = reread_soup ? reread : &report.after;
+    after.options.title = "after: " + file_name_of(out);
+    after.frame_soup = &file.input;
+    after.frame_report = &report.before;
+    for (Picture* picture : {&before, &after}) {
+      picture->options.view = parse_snapshot_view(arguments.view.empty() ? "iso" : arguments.view);
+      picture->options.focus =
+          parse_snapshot_focus(arguments.focus.empty() ? "auto" : arguments.focus);
+      picture->options.y_up = arguments.up == "y";
+    }
+    write_pictures_png(arguments.before_after, {before, after});
+  }
+  warn_about_reader(in, file.info);
+  const WrittenOutput& written = file.written;
   for (const std::string& what : written.left_out)
     std::cerr << "meshbridge: warning: " << in << ": output " << out << ": " << what << "\n";
 
   std::ostream& summary = report_to_stdout ? std::cerr : std::cout;
-  summary << in << " -> " << out << "\n" << to_text(result.report) << separate_summary.str();
+  summary << in << " -> " << out << "\n"
+          << to_text(report)
+          << separation_summary(file.separated, report.vertices_split, arguments.separate,
+                                arguments.separate_given, out);
   if (arguments.print)
-    summary << print_note << print_summary(result.report, reread ? &*reread : nullptr);
+    summary << file.print_note << print_summary(report, reread);
   else
-    summary << open_edges_hint(result.report);
-  if (crossings)
-    summary << "self-intersections of the result:\n" << to_text(*crossings);
+    summary << open_edges_hint(report);
+  if (file.crossings)
+    summary << "self-intersections of the result:\n" << to_text(*file.crossings);
   if (written.polygons_fanned != 0) {
     summary << "written as " << written.triangles
             << " triangles: " << counted(written.polygons_fanned, "polygon")
@@ -251,7 +208,7 @@ int run_repair(RepairArguments& arguments) {
                    "diagonal); write OBJ, PLY or OFF to keep the polygons.\n";
     } else if (left > 0) {
       std::cerr << "meshbridge: warning: STL has no shared vertices; reading " << out
-                << " welds the " << result.report.vertices_split
+                << " welds the " << report.vertices_split
                 << " split vertex copies again and re-creates "
                 << counted(reread->singular_edges.size(), "singular edge") << " and "
                 << counted(reread->num_singular_vertices(), "singular vertex")

@@ -58,6 +58,10 @@ std::string batch_options_text(const FileJobOptions& options) {
        << " nested_shells=" << (r.nested_shells == AmbiguousNesting::cavity ? "cavity" : "material")
        << " elements=" << options.elements
        << " separate_stl_copies=" << options.separate_stl_copies;
+  if (options.print) {  // (only when on: logs written before --print existed stay valid)
+    text << " print=1 print_keeps_weld=" << options.print_keeps_weld
+         << " print_keeps_fill_holes=" << options.print_keeps_fill_holes;
+  }
   return text.str();
 }
 

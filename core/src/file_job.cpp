@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/file_job.h"
-#include "meshbridge/stl_round_trip.h"
+#include "meshbridge/repair_file.h"
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
@@ -225,52 +225,23 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
                   job.input + ": cannot open the file (" + std::strerror(errno) + ")", nullptr,
                   nullptr);
   }
-  ReadInfo info;
-  bool read = false;
+  RepairedFile file;
+  // What the reader found, once the file was read (a failure after reading names it too).
+  const auto read_info = [&file]() -> const ReadInfo* { return file.read ? &file.info : nullptr; };
   try {
-    Soup soup;
-    MeshAttributes attributes;
-    soup = read_soup(job.input, &info, &attributes);
-    read = true;
-    if (info.changed_anything())
-      result.reading = describe_reading(info);
-    RepairOptions repair_options = options.repair;
-    repair_options.close_gaps.float_coordinates = info.float_coordinates;
-    RepairResult repaired = repair(std::move(soup), repair_options);  // unchanged: no copy
-    soup = Soup();
-    count_records_without_corners(info, repaired.report);  // face records with no corner
-    const fs::path folder = fs::path(job.output).parent_path();
-    if (!folder.empty()) {
-      fs::create_directories(folder, error);
-      if (error) {
-        return finish(FileStatus::failed,
-                      folder.string() + ": cannot create the folder (" + error.message() + ")",
-                      nullptr, &info);
-      }
-      if (::access(folder.c_str(), W_OK) != 0) {
-        return finish(FileStatus::failed,
-                      folder.string() + ": cannot write here (" + std::strerror(errno) + ")",
-                      nullptr, &info);
-      }
-    }
-    const bool stl = mesh_format(job.output) == MeshFormat::stl;
-    StlSeparation separated;
-    if (stl && options.separate_stl_copies && repaired.report.vertices_split > 0)
-      separated = separate_copies_for_stl(repaired.mesh);
-    write_mesh(job.output, repaired.mesh, &attributes);  // maps them through the origins
-    result.written = describe_written(job.output, repaired.mesh, attributes,
-                                      repaired.report.gaps.vertices_welded);
-    result.written.copies_moved = separated.vertices_moved;
-    result.written.separation = separated.distance;
-    result.report = std::move(repaired.report);
-    if (stl) {
-      // STL keeps no shared vertices: report the file as a reader will get it back.
-      result.reread = detect_defects(read_soup(job.output));
-    } else if (mesh_format(job.output) == MeshFormat::threemf &&
-               result.written.polygons_fanned > 0) {
-      // 3MF holds triangles: detection on them, as any reader of the file gets them.
-      result.reread = detect_defects(as_triangles(repaired.mesh.soup));
-    }
+    RepairFileOptions file_options;
+    file_options.repair = options.repair;
+    file_options.separation = options.separate_stl_copies ? kAutoSeparation : 0;
+    file_options.create_folder = true;
+    file_options.print = options.print;
+    file_options.print_keeps_weld = options.print_keeps_weld;
+    file_options.print_keeps_fill_holes = options.print_keeps_fill_holes;
+    repair_file(job.input, job.output, file_options, file);
+    if (file.info.changed_anything())
+      result.reading = describe_reading(file.info);
+    result.written = std::move(file.written);
+    result.reread = std::move(file.reread);
+    result.report = std::move(file.report);
     const RepairReport& r = result.report;
     // Clean: the mesh is written as read, every vertex and face in place.
     const bool clean = !r.before.has_defects() && r.faces_flipped == 0 &&
@@ -279,12 +250,11 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
                        r.duplicate_faces_removed + r.degenerate_faces_removed +
                                r.zero_area_faces_removed + r.isolated_vertices_removed ==
                            0;
-    return finish(clean ? FileStatus::clean : FileStatus::repaired, "", &r, &info);
+    return finish(clean ? FileStatus::clean : FileStatus::repaired, "", &r, &file.info);
   } catch (const std::bad_alloc&) {
-    return finish(FileStatus::failed, job.input + ": out of memory", nullptr,
-                  read ? &info : nullptr);
+    return finish(FileStatus::failed, job.input + ": out of memory", nullptr, read_info());
   } catch (const std::exception& failure) {
-    return finish(FileStatus::failed, failure.what(), nullptr, read ? &info : nullptr);
+    return finish(FileStatus::failed, failure.what(), nullptr, read_info());
   }
 }
 

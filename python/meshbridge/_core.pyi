@@ -107,6 +107,9 @@ class FileJobOptions:
     resume: bool
     elements: bool
     separate_stl_copies: bool
+    print: bool
+    print_keeps_weld: bool
+    print_keeps_fill_holes: bool
     def __init__(self) -> None: ...
 
 def plan_batch(

@@ -109,6 +109,10 @@ def _job_options(options: Dict[str, Any]) -> "_core.FileJobOptions":
     native.elements = bool(options.get("elements", False))
     native.separate_stl_copies = bool(options.get("separate_stl_copies", True))
     native.repair = _repair_options(options.get("repair", {}))
+    if options.get("print_preset"):
+        native.print = True
+        native.print_keeps_weld = "weld" in options.get("repair", {})
+        native.print_keeps_fill_holes = "fill_holes" in options.get("repair", {})
     return native
 
 
@@ -159,6 +163,7 @@ def run_batch(
     in_flight: Optional[int] = None,
     in_place: bool = False,
     separate_stl_copies: bool = True,
+    print_preset: bool = False,
     progress: Optional[Callable[[int, int, str, str], None]] = None,
     warnings: Optional[Callable[[str, str], None]] = None,
 ) -> BatchSummary:
@@ -172,16 +177,24 @@ def run_batch(
     ``in_place``: as ``meshbridge batch --in-place`` (OUTDIR may be INDIR or inside it).
     ``separate_stl_copies``: STL outputs move split vertex copies apart so that the file re-reads
     as repaired (default True; False keeps positions exact, as ``meshbridge batch --separate 0``).
-    ``repair``: options of :func:`meshbridge.repair`. ``in_flight``: tasks submitted at once
+    ``repair``: options of :func:`meshbridge.repair`. ``print_preset``: the slicer route of
+    ``meshbridge batch --print`` (outputs 3MF; gap closing and hole filling of the preset unless
+    ``repair`` names ``weld`` / ``fill_holes``). ``in_flight``: tasks submitted at once
     (default 4 per worker thread). ``progress(done, total, name, status)`` is called per file,
     ``warnings(name, lines)`` per file this run finished with warnings (lines as the CLI prints
     them; :class:`BatchWarnings` prints them as the CLI does).
-    Raises ValueError for a missing INDIR, OUTDIR inside INDIR, a bad format or a corrupt log.
+    Raises ValueError for a missing INDIR, OUTDIR inside INDIR, a bad format (a format other than
+    3mf with ``print_preset``) or a corrupt log.
     """
     from distributed import as_completed
 
+    if print_preset:
+        if format.lower() not in ("", "3mf"):
+            raise ValueError(f"print_preset writes 3MF, the format slicers read with units, "
+                             f"objects and no re-weld; got format {format!r}")
+        format = "3mf"
     options = {"format": format, "elements": elements, "repair": dict(repair or {}),
-               "separate_stl_copies": separate_stl_copies}
+               "separate_stl_copies": separate_stl_copies, "print_preset": print_preset}
     native = _job_options(options)
     jobs, unreadable = _core.plan_batch(in_dir, out_dir, native, in_place)
     log_path = log_path or os.path.join(out_dir, LOG_NAME)
@@ -356,11 +369,11 @@ def _parse(argv: Optional[List[str]]) -> argparse.Namespace:
     parser.add_argument("--format", choices=["obj", "off", "ply", "stl", "3mf"], default="",
                         type=str.lower, help="write every result in this format (default: each "
                         "file's own); 3mf for a slicer")
-    parser.add_argument("--weld", default="auto", type=_weld, metavar="TOL|auto",
+    parser.add_argument("--weld", default=None, type=_weld, metavar="TOL|auto",
                         help="gap closing before pairing, as in `meshbridge repair` (default "
                         "auto; 0 = off)")
     parser.add_argument("--fill-holes", nargs="?", const=_core.DEFAULT_FILL_HOLES_MAX_EDGES,
-                        default=0, type=_whole, metavar="MAX_EDGES",
+                        default=None, type=_whole, metavar="MAX_EDGES",
                         help="close holes of at most MAX_EDGES edges after the repair (bare: "
                         f"{_core.DEFAULT_FILL_HOLES_MAX_EDGES}; default off)")
     parser.add_argument("--separate", choices=["auto", "0"], default="auto",
@@ -370,6 +383,10 @@ def _parse(argv: Optional[List[str]]) -> argparse.Namespace:
                         type=str.lower, help="as in `meshbridge repair` (default material)")
     parser.add_argument("--pairing", choices=["geometric", "combinatorial"], default="geometric",
                         type=str.lower, help="as in `meshbridge repair` (default geometric)")
+    parser.add_argument("--print", action="store_true", dest="print_preset",
+                        help="the slicer route of `meshbridge batch --print`: the preset's gap "
+                        "closing and hole filling (unless --weld / --fill-holes), duplicate and "
+                        "zero-area faces removed unless that opens the surface, 3MF outputs")
     parser.add_argument("--in-place", action="store_true",
                         help="allow OUTDIR to be INDIR or inside it (originals are replaced)")
     parser.add_argument("--json", action="store_true",
@@ -412,8 +429,11 @@ def main(argv: Optional[List[str]] = None) -> int:
             in_flight=arguments.in_flight,
             in_place=arguments.in_place,
             separate_stl_copies=arguments.separate == "auto",
-            repair={"pairing": arguments.pairing, "weld": arguments.weld,
-                    "fill_holes": arguments.fill_holes, "nested_shells": arguments.nested_shells},
+            print_preset=arguments.print_preset,
+            repair=dict({"pairing": arguments.pairing, "nested_shells": arguments.nested_shells},
+                        **{name: value for name, value in (("weld", arguments.weld),
+                                                           ("fill_holes", arguments.fill_holes))
+                           if value is not None}),
             progress=progress,
             warnings=warnings,
         )

@@ -1051,6 +1051,13 @@ snapshot_views)
     }
     [ "$(red_in "$work/ba.png" 800x800+0+0)" -gt 100 ] 2>/dev/null || fail "no red on the left"
     [ "$(red_in "$work/ba.png" 800x800+802+0)" = 0 ] || fail "red on the right (after repair)"
+    # A 3MF whose polygons were cut into triangles (UR20: 4 edges split at their midpoint) is
+    # drawn too: the right half once came out empty.
+    expect_exit 0 "$mb" repair "$models/../../tests/data/realworld2/ur_ur20_forearm_collision.stl" \
+      "$work/ur.3mf" --before-after "$work/ur.png"
+    shaded=$(convert "$work/ur.png" -crop 760x700+822+80 +repage -fuzz 3% -fill black +opaque white \
+      -fill white -opaque white -negate -format '%[fx:round(mean*w*h)]' info:)
+    [ "$shaded" -gt 50000 ] 2>/dev/null || fail "the 3MF result is not drawn: $shaded model pixels"
   fi
   expect_exit 2 "$mb" repair "$models/prisms24.obj" "$work/q.obj" --before-after "$work/ba.jpg"
   expect_in "$work/err" "name it .png"

@@ -226,6 +226,51 @@ def test_failed_files_retried_changed_options_redone_same_as_cli(tmp_path):
     assert resumed.returncode == 0 and "4 skipped" in resumed.stderr, resumed.stderr
 
 
+def test_print_preset_as_repair_print_in_both_batches(tmp_path):
+    """--print in the Dask batch and in `meshbridge batch` is `meshbridge repair IN OUT.3mf
+    --print` per file: 3MF outputs with the same meshes, records with the same counts; the log
+    keeps the preset (a run without it redoes every file); another --format is refused."""
+    if not CLI:
+        pytest.skip("MESHBRIDGE_CLI not set")
+    indir = tmp_path / "in"
+    indir.mkdir()
+    for name in ("twocubes.obj", "cube_with_hole.obj", "prisms24.off"):
+        shutil.copy(SOURCE / "resources" / "models" / name, indir / name)
+    shutil.copy(SOURCE / "tests" / "data" / "realworld2" / "sumo_tram.obj", indir / "sumo_tram.obj")
+    dask_out, cli_out = tmp_path / "dask", tmp_path / "cli"
+    ours = batch(indir, dask_out, "--workers", "1", "--json", "--quiet", "--print")
+    assert ours.returncode == 0, ours.stderr
+    theirs = subprocess.run([CLI, "batch", indir, cli_out, "--json", "--quiet", "--print"],
+                            capture_output=True, text=True, timeout=600)
+    assert theirs.returncode == 0, theirs.stderr
+    assert ours.stdout == theirs.stdout
+    assert output_files(dask_out) == output_files(cli_out)
+    records = {json.loads(line)["file"]: json.loads(line) for line in ours.stdout.splitlines()}
+    assert sorted(r["output"] for r in records.values()) == [
+        "cube_with_hole.3mf", "prisms24.3mf", "sumo_tram.3mf", "twocubes.3mf"]
+    assert records["cube_with_hole.obj"]["holes"]["holes_filled"] == 1  # the preset fills
+    for name, record in records.items():
+        report = tmp_path / f"{name}.json"
+        single = subprocess.run([CLI, "repair", indir / name, tmp_path / f"{name}.3mf", "--print",
+                                 "--report", report], capture_output=True, text=True, timeout=600)
+        assert single.returncode == 0, single.stderr
+        alone = json.loads(report.read_text())
+        for key in ("faces_out", "vertices_out", "duplicate_faces_removed",
+                    "zero_area_faces_removed", "holes", "gaps", "after", "reread"):
+            assert record.get(key) == alone.get(key), (name, key)
+    log = (dask_out / ".meshbridge-batch.jsonl").read_text()
+    assert log.count(" print=1 ") == 4
+    again = batch(indir, dask_out, "--workers", "1", "--print", "--format", "3mf")
+    assert "4 file(s) done before (in the log), 0 now" in again.stderr, again.stderr
+    plain = batch(indir, dask_out, "--workers", "1", "--format", "3mf")
+    assert "0 file(s) done before (in the log), 4 now" in plain.stderr, plain.stderr
+    refused = batch(indir, dask_out, "--workers", "1", "--print", "--format", "stl")
+    assert refused.returncode == 2 and "print_preset writes 3MF" in refused.stderr
+    cli_refused = subprocess.run([CLI, "batch", indir, cli_out, "--print", "--format", "stl"],
+                                 capture_output=True, text=True, timeout=600)
+    assert cli_refused.returncode == 2 and "--print writes 3MF" in cli_refused.stderr
+
+
 def edited_json(indir: Path, outdir: Path, options) -> str:
     """The Python batch's --json records of a run with nothing left to do (all from its log)."""
     result = batch(indir, outdir, "--workers", "1", "--json", *options)

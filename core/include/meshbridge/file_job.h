@@ -50,6 +50,13 @@ struct FileJobOptions {
   //! the file re-reads as repaired (default true; the record's `written.copies_moved` and
   //! `written.separation`). false keeps positions exact: the re-read welds the copies again.
   bool separate_stl_copies = true;
+  //! The slicer preset of `repair --print` (RepairFileOptions::print; default false). With
+  //! `print_keeps_weld` / `print_keeps_fill_holes` the repair options' own gap closing / hole
+  //! filling stay (the user gave --weld / --fill-holes). The output format is the caller's
+  //! (the CLI and the Dask batch write 3MF).
+  bool print = false;
+  bool print_keeps_weld = false;
+  bool print_keeps_fill_holes = false;
 };
 
 //! What plan_batch found below a folder.

@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// `repair --print`: the slicer route in one option. What it sets, and the paragraph that says
-// what is still open in the printed file and why.
+//! \file print_preset.h
+//! `repair --print`: the slicer route in one option (RepairFileOptions::print). What it sets
+//! on the repair, and the repair that takes back removals which would open a surface.
 
 #include "meshbridge/repair.h"
 #include "meshbridge/soup.h"
 
 #include <string>
 
-namespace meshbridge::cli {
+namespace meshbridge {
 
 //! The gap closing distance of `--print` when `--weld` is not given: 1e-4 times the diagonal
 //! of the soup's bounding box, the widest nearby-edge tolerance of PrusaSlicer's load-time
@@ -34,15 +35,4 @@ void apply_print_preset(const Soup& soup, bool weld_given, bool fill_holes_given
 //! duplicates first, then the zero-area faces), and `note` says so (empty otherwise).
 RepairResult repair_for_print(const Soup& soup, RepairOptions options, std::string& note);
 
-//! The `print:` paragraph of the summary: whether the written mesh is watertight, and for each
-//! open edge left the reason (holes longer than the filling's limit, outlines of open sheets,
-//! boundaries of odd singular edges, gap closing refused) with the option that would change it.
-//! `written` (may be null): detection on the file as written when that differs from the repaired
-//! polygons (an STL re-read, a 3MF's triangles).
-std::string print_summary(const RepairReport& report, const DefectReport* written = nullptr);
-
-//! For a repair without --print that leaves open edges: one `hint:` line naming them and what
-//! would close them (--fill-holes when filling was off, --print); "" when the result is closed.
-std::string open_edges_hint(const RepairReport& report);
-
-}  // namespace meshbridge::cli
+}  // namespace meshbridge
