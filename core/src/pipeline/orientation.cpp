@@ -34,72 +34,231 @@ bool same_way(const Soup& soup, Index c, Index m) {
   return soup.corner_vertices[c] == soup.corner_vertices[m];
 }
 
-// Whether to reverse each open (or volume-less) component, on the best evidence it has:
-// - its volume, taken about its corners' centroid c (an open surface's volume depends on that
-//   point), when |volume| exceeds what capping its holes could change: |N| * R, with N the sum
-//   of its faces' vector areas (the holes' vector area, both times 2) and R the farthest
-//   boundary vertex from c; a slit such as a T-junction crack has no area, so it never hides
-//   a volume;
-// - otherwise its faces' windings as given, weighted by area: reversed if more area would end
-//   up reversed than not; on a tie, if more faces would (then: kept).
-// `component` numbers each face's component; `undecided` numbers the components judged here
-// (kNoIndex for the others), `count` of them; reference, volume and noise are per component.
-std::vector<char> open_component_reversal(
-    const Soup& soup, const CornerFaces& corner_face, const std::vector<Index>& mate,
-    const std::vector<char>& flipped, const std::vector<Index>& component,
-    const std::vector<Index>& undecided, std::size_t count, const std::vector<Point>& reference,
-    const std::vector<double>& volume, const std::vector<double>& noise) {
-  std::vector<Point> area(count, Point(0, 0, 0)), centroid(count, Point(0, 0, 0));
-  std::vector<double> corners(count, 0.0), winding(count, 0.0), reach(count, 0.0);
-  std::vector<double> total_area(count, 0.0), reversed_faces(count, 0.0), faces(count, 0.0);
-  std::vector<double> area_noise(count, 0.0);
-  const std::size_t num_faces = soup.num_faces();
-  for (Index f = 0; f < num_faces; ++f) {
-    const Index u = undecided[component[f]];
-    if (u == kNoIndex)
-      continue;
-    const Point n = newell_normal(soup, f);
-    area[u] += flipped[f] ? -n : n;
-    area_noise[u] += newell_rounding_scale(soup, f);
-    winding[u] += flipped[f] ? -n.norm() : n.norm();
-    total_area[u] += n.norm();
-    reversed_faces[u] += flipped[f];
-    faces[u] += 1;
-    for (Index v : soup.polygon(f))
-      centroid[u] += soup.positions[v];
-    corners[u] += static_cast<double>(soup.polygon(f).size());
+// The state of orient_components(), after CGAL's Polygon_soup_orienter: the paired faces'
+// components, their volumes, and the decision per component, built in named steps.
+class ComponentOrienter {
+ public:
+  ComponentOrienter(const Soup& soup, const CornerFaces& corner_face,
+                    const std::vector<Index>& mate, std::vector<char>& flipped)
+      : soup_(soup), corner_face_(corner_face), mate_(mate), flipped_(flipped) {}
+
+  // Reverses whole components in `flipped`; returns the ambiguous nested shells.
+  std::size_t run(AmbiguousNesting nested) {
+    number_components();
+    measure_volumes();
+    classify_components();
+    reverse_.assign(num_components_, 0);
+    std::size_t ambiguous = 0;
+    if (num_shells_ > 0)
+      ambiguous = orient_shells(nested);
+    if (num_undecided_ > 0)
+      orient_undecided();
+    for (Index f = 0; f < soup_.num_faces(); ++f)
+      flipped_[f] ^= reverse_[component_[f]];
+    return ambiguous;
   }
-  for (std::size_t u = 0; u < count; ++u)
-    centroid[u] /= corners[u];
-  for (Index c = 0; c < mate.size(); ++c) {
-    if (mate[c] != kNoIndex)
-      continue;
-    const Index u = undecided[component[corner_face[c]]];
-    reach[u] = std::max(reach[u], (soup.positions[soup.corner_vertices[c]] - centroid[u]).norm());
+
+ private:
+  // Components numbered by their smallest face (the root), in increasing order; everything
+  // below is kept per component, not per face.
+  void number_components() {
+    UnionFind components(soup_.num_faces());
+    for (Index c = 0; c < mate_.size(); ++c) {
+      if (mate_[c] != kNoIndex)
+        components.unite(corner_face_[c], corner_face_[mate_[c]]);
+    }
+    component_ = std::move(components).take_labels([&](Index root) {
+      root_face_.push_back(root);
+      return static_cast<Index>(root_face_.size() - 1);
+    });
+    num_components_ = root_face_.size();
   }
-  std::vector<char> reverse(count, 0);
-  for (Index r = 0; r < undecided.size(); ++r) {
-    const Index u = undecided[r];
-    if (u == kNoIndex)
-      continue;
-    // The volume about the centroid, and a bound on its rounding error far above the real one,
-    // so that a volume that is rounding noise (a flat or zero-area component) never decides:
-    // the decision must come out the same when the output is repaired again.
-    const Point offset = centroid[u] - reference[r];
-    const double about_centroid = volume[r] - OpenMesh::dot(offset, area[u]);
-    const double rounding = kRoundingMargin * (noise[r] + offset.norm() * area_noise[u]);
-    const bool volume_decides =
-        std::abs(about_centroid) > area[u].norm() * reach[u] && std::abs(about_centroid) > rounding;
-    if (volume_decides) {
-      reverse[u] = about_centroid < 0;
-    } else if (std::abs(winding[u]) > 1e-9 * total_area[u]) {
-      reverse[u] = winding[u] < 0;
-    } else {  // areas tie (a face and its copy back to back): fewer faces reversed
-      reverse[u] = 2 * reversed_faces[u] > faces[u];
+
+  // Six times the signed volume, as the faces will run, about a corner of the component (its
+  // root face's first corner, which reversal keeps in place); the sum of its terms' magnitudes;
+  // and a bound on its rounding error (the sum of |a| |b| |c| over the terms a . (b x c)).
+  void measure_volumes() {
+    open_.assign(num_components_, 0);
+    volume_.assign(num_components_, 0.0);
+    magnitude_.assign(num_components_, 0.0);
+    noise_.assign(num_components_, 0.0);
+    reference_.resize(num_components_);
+    for (Index k = 0; k < num_components_; ++k)
+      reference_[k] = soup_.positions[soup_.corner_vertices[soup_.face_begin[root_face_[k]]]];
+    for (Index f = 0; f < soup_.num_faces(); ++f) {
+      const Index k = component_[f];
+      const PolygonView polygon = soup_.polygon(f);
+      double v = 0;
+      const Point a = soup_.positions[polygon[0]] - reference_[k];
+      for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+        const Point b = soup_.positions[polygon[i]] - reference_[k];
+        const Point c = soup_.positions[polygon[i + 1]] - reference_[k];
+        const double term = OpenMesh::dot(a, OpenMesh::cross(b, c));
+        v += term;
+        magnitude_[k] += std::abs(term);
+        noise_[k] += a.norm() * b.norm() * c.norm();
+      }
+      volume_[k] += flipped_[f] ? -v : v;
+      for (Index c = soup_.face_begin[f]; c < soup_.face_begin[f + 1]; ++c) {
+        if (mate_[c] == kNoIndex)
+          open_[k] = 1;
+      }
     }
   }
-  return reverse;
-}
+
+  // Closed shells with a volume, numbered; the others (open or flat) are undecided, judged on
+  // their own evidence by orient_undecided().
+  void classify_components() {
+    shell_.assign(num_components_, kNoIndex);
+    undecided_.assign(num_components_, kNoIndex);
+    for (Index k = 0; k < num_components_; ++k) {
+      const bool flat =
+          std::abs(volume_[k]) <= std::max(1e-9 * magnitude_[k], kRoundingMargin * noise_[k]);
+      if (open_[k] || flat) {
+        undecided_[k] = static_cast<Index>(num_undecided_++);
+      } else {
+        shell_[k] = static_cast<Index>(num_shells_++);
+      }
+    }
+  }
+
+  // A shell's own winding is its intent when it is consistent as written (every face of it
+  // reversed alike, or none): then only its sense relative to its container's counts, so a
+  // global flip of the input changes nothing. Outermost shells face outward. Returns the
+  // ambiguous nested shells.
+  std::size_t orient_shells(AmbiguousNesting nested) {
+    std::size_t ambiguous = 0;
+    const std::size_t num_faces = soup_.num_faces();
+    std::vector<char> written(num_components_, 2), mixed(num_components_, 0);
+    for (Index f = 0; f < num_faces; ++f) {
+      const Index k = component_[f];
+      if (written[k] == 2)
+        written[k] = flipped_[f];
+      else if (written[k] != flipped_[f])
+        mixed[k] = 1;
+    }
+    std::vector<Index> component_of(num_shells_);
+    for (Index k = 0; k < num_components_; ++k) {
+      if (shell_[k] != kNoIndex)
+        component_of[shell_[k]] = k;
+    }
+    // Outward as written: positive volume once the reversals orientation made are undone.
+    const auto written_outward = [&](Index k) { return (volume_[k] > 0) != (written[k] == 1); };
+    Nesting nesting;
+    if (num_shells_ > 1) {
+      std::vector<Index> face_shell(num_faces);
+      for (Index f = 0; f < num_faces; ++f)
+        face_shell[f] = shell_[component_[f]];
+      nesting = shell_nesting(soup_, flipped_, face_shell, num_shells_);
+    } else {
+      nesting.depth.assign(1, 0);
+      nesting.parent.assign(1, kNoIndex);
+    }
+    // Each shell after its container: up the parent chain to a decided shell (or the
+    // outermost), then down again. Degenerate inputs can nest without order (shells of no
+    // thickness on each other's faces); a chain that comes back to a shell on it stops there.
+    std::vector<char> outward(num_shells_, 1), state(num_shells_, 0);  // 0 new, 1 on chain, 2 done
+    std::vector<Index> chain;
+    for (Index start = 0; start < num_shells_; ++start) {
+      chain.clear();
+      for (Index s = start; s != kNoIndex && state[s] == 0; s = nesting.parent[s]) {
+        state[s] = 1;
+        chain.push_back(s);
+      }
+      for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+        const Index s = *it, p = nesting.parent[s];
+        state[s] = 2;
+        if (p == kNoIndex || state[p] != 2)
+          continue;  // outermost (or a cycle's first shell): outward
+        const Index k = component_of[s], q = component_of[p];
+        // Even-odd: a cavity runs against its container.
+        outward[s] = !outward[p];
+        if (!mixed[k] && !mixed[q] && written_outward(k) == written_outward(q)) {
+          // Written like its container (an insert, or a cavity wound the wrong way): ambiguous.
+          ++ambiguous;
+          if (nested == AmbiguousNesting::material)
+            outward[s] = outward[p];
+        }
+      }
+    }
+    for (Index s = 0; s < num_shells_; ++s) {
+      const Index k = component_of[s];
+      reverse_[k] = (volume_[k] > 0) != (outward[s] != 0);
+    }
+    return ambiguous;
+  }
+
+  // Whether to reverse each open (or volume-less) component, on the best evidence it has:
+  // - its volume, taken about its corners' centroid c (an open surface's volume depends on
+  //   that point), when |volume| exceeds what capping its holes could change: |N| * R, with N
+  //   the sum of its faces' vector areas (the holes' vector area, both times 2) and R the
+  //   farthest boundary vertex from c; a slit such as a T-junction crack has no area, so it
+  //   never hides a volume;
+  // - otherwise its faces' windings as given, weighted by area: reversed if more area would
+  //   end up reversed than not; on a tie, if more faces would (then: kept).
+  void orient_undecided() {
+    const std::size_t count = num_undecided_;
+    std::vector<Point> area(count, Point(0, 0, 0)), centroid(count, Point(0, 0, 0));
+    std::vector<double> corners(count, 0.0), winding(count, 0.0), reach(count, 0.0);
+    std::vector<double> total_area(count, 0.0), reversed_faces(count, 0.0), faces(count, 0.0);
+    std::vector<double> area_noise(count, 0.0);
+    for (Index f = 0; f < soup_.num_faces(); ++f) {
+      const Index u = undecided_[component_[f]];
+      if (u == kNoIndex)
+        continue;
+      const Point n = newell_normal(soup_, f);
+      area[u] += flipped_[f] ? -n : n;
+      area_noise[u] += newell_rounding_scale(soup_, f);
+      winding[u] += flipped_[f] ? -n.norm() : n.norm();
+      total_area[u] += n.norm();
+      reversed_faces[u] += flipped_[f];
+      faces[u] += 1;
+      for (Index v : soup_.polygon(f))
+        centroid[u] += soup_.positions[v];
+      corners[u] += static_cast<double>(soup_.polygon(f).size());
+    }
+    for (std::size_t u = 0; u < count; ++u)
+      centroid[u] /= corners[u];
+    for (Index c = 0; c < mate_.size(); ++c) {
+      if (mate_[c] != kNoIndex)
+        continue;
+      const Index u = undecided_[component_[corner_face_[c]]];
+      reach[u] =
+          std::max(reach[u], (soup_.positions[soup_.corner_vertices[c]] - centroid[u]).norm());
+    }
+    for (Index k = 0; k < num_components_; ++k) {
+      const Index u = undecided_[k];
+      if (u == kNoIndex)
+        continue;
+      // The volume about the centroid, and a bound on its rounding error far above the real
+      // one, so that a volume that is rounding noise (a flat or zero-area component) never
+      // decides: the decision must come out the same when the output is repaired again.
+      const Point offset = centroid[u] - reference_[k];
+      const double about_centroid = volume_[k] - OpenMesh::dot(offset, area[u]);
+      const double rounding = kRoundingMargin * (noise_[k] + offset.norm() * area_noise[u]);
+      const bool volume_decides = std::abs(about_centroid) > area[u].norm() * reach[u] &&
+                                  std::abs(about_centroid) > rounding;
+      if (volume_decides) {
+        reverse_[k] = about_centroid < 0;
+      } else if (std::abs(winding[u]) > 1e-9 * total_area[u]) {
+        reverse_[k] = winding[u] < 0;
+      } else {  // areas tie (a face and its copy back to back): fewer faces reversed
+        reverse_[k] = 2 * reversed_faces[u] > faces[u];
+      }
+    }
+  }
+
+  const Soup& soup_;
+  const CornerFaces& corner_face_;
+  const std::vector<Index>& mate_;
+  std::vector<char>& flipped_;
+  std::vector<Index> root_face_, component_;  // per component; per face
+  std::size_t num_components_ = 0, num_shells_ = 0, num_undecided_ = 0;
+  std::vector<char> open_, reverse_;
+  std::vector<double> volume_, magnitude_, noise_;
+  std::vector<Point> reference_;
+  std::vector<Index> shell_, undecided_;  // per component: its number among shells / undecided
+};
 
 }  // namespace
 
@@ -188,141 +347,8 @@ OrientationCounts orient_consistently(const Soup& soup, const CornerFaces& corne
 
 std::size_t orient_components(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing,
                               AmbiguousNesting nested) {
-  std::size_t ambiguous = 0;
-  const CornerFaces& corner_face = grouped.corner_face;
-  const std::vector<Index>& mate = pairing.mate;
-  std::vector<char>& flipped = pairing.flipped;
-  const std::size_t num_faces = soup.num_faces();
-  // Components numbered by their smallest face (the root), in increasing order; everything
-  // below is kept per component, not per face.
-  std::vector<Index> root_face;
-  std::vector<Index> component;
-  {
-    UnionFind components(num_faces);
-    for (Index c = 0; c < mate.size(); ++c) {
-      if (mate[c] != kNoIndex)
-        components.unite(corner_face[c], corner_face[mate[c]]);
-    }
-    component = std::move(components).take_labels([&](Index root) {
-      root_face.push_back(root);
-      return static_cast<Index>(root_face.size() - 1);
-    });
-  }
-  const std::size_t num_components = root_face.size();
-  // Six times the signed volume, as the faces will run, about a corner of the component (its
-  // root face's first corner, which reversal keeps in place); the sum of its terms' magnitudes;
-  // and a bound on its rounding error (the sum of |a| |b| |c| over the terms a . (b x c)).
-  std::vector<char> open(num_components, 0);
-  std::vector<double> volume(num_components, 0.0), magnitude(num_components, 0.0),
-      noise(num_components, 0.0);
-  std::vector<Point> reference(num_components);
-  for (Index k = 0; k < num_components; ++k)
-    reference[k] = soup.positions[soup.corner_vertices[soup.face_begin[root_face[k]]]];
-  for (Index f = 0; f < num_faces; ++f) {
-    const Index k = component[f];
-    const PolygonView polygon = soup.polygon(f);
-    double v = 0;
-    const Point a = soup.positions[polygon[0]] - reference[k];
-    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      const Point b = soup.positions[polygon[i]] - reference[k];
-      const Point c = soup.positions[polygon[i + 1]] - reference[k];
-      const double term = OpenMesh::dot(a, OpenMesh::cross(b, c));
-      v += term;
-      magnitude[k] += std::abs(term);
-      noise[k] += a.norm() * b.norm() * c.norm();
-    }
-    volume[k] += flipped[f] ? -v : v;
-    for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
-      if (mate[c] == kNoIndex)
-        open[k] = 1;
-    }
-  }
-  // Closed shells with a volume, numbered; the others are judged on their evidence.
-  std::vector<Index> shell(num_components, kNoIndex), undecided(num_components, kNoIndex);
-  std::size_t num_shells = 0, num_undecided = 0;
-  for (Index k = 0; k < num_components; ++k) {
-    const bool flat =
-        std::abs(volume[k]) <= std::max(1e-9 * magnitude[k], kRoundingMargin * noise[k]);
-    if (open[k] || flat) {
-      undecided[k] = static_cast<Index>(num_undecided++);
-    } else {
-      shell[k] = static_cast<Index>(num_shells++);
-    }
-  }
-  std::vector<char> reverse(num_components, 0);
-  if (num_shells > 0) {
-    // A shell's own winding is its intent when it is consistent as written (every face of it
-    // reversed alike, or none): then only its sense relative to its container's counts, so a
-    // global flip of the input changes nothing. Outermost shells face outward.
-    std::vector<char> written(num_components, 2), mixed(num_components, 0);
-    for (Index f = 0; f < num_faces; ++f) {
-      const Index k = component[f];
-      if (written[k] == 2)
-        written[k] = flipped[f];
-      else if (written[k] != flipped[f])
-        mixed[k] = 1;
-    }
-    std::vector<Index> component_of(num_shells);
-    for (Index k = 0; k < num_components; ++k) {
-      if (shell[k] != kNoIndex)
-        component_of[shell[k]] = k;
-    }
-    // Outward as written: positive volume once the reversals orientation made are undone.
-    const auto written_outward = [&](Index k) { return (volume[k] > 0) != (written[k] == 1); };
-    Nesting nesting;
-    if (num_shells > 1) {
-      std::vector<Index> face_shell(num_faces);
-      for (Index f = 0; f < num_faces; ++f)
-        face_shell[f] = shell[component[f]];
-      nesting = shell_nesting(soup, flipped, face_shell, num_shells);
-    } else {
-      nesting.depth.assign(1, 0);
-      nesting.parent.assign(1, kNoIndex);
-    }
-    // Each shell after its container: up the parent chain to a decided shell (or the
-    // outermost), then down again. Degenerate inputs can nest without order (shells of no
-    // thickness on each other's faces); a chain that comes back to a shell on it stops there.
-    std::vector<char> outward(num_shells, 1), state(num_shells, 0);  // 0 new, 1 on chain, 2 done
-    std::vector<Index> chain;
-    for (Index start = 0; start < num_shells; ++start) {
-      chain.clear();
-      for (Index s = start; s != kNoIndex && state[s] == 0; s = nesting.parent[s]) {
-        state[s] = 1;
-        chain.push_back(s);
-      }
-      for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
-        const Index s = *it, p = nesting.parent[s];
-        state[s] = 2;
-        if (p == kNoIndex || state[p] != 2)
-          continue;  // outermost (or a cycle's first shell): outward
-        const Index k = component_of[s], q = component_of[p];
-        // Even-odd: a cavity runs against its container.
-        outward[s] = !outward[p];
-        if (!mixed[k] && !mixed[q] && written_outward(k) == written_outward(q)) {
-          // Written like its container (an insert, or a cavity wound the wrong way): ambiguous.
-          ++ambiguous;
-          if (nested == AmbiguousNesting::material)
-            outward[s] = outward[p];
-        }
-      }
-    }
-    for (Index s = 0; s < num_shells; ++s) {
-      const Index k = component_of[s];
-      reverse[k] = (volume[k] > 0) != (outward[s] != 0);
-    }
-  }
-  if (num_undecided > 0) {
-    const std::vector<char> decided =
-        open_component_reversal(soup, corner_face, mate, flipped, component, undecided,
-                                num_undecided, reference, volume, noise);
-    for (Index k = 0; k < num_components; ++k) {
-      if (undecided[k] != kNoIndex)
-        reverse[k] = decided[undecided[k]];
-    }
-  }
-  for (Index f = 0; f < num_faces; ++f)
-    flipped[f] ^= reverse[component[f]];
-  return ambiguous;
+  ComponentOrienter orienter(soup, grouped.corner_face, pairing.mate, pairing.flipped);
+  return orienter.run(nested);
 }
 
 }  // namespace meshbridge::detail
