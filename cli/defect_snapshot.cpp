@@ -4,6 +4,8 @@
 
 #include "meshbridge/validate.h"
 
+#include "snapshot_frame.h"
+#include "snapshot_views.h"
 #include "zbuffer_canvas.h"
 
 #include <QColor>
@@ -29,162 +31,11 @@ namespace meshbridge::cli {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kIsoAzimuthDegrees = 45;
-constexpr double kIsoElevationDegrees = 30;
-
 const QColor kBackground(255, 255, 255);
 const QColor kEdgeColor(192, 192, 192);
 const QColor kBoundaryColor(0, 160, 0);
 const QColor kSingularColor(220, 0, 0);
 const QColor kLegendColor(0, 0, 0);
-
-//! Screen axes of an orthographic camera: `right` and `up` are orthonormal, and right x up points
-//! from the model toward the camera.
-struct ScreenAxes {
-  Point right;
-  Point up;
-};
-
-ScreenAxes screen_axes(SnapshotView view) {
-  switch (view) {
-    case SnapshotView::iso: {
-      // Camera at azimuth a (from +x toward +y) and elevation e, +z up. The exact isometric
-      // (e = 35.26 deg) puts a box's back corner behind its front one and hides three edges.
-      const double a = kIsoAzimuthDegrees * kPi / 180, e = kIsoElevationDegrees * kPi / 180;
-      return {Point(-std::sin(a), std::cos(a), 0),
-              Point(-std::sin(e) * std::cos(a), -std::sin(e) * std::sin(a), std::cos(e))};
-    }
-    case SnapshotView::x:
-      return {Point(0, 1, 0), Point(0, 0, 1)};
-    case SnapshotView::y:
-      return {Point(-1, 0, 0), Point(0, 0, 1)};
-    case SnapshotView::z:
-      return {Point(1, 0, 0), Point(0, 1, 0)};
-  }
-  throw std::invalid_argument("unknown snapshot view");
-}
-
-//! Where the model lands in the image: model coordinates are halved, centred on `centre` and
-//! scaled by `unit` into [-1, 1] (no overflow even near DBL_MAX), projected on the camera axes,
-//! then `mid` goes to the centre of `area` and one unit becomes `scale` pixels.
-struct Frame {
-  ScreenAxes axes;
-  Point forward;  //!< toward the camera: right x up
-  Point centre;
-  double unit = 1;
-  double mid_x = 0, mid_y = 0;
-  double scale = 1;
-  QRectF area;
-
-  Point normalized(const Point& p) const { return (p * 0.5 - centre * 0.5) * unit; }
-  CanvasPoint to_canvas(const Point& p) const {
-    const Point n = normalized(p);
-    return {area.center().x() + ((n | axes.right) - mid_x) * scale,
-            area.center().y() - ((n | axes.up) - mid_y) * scale, n | forward};
-  }
-};
-
-//! Vertices the picture is fitted to: those of defects with `focus` (if any), else all used.
-std::vector<char> fit_vertices(const Soup& soup, const DefectReport& report, SnapshotFocus focus) {
-  std::vector<char> fit(soup.num_vertices(), 0);
-  bool any = false;
-  if (focus != SnapshotFocus::whole) {
-    const auto mark = [&](Index v) {
-      if (v < fit.size()) {
-        fit[v] = 1;
-        any = true;
-      }
-    };
-    for (const SingularEdge& e : report.singular_edges)
-      mark(e.vertices.v0), mark(e.vertices.v1);
-    for (const VertexPair& e : report.boundary_edges)
-      mark(e.v0), mark(e.v1);
-    for (Index v : report.pinch_vertices)
-      mark(v);
-  }
-  if (!any) {
-    for (Index v : soup.corner_vertices)
-      fit[v] = 1;
-  }
-  return fit;
-}
-
-Frame make_frame(const Soup& soup, const DefectReport& report, const SnapshotOptions& options,
-                 const QRectF& area) {
-  Frame frame;
-  frame.axes = screen_axes(options.view);
-  if (options.y_up) {
-    // Drawn as if the model were turned by R: (x, y, z) -> (x, -z, y), +y to +z; projecting R p
-    // on an axis a is projecting p on R^T a = (a.x, a.z, -a.y).
-    for (Point* a : {&frame.axes.right, &frame.axes.up})
-      *a = Point((*a)[0], (*a)[2], -(*a)[1]);
-  }
-  frame.forward = frame.axes.right % frame.axes.up;
-  frame.area = area;
-  std::vector<char> used(soup.num_vertices(), 0);
-  for (Index v : soup.corner_vertices)
-    used[v] = 1;
-  Point low(std::numeric_limits<double>::max());
-  Point high(std::numeric_limits<double>::lowest());
-  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-    if (used[v]) {
-      low.minimize(soup.positions[v]);
-      high.maximize(soup.positions[v]);
-    }
-  }
-  frame.centre = low * 0.5 + high * 0.5;
-  double extent = 0;
-  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-    if (used[v])
-      extent = std::max(extent, (soup.positions[v] * 0.5 - frame.centre * 0.5).max_abs());
-  }
-  frame.unit = extent > 0 ? 1 / extent : 1;
-
-  // The projected box of the fitted vertices, and of the whole model (a zoom shows at least a
-  // tenth of the model's width, so one short defect edge is not blown up to fill the picture).
-  const auto box = [&](const std::vector<char>& which, double* out) {
-    out[0] = out[2] = std::numeric_limits<double>::max();
-    out[1] = out[3] = std::numeric_limits<double>::lowest();
-    for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-      if (!which[v])
-        continue;
-      const Point n = frame.normalized(soup.positions[v]);
-      const double x = n | frame.axes.right, y = n | frame.axes.up;
-      out[0] = std::min(out[0], x), out[1] = std::max(out[1], x);
-      out[2] = std::min(out[2], y), out[3] = std::max(out[3], y);
-    }
-  };
-  double whole[4], fitted[4];
-  box(used, whole);
-  box(fit_vertices(soup, report, options.focus), fitted);
-  const double across = std::max(whole[1] - whole[0], whole[3] - whole[2]);
-  SnapshotFocus focus = options.focus;
-  if (focus == SnapshotFocus::automatic) {  // defects when small, with the model around them
-    const bool small = std::max(fitted[1] - fitted[0], fitted[3] - fitted[2]) < 0.25 * across;
-    focus = small ? SnapshotFocus::defects : SnapshotFocus::whole;
-    if (!small)
-      std::copy(whole, whole + 4, fitted);
-  }
-  if (focus == SnapshotFocus::defects) {
-    const double least = (options.focus == SnapshotFocus::automatic ? 0.4 : 0.1) * across;
-    for (int axis = 0; axis < 4; axis += 2) {
-      const double middle = (fitted[axis] + fitted[axis + 1]) / 2;
-      const double half = std::max((fitted[axis + 1] - fitted[axis]) * 0.55, least / 2);
-      fitted[axis] = middle - half, fitted[axis + 1] = middle + half;
-    }
-  }
-  const double width = fitted[1] - fitted[0], height = fitted[3] - fitted[2];
-  frame.scale = 1;
-  if (width > 1e-12 || height > 1e-12) {
-    frame.scale =
-        std::min(width > 1e-12 ? area.width() / width : std::numeric_limits<double>::max(),
-                 height > 1e-12 ? area.height() / height : std::numeric_limits<double>::max());
-  }
-  frame.mid_x = (fitted[0] + fitted[1]) / 2;
-  frame.mid_y = (fitted[2] + fitted[3]) / 2;
-  return frame;
-}
 
 //! Light grey for a face whose unit normal makes `cosine` with the light (both sides lit).
 QRgb shade(double cosine) {
@@ -241,84 +92,35 @@ void check_vertex(const Soup& soup, Index v) {
   }
 }
 
-}  // namespace
-
-DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report,
-                                    const SnapshotOptions& options, const Soup* frame_soup,
-                                    const DefectReport* frame_report) {
-  if (frame_soup != nullptr && frame_report == nullptr)
-    throw std::invalid_argument("draw_defect_snapshot: frame_soup without frame_report");
-  if (options.size < SnapshotOptions::kMinSize || options.size > SnapshotOptions::kMaxSize) {
-    throw std::invalid_argument(
-        "snapshot size must be " + std::to_string(SnapshotOptions::kMinSize) + " to " +
-        std::to_string(SnapshotOptions::kMaxSize) + ", got " + std::to_string(options.size));
-  }
-  if (!(options.margin >= 0 && options.margin <= 0.45))
-    throw std::invalid_argument("snapshot margin must be 0 to 0.45");
-  validate_soup(soup);
-  for (const SingularEdge& edge : report.singular_edges) {
-    check_vertex(soup, edge.vertices.v0);
-    check_vertex(soup, edge.vertices.v1);
-  }
-  for (const VertexPair& edge : report.boundary_edges) {
-    check_vertex(soup, edge.v0);
-    check_vertex(soup, edge.v1);
-  }
-  for (Index v : report.singular_edge_vertices)
-    check_vertex(soup, v);
-  for (Index v : report.pinch_vertices)
-    check_vertex(soup, v);
-
-  const double size = options.size;
-  const double pen_scale = std::max(1.0, size / 800);
-  const double border = size * options.margin;
-  DefectSnapshot result;
-
-  // The legend: one line at the top, shrunk until it fits the width.
-  const QString counts =
-      QString::fromStdString(counted(report.singular_edges.size(), "singular edge") + ", " +
-                             counted(report.num_singular_vertices(), "singular vertex") + ", " +
-                             counted(report.boundary_edges.size(), "boundary edge"));
-  const QString legend = options.title.empty()
-                             ? counts
-                             : QString::fromLocal8Bit(options.title.c_str()) + ": " + counts;
-  QFont font;
-  double legend_height = 0;
-  if (options.legend && QGuiApplication::instance() != nullptr) {
-    double pixel_size = std::max(10.0, size / 40);
-    font.setPixelSize(static_cast<int>(pixel_size));
-    while (pixel_size > 6 && QFontMetricsF(font).horizontalAdvance(legend) > size - 2 * border) {
-      pixel_size -= 1;
-      font.setPixelSize(static_cast<int>(pixel_size));
-    }
-    if (text_renders(font)) {
-      result.legend_drawn = true;
-      legend_height = QFontMetricsF(font).height() + border / 2;
-    }
-  }
-  const QRectF area(border, border + legend_height, size - 2 * border,
-                    size - 2 * border - legend_height);
-  const Frame frame = frame_soup ? make_frame(*frame_soup, *frame_report, options, area)
-                                 : make_frame(soup, report, options, area);
-  std::vector<CanvasPoint> canvas_points(soup.num_vertices());
+//! The surface and the defects of `soup` in `frame` on a `size` x `size` canvas, without legend,
+//! with the defect pixels counted. `counting` draws for choose_view (detail::count_defect_pixels).
+//! `canvas_points` is a buffer (resized here), kept by the caller to draw many views.
+DefectSnapshot render(const Soup& soup, const DefectReport& report, const Frame& frame, int size,
+                      bool counting, std::vector<CanvasPoint>& canvas_points) {
+  const double pen_scale = std::max(1.0, size / 800.0);
+  canvas_points.resize(soup.num_vertices());
   for (std::size_t v = 0; v < soup.num_vertices(); ++v)
     canvas_points[v] = frame.to_canvas(soup.positions[v]);
 
-  ZBufferCanvas canvas(options.size, options.size, kBackground);
+  ZBufferCanvas canvas(size, size, kBackground);
   // The light comes from the upper left, in front: fixed to the camera, so every view is lit.
   Point light = frame.axes.right * -0.4 + frame.axes.up * 0.6 + frame.forward * 0.7;
   light.normalize();
+  const QRgb flat = shade(0.5);  // counting: the shade does not matter
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     const PolygonView polygon = soup.polygon(f);
-    Point normal(0, 0, 0);  // Newell's normal: fine for any simple polygon
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-      const Point p = frame.normalized(soup.positions[polygon[i]]);
-      const Point q = frame.normalized(soup.positions[polygon[(i + 1) % polygon.size()]]);
-      normal += Point((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
-                      (p[0] - q[0]) * (p[1] + q[1]));
+    QRgb color = flat;
+    if (!counting) {
+      Point normal(0, 0, 0);  // Newell's normal: fine for any simple polygon
+      for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const Point p = frame.normalized(soup.positions[polygon[i]]);
+        const Point q = frame.normalized(soup.positions[polygon[(i + 1) % polygon.size()]]);
+        normal += Point((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
+                        (p[0] - q[0]) * (p[1] + q[1]));
+      }
+      const double length = normal.norm();
+      color = shade(length > 0 ? (normal | light) / length : 0);
     }
-    const double length = normal.norm();
-    const QRgb color = shade(length > 0 ? (normal | light) / length : 0);
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
       canvas.fill_triangle(canvas_points[polygon[0]], canvas_points[polygon[i]],
                            canvas_points[polygon[i + 1]], color);
@@ -340,11 +142,11 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
                               QRgb hidden) {
     const double median = median_length(canvas_points, edges, pair_of);
     const bool few = edges.size() < kFewestDense;
-    const bool dense = !few && median < kDenseLength;
+    const bool dense = !few && median < kDenseLength && !counting;
     // Thinner where many edges are short on screen: a grid of defects stays a grid.
     const double shown =
         few ? width * pen_scale : std::max(1.0, std::min(width * pen_scale, median / 4));
-    if (dense || edges.size() > kMostHiddenDrawn)
+    if (dense || edges.size() > kMostHiddenDrawn || counting)
       hidden = qRgba(0, 0, 0, 0);
     for (const auto& edge : edges) {
       const VertexPair pair = pair_of(edge);
@@ -363,17 +165,8 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
   }
   for (Index v : report.pinch_vertices)  // no edge shows these: always full size
     canvas.draw_dot(canvas_points[v], 3.5 * pen_scale, kSingularColor.rgb(), tolerance);
+  DefectSnapshot result;
   result.image = std::move(canvas.image());
-
-  if (result.legend_drawn) {
-    QPainter painter(&result.image);
-    painter.setRenderHint(QPainter::TextAntialiasing, true);
-    painter.setFont(font);
-    painter.setPen(kLegendColor);
-    painter.drawText(QRectF(border, border / 2, size - 2 * border, legend_height),
-                     Qt::AlignLeft | Qt::AlignTop, legend);
-  }
-
   for (int y = 0; y < result.image.height(); ++y) {
     const QRgb* row = reinterpret_cast<const QRgb*>(result.image.constScanLine(y));
     for (int x = 0; x < result.image.width(); ++x) {
@@ -382,6 +175,121 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
     }
   }
   return result;
+}
+
+}  // namespace
+
+DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report,
+                                    const SnapshotOptions& options, const Soup* frame_soup,
+                                    const DefectReport* frame_report) {
+  if (frame_soup != nullptr && frame_report == nullptr)
+    throw std::invalid_argument("draw_defect_snapshot: frame_soup without frame_report");
+  if (options.size < SnapshotOptions::kMinSize || options.size > SnapshotOptions::kMaxSize) {
+    throw std::invalid_argument(
+        "snapshot size must be " + std::to_string(SnapshotOptions::kMinSize) + " to " +
+        std::to_string(SnapshotOptions::kMaxSize) + ", got " + std::to_string(options.size));
+  }
+  if (!(options.margin >= 0 && options.margin <= 0.45))
+    throw std::invalid_argument("snapshot margin must be 0 to 0.45");
+  if (!options.view.is_valid())
+    throw std::invalid_argument("snapshot view: not a corner, an axis or automatic");
+  validate_soup(soup);
+  for (const SingularEdge& edge : report.singular_edges) {
+    check_vertex(soup, edge.vertices.v0);
+    check_vertex(soup, edge.vertices.v1);
+  }
+  for (const VertexPair& edge : report.boundary_edges) {
+    check_vertex(soup, edge.v0);
+    check_vertex(soup, edge.v1);
+  }
+  for (Index v : report.singular_edge_vertices)
+    check_vertex(soup, v);
+  for (Index v : report.pinch_vertices)
+    check_vertex(soup, v);
+
+  const double size = options.size;
+  const double border = size * options.margin;
+
+  // The legend: one line at the top, shrunk until it fits the width.
+  const QString counts =
+      QString::fromStdString(counted(report.singular_edges.size(), "singular edge") + ", " +
+                             counted(report.num_singular_vertices(), "singular vertex") + ", " +
+                             counted(report.boundary_edges.size(), "boundary edge"));
+  const QString legend = options.title.empty()
+                             ? counts
+                             : QString::fromLocal8Bit(options.title.c_str()) + ": " + counts;
+  QFont font;
+  bool legend_drawn = false;
+  double legend_height = 0;
+  if (options.legend && QGuiApplication::instance() != nullptr) {
+    double pixel_size = std::max(10.0, size / 40);
+    font.setPixelSize(static_cast<int>(pixel_size));
+    while (pixel_size > 6 && QFontMetricsF(font).horizontalAdvance(legend) > size - 2 * border) {
+      pixel_size -= 1;
+      font.setPixelSize(static_cast<int>(pixel_size));
+    }
+    if (text_renders(font)) {
+      legend_drawn = true;
+      legend_height = QFontMetricsF(font).height() + border / 2;
+    }
+  }
+  const QRectF area(border, border + legend_height, size - 2 * border,
+                    size - 2 * border - legend_height);
+  const Placement placement =
+      frame_soup ? place_model(*frame_soup, *frame_report) : place_model(soup, report);
+  std::vector<CanvasPoint> canvas_points;
+  const auto draw_along = [&](const SnapshotView& view) {
+    SnapshotOptions along = options;
+    along.view = view;
+    const Frame frame = make_frame(frame_soup ? *frame_soup : soup, placement, along, area);
+    DefectSnapshot result = render(soup, report, frame, options.size, false, canvas_points);
+    result.view = view;
+    return result;
+  };
+  DefectSnapshot result;
+  if (!options.view.automatic) {
+    result = draw_along(options.view);
+  } else if (frame_soup != nullptr) {
+    result = draw_along(choose_view(*frame_soup, *frame_report, options).view);
+  } else {
+    // The small pictures rank the views; drawn full size, the winner must still beat iso (line
+    // widths and the tint of dense defects depend on the size), else iso it is.
+    const SnapshotView best = choose_view(soup, report, options).view;
+    result = draw_along(SnapshotView::iso());
+    if (best != SnapshotView::iso()) {
+      DefectSnapshot other = draw_along(best);
+      if (other.red_pixels + other.green_pixels > result.red_pixels + result.green_pixels)
+        result = std::move(other);
+    }
+  }
+  result.legend_drawn = legend_drawn;
+  if (result.legend_drawn) {
+    QPainter painter(&result.image);
+    painter.setRenderHint(QPainter::TextAntialiasing, true);
+    painter.setFont(font);
+    painter.setPen(kLegendColor);
+    painter.drawText(QRectF(border, border / 2, size - 2 * border, legend_height),
+                     Qt::AlignLeft | Qt::AlignTop, legend);
+  }
+  return result;
+}
+
+std::vector<std::size_t> detail::count_defect_pixels(const Soup& soup, const DefectReport& report,
+                                                     const SnapshotOptions& options,
+                                                     const std::vector<SnapshotView>& views) {
+  const double border = options.size * options.margin;
+  const QRectF area(border, border, options.size - 2 * border, options.size - 2 * border);
+  const Placement placement = place_model(soup, report);
+  std::vector<CanvasPoint> canvas_points;
+  std::vector<std::size_t> counts;
+  SnapshotOptions along = options;
+  for (const SnapshotView& view : views) {
+    along.view = view;
+    const DefectSnapshot drawn = render(soup, report, make_frame(soup, placement, along, area),
+                                        options.size, true, canvas_points);
+    counts.push_back(drawn.red_pixels + drawn.green_pixels);
+  }
+  return counts;
 }
 
 DefectSnapshot side_by_side(const DefectSnapshot& left, const DefectSnapshot& right) {
@@ -398,6 +306,7 @@ DefectSnapshot side_by_side(const DefectSnapshot& left, const DefectSnapshot& ri
   painter.drawImage(left.image.width() + kRule, 0, right.image);
   painter.end();
   both.legend_drawn = left.legend_drawn && right.legend_drawn;
+  both.view = left.view;
   both.red_pixels = left.red_pixels + right.red_pixels;
   both.green_pixels = left.green_pixels + right.green_pixels;
   return both;

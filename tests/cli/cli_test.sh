@@ -772,7 +772,7 @@ snapshot_errors)
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --size 8
   expect_in "$work/err" "--size: Value 8 not in range 16 to 8192"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --view top
-  expect_in "$work/err" "--view: top not in {iso,x,y,z}"
+  expect_in "$work/err" "--view: top is not auto, iso, x, y, z, -x, -y, -z or a corner such as -x+y+z"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.jpg"
   expect_in "$work/err" "name it .png"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj"
@@ -803,7 +803,7 @@ arguments)
   done
   expect_exit 0 "$mb" snapshot --help
   expect_in "$work/out" "--size INT:INT in [16 - 8192]=800"
-  expect_in "$work/out" "--view TEXT:{iso,x,y,z}=iso"
+  expect_in "$work/out" "--view TEXT:VIEW=auto"
   expect_exit 0 "$mb" batch --help
   for option in "--format TEXT:{obj,off,ply,stl,3mf}" "--weld TEXT:NUMBER>=0|auto=auto" --json --quiet --progress --in-place --resume "--jobs"; do
     expect_in "$work/out" "$option"
@@ -1011,10 +1011,10 @@ messages)
 snapshot_views)
   # --focus defects zooms in: prisms24's defects span the model, the hole of cube_with_hole does
   # not, so its green rim gets longer (more green pixels) when zoomed.
-  expect_exit 1 "$mb" snapshot "$models/cube_with_hole.obj" "$work/whole.png" --size 400
+  expect_exit 1 "$mb" snapshot "$models/cube_with_hole.obj" "$work/whole.png" --size 400 --view iso
   expect_in "$work/out" "cube_with_hole.obj ->"
   whole=$(pixels "$work/out" green)
-  expect_exit 1 "$mb" snapshot "$models/cube_with_hole.obj" "$work/zoom.png" --size 400 --focus defects
+  expect_exit 1 "$mb" snapshot "$models/cube_with_hole.obj" "$work/zoom.png" --size 400 --focus defects --view iso
   zoom=$(pixels "$work/out" green)
   [ "$zoom" -gt "$whole" ] 2>/dev/null || fail "--focus defects did not zoom: $whole -> $zoom green"
   [ "$(pixels "$work/out" red)" = 0 ] || fail "red pixels for cube_with_hole"
@@ -1069,7 +1069,7 @@ snapshot_views)
       convert "$1" -crop "$2" +repage -fuzz 18% -fill black +opaque 'rgb(0,160,0)' \
         -fill white -opaque 'rgb(0,160,0)' -format '%[fx:round(mean*w*h)]' info:
     }
-    expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj" --before-after "$work/hw.png"
+    expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj" --before-after "$work/hw.png" --view iso
     expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj" --before-after "$work/hz.png" --view z --focus defects
     whole=$(green_in "$work/hw.png" 800x800+0+0)
     zoom=$(green_in "$work/hz.png" 800x800+0+0)
