@@ -23,8 +23,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <exception>
 #include <limits>
+#include <optional>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace meshbridge::cli {
@@ -92,24 +95,22 @@ void check_vertex(const Soup& soup, Index v) {
   }
 }
 
-//! The surface and the defects of `soup` in `frame` on a `size` x `size` canvas, without legend,
-//! with the defect pixels counted. `counting` draws for choose_view (detail::count_defect_pixels).
-//! `canvas_points` is a buffer (resized here), kept by the caller to draw many views.
-DefectSnapshot render(const Soup& soup, const DefectReport& report, const Frame& frame, int size,
-                      bool counting, std::vector<CanvasPoint>& canvas_points) {
-  const double pen_scale = std::max(1.0, size / 800.0);
+//! Light grey of every face when counting (the shade does not matter there).
+const QRgb kFlat = qRgb(165, 165, 165);
+
+//! Projects the vertices of `soup` in `frame` into `canvas_points` (resized) and fills its
+//! surface into `canvas`, shaded, or all kFlat when `counting`.
+void draw_surface(const Soup& soup, const Frame& frame, bool counting,
+                  std::vector<CanvasPoint>& canvas_points, ZBufferCanvas& canvas) {
   canvas_points.resize(soup.num_vertices());
   for (std::size_t v = 0; v < soup.num_vertices(); ++v)
     canvas_points[v] = frame.to_canvas(soup.positions[v]);
-
-  ZBufferCanvas canvas(size, size, kBackground);
   // The light comes from the upper left, in front: fixed to the camera, so every view is lit.
   Point light = frame.axes.right * -0.4 + frame.axes.up * 0.6 + frame.forward * 0.7;
   light.normalize();
-  const QRgb flat = shade(0.5);  // counting: the shade does not matter
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     const PolygonView polygon = soup.polygon(f);
-    QRgb color = flat;
+    QRgb color = kFlat;
     if (!counting) {
       Point normal(0, 0, 0);  // Newell's normal: fine for any simple polygon
       for (std::size_t i = 0; i < polygon.size(); ++i) {
@@ -126,9 +127,18 @@ DefectSnapshot render(const Soup& soup, const DefectReport& report, const Frame&
                            canvas_points[polygon[i + 1]], color);
     }
   }
+}
 
+//! Draws the defects of `report` on `canvas` (a `size` x `size` surface drawn by draw_surface,
+//! vertices at `canvas_points`, `scale` pixels per unit) and counts the defect pixels; the result
+//! takes the canvas's image. `counting` draws for choose_view (detail::count_defect_pixels), a
+//! sample of the defects when they are many.
+DefectSnapshot draw_defects(const DefectReport& report,
+                            const std::vector<CanvasPoint>& canvas_points, double scale, int size,
+                            bool counting, ZBufferCanvas& canvas) {
+  const double pen_scale = std::max(1.0, size / 800.0);
   // Depth tolerance: three pixels' worth, so edges on the surface are not lost to rounding.
-  const double tolerance = 3 / std::max(frame.scale, 1e-300);
+  const double tolerance = 3 / std::max(scale, 1e-300);
   const auto same = [](const VertexPair& pair) { return pair; };
   const auto vertices_of = [](const SingularEdge& edge) { return edge.vertices; };
   // Many defect edges (kFewestDense or more) shorter than kDenseLength pixels on screen (median)
@@ -138,8 +148,20 @@ DefectSnapshot render(const Soup& soup, const DefectReport& report, const Frame&
   constexpr double kDenseLength = 6;
   constexpr std::size_t kFewestDense = 100;
   constexpr std::size_t kMostHiddenDrawn = 20000;
+  // Counting, at most about kMostCounted edges and dots of each colour are drawn (every n-th; a
+  // sample is enough to rank the views, and drawing 500,000 edges 14 times is not), and their
+  // pixels count n times.
+  constexpr std::size_t kMostCounted = 20000;
+  const auto stride_for = [&](std::size_t n) {
+    return counting ? std::max<std::size_t>(1, (n + kMostCounted - 1) / kMostCounted)
+                    : std::size_t{1};
+  };
+  const std::size_t green_stride = stride_for(report.boundary_edges.size());
+  const std::size_t red_stride =
+      stride_for(std::max(report.singular_edges.size(),
+                          report.singular_edge_vertices.size() + report.pinch_vertices.size()));
   const auto draw_edges = [&](const auto& edges, const auto& pair_of, double width, QRgb color,
-                              QRgb hidden) {
+                              QRgb hidden, std::size_t stride) {
     const double median = median_length(canvas_points, edges, pair_of);
     const bool few = edges.size() < kFewestDense;
     const bool dense = !few && median < kDenseLength && !counting;
@@ -148,23 +170,27 @@ DefectSnapshot render(const Soup& soup, const DefectReport& report, const Frame&
         few ? width * pen_scale : std::max(1.0, std::min(width * pen_scale, median / 4));
     if (dense || edges.size() > kMostHiddenDrawn || counting)
       hidden = qRgba(0, 0, 0, 0);
-    for (const auto& edge : edges) {
-      const VertexPair pair = pair_of(edge);
+    for (std::size_t i = 0; i < edges.size(); i += stride) {
+      const VertexPair pair = pair_of(edges[i]);
       canvas.draw_line(canvas_points[pair.v0], canvas_points[pair.v1], shown, color, hidden,
                        tolerance, dense ? 0.45 : 1.0);
     }
     return dense ? 0.0 : shown;
   };
-  draw_edges(report.boundary_edges, same, 2, kBoundaryColor.rgb(), qRgb(170, 225, 170));
-  const double red_width =
-      draw_edges(report.singular_edges, vertices_of, 3, kSingularColor.rgb(), qRgb(245, 170, 170));
+  draw_edges(report.boundary_edges, same, 2, kBoundaryColor.rgb(), qRgb(170, 225, 170),
+             green_stride);
+  const double red_width = draw_edges(report.singular_edges, vertices_of, 3, kSingularColor.rgb(),
+                                      qRgb(245, 170, 170), red_stride);
   if (red_width > 0 || report.singular_edges.empty()) {
     const double radius = std::max(red_width / 2 + 0.5, std::min(3.5 * pen_scale, red_width * 1.2));
-    for (Index v : report.singular_edge_vertices)
-      canvas.draw_dot(canvas_points[v], radius, kSingularColor.rgb(), tolerance);
+    for (std::size_t i = 0; i < report.singular_edge_vertices.size(); i += red_stride)
+      canvas.draw_dot(canvas_points[report.singular_edge_vertices[i]], radius, kSingularColor.rgb(),
+                      tolerance);
   }
-  for (Index v : report.pinch_vertices)  // no edge shows these: always full size
-    canvas.draw_dot(canvas_points[v], 3.5 * pen_scale, kSingularColor.rgb(), tolerance);
+  // No edge shows pinch vertices: always full size.
+  for (std::size_t i = 0; i < report.pinch_vertices.size(); i += red_stride)
+    canvas.draw_dot(canvas_points[report.pinch_vertices[i]], 3.5 * pen_scale, kSingularColor.rgb(),
+                    tolerance);
   DefectSnapshot result;
   result.image = std::move(canvas.image());
   for (int y = 0; y < result.image.height(); ++y) {
@@ -174,6 +200,8 @@ DefectSnapshot render(const Soup& soup, const DefectReport& report, const Frame&
       result.green_pixels += near(row[x], kBoundaryColor, DefectSnapshot::kColorTolerance) ? 1 : 0;
     }
   }
+  result.red_pixels *= red_stride;
+  result.green_pixels *= green_stride;
   return result;
 }
 
@@ -242,7 +270,10 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
     SnapshotOptions along = options;
     along.view = view;
     const Frame frame = make_frame(frame_soup ? *frame_soup : soup, placement, along, area);
-    DefectSnapshot result = render(soup, report, frame, options.size, false, canvas_points);
+    ZBufferCanvas canvas(options.size, options.size, kBackground);
+    draw_surface(soup, frame, false, canvas_points, canvas);
+    DefectSnapshot result =
+        draw_defects(report, canvas_points, frame.scale, options.size, false, canvas);
     result.view = view;
     return result;
   };
@@ -280,14 +311,68 @@ std::vector<std::size_t> detail::count_defect_pixels(const Soup& soup, const Def
   const double border = options.size * options.margin;
   const QRectF area(border, border, options.size - 2 * border, options.size - 2 * border);
   const Placement placement = place_model(soup, report);
-  std::vector<CanvasPoint> canvas_points;
-  std::vector<std::size_t> counts;
-  SnapshotOptions along = options;
-  for (const SnapshotView& view : views) {
-    along.view = view;
-    const DefectSnapshot drawn = render(soup, report, make_frame(soup, placement, along, area),
-                                        options.size, true, canvas_points);
-    counts.push_back(drawn.red_pixels + drawn.green_pixels);
+  // A view and its opposite (x and -x, iso and -x-y-z) are mirror images with depths reversed:
+  // one pass over the faces fills both (ZBufferCanvas::opposite). The jobs (a view, with its
+  // opposite when that is asked for too) are independent: up to kMostThreads threads draw them,
+  // each with its own canvas and projected points, each count in its own slot, so the result
+  // does not depend on the threads.
+  std::vector<std::size_t> pair_of(views.size(), views.size()), jobs;
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    if (pair_of[i] != views.size() && pair_of[i] < i)
+      continue;  // drawn with its opposite
+    jobs.push_back(i);
+    const SnapshotView back{false, -views[i].x, -views[i].y, -views[i].z};
+    for (std::size_t j = i + 1; j < views.size(); ++j) {
+      if (views[j] == back && pair_of[j] == views.size()) {
+        pair_of[i] = j, pair_of[j] = i;
+        break;
+      }
+    }
+  }
+  constexpr unsigned kMostThreads = 4;
+  const std::size_t threads = std::max<std::size_t>(
+      1, std::min<std::size_t>({jobs.size(), kMostThreads, std::thread::hardware_concurrency()}));
+  std::vector<std::size_t> counts(views.size(), 0);
+  std::vector<std::exception_ptr> failures(threads);
+  const auto work = [&](std::size_t first) {
+    try {
+      std::vector<CanvasPoint> points;
+      SnapshotOptions along = options;
+      for (std::size_t k = first; k < jobs.size(); k += threads) {
+        const std::size_t i = jobs[k], j = pair_of[i];
+        along.view = views[i];
+        const Frame frame = make_frame(soup, placement, along, area);
+        ZBufferCanvas canvas(options.size, options.size, kBackground);
+        if (j != views.size())
+          canvas.keep_farthest();
+        draw_surface(soup, frame, true, points, canvas);
+        std::optional<ZBufferCanvas> back;
+        if (j != views.size())
+          back.emplace(canvas.opposite(kFlat));
+        const DefectSnapshot drawn =
+            draw_defects(report, points, frame.scale, options.size, true, canvas);
+        counts[i] = drawn.red_pixels + drawn.green_pixels;
+        if (j != views.size()) {
+          for (CanvasPoint& point : points)
+            point.x = options.size - point.x, point.depth = -point.depth;
+          const DefectSnapshot mirrored =
+              draw_defects(report, points, frame.scale, options.size, true, *back);
+          counts[j] = mirrored.red_pixels + mirrored.green_pixels;
+        }
+      }
+    } catch (...) {
+      failures[first] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (std::size_t t = 1; t < threads; ++t)
+    helpers.emplace_back(work, t);
+  work(0);
+  for (std::thread& helper : helpers)
+    helper.join();
+  for (const std::exception_ptr& failure : failures) {
+    if (failure)
+      std::rethrow_exception(failure);
   }
   return counts;
 }

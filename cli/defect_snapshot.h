@@ -57,8 +57,9 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
 namespace detail {
 //! For choose_view: the red + green pixels of `soup` drawn along each of `views` (not automatic)
 //! as draw_defect_snapshot draws it with `options`, but without legend, without shading, with
-//! dense defects as opaque lines (not a tint) and no hidden defect lines. The framing is
-//! computed once for all views.
+//! dense defects as opaque lines (not a tint) and no hidden defect lines; of more than 20,000
+//! edges or dots of one colour, every n-th is drawn and its pixels count n times. The framing
+//! is computed once for all views, and a view and its opposite are drawn in one pass.
 //! \pre as draw_defect_snapshot (not checked here)
 std::vector<std::size_t> count_defect_pixels(const Soup& soup, const DefectReport& report,
                                              const SnapshotOptions& options,

@@ -42,8 +42,10 @@ struct ViewChoice {
 //! (singular edges and vertices) plus green (boundary edges), where the surface does not hide
 //! them, each candidate drawn as `options` say (focus, margin, y_up) but kCandidateSize pixels
 //! across at most, without legend, and with dense defects drawn as lines instead of a tint so
-//! that they count. The first candidate wins a tie, so iso is kept unless another view shows
-//! strictly more; a soup without defects gets iso without drawing anything. Deterministic.
+//! that they count (a sample of every n-th when there are over 20,000, counted n times: see
+//! detail::count_defect_pixels). The first candidate wins a tie, so iso is kept unless another
+//! view shows strictly more; a soup without red or green defects gets iso without drawing
+//! anything. Deterministic: the same counts whatever the number of threads.
 //! \pre as draw_defect_snapshot (validated by the caller)
 ViewChoice choose_view(const Soup& soup, const DefectReport& report,
                        const SnapshotOptions& options);
