@@ -4,6 +4,8 @@
 
 #include "meshbridge/validate.h"
 
+#include "snapshot_frame.h"
+#include "snapshot_views.h"
 #include "zbuffer_canvas.h"
 
 #include <QColor>
@@ -21,170 +23,22 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <exception>
 #include <limits>
+#include <optional>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace meshbridge::cli {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kIsoAzimuthDegrees = 45;
-constexpr double kIsoElevationDegrees = 30;
-
 const QColor kBackground(255, 255, 255);
 const QColor kEdgeColor(192, 192, 192);
 const QColor kBoundaryColor(0, 160, 0);
 const QColor kSingularColor(220, 0, 0);
 const QColor kLegendColor(0, 0, 0);
-
-//! Screen axes of an orthographic camera: `right` and `up` are orthonormal, and right x up points
-//! from the model toward the camera.
-struct ScreenAxes {
-  Point right;
-  Point up;
-};
-
-ScreenAxes screen_axes(SnapshotView view) {
-  switch (view) {
-    case SnapshotView::iso: {
-      // Camera at azimuth a (from +x toward +y) and elevation e, +z up. The exact isometric
-      // (e = 35.26 deg) puts a box's back corner behind its front one and hides three edges.
-      const double a = kIsoAzimuthDegrees * kPi / 180, e = kIsoElevationDegrees * kPi / 180;
-      return {Point(-std::sin(a), std::cos(a), 0),
-              Point(-std::sin(e) * std::cos(a), -std::sin(e) * std::sin(a), std::cos(e))};
-    }
-    case SnapshotView::x:
-      return {Point(0, 1, 0), Point(0, 0, 1)};
-    case SnapshotView::y:
-      return {Point(-1, 0, 0), Point(0, 0, 1)};
-    case SnapshotView::z:
-      return {Point(1, 0, 0), Point(0, 1, 0)};
-  }
-  throw std::invalid_argument("unknown snapshot view");
-}
-
-//! Where the model lands in the image: model coordinates are halved, centred on `centre` and
-//! scaled by `unit` into [-1, 1] (no overflow even near DBL_MAX), projected on the camera axes,
-//! then `mid` goes to the centre of `area` and one unit becomes `scale` pixels.
-struct Frame {
-  ScreenAxes axes;
-  Point forward;  //!< toward the camera: right x up
-  Point centre;
-  double unit = 1;
-  double mid_x = 0, mid_y = 0;
-  double scale = 1;
-  QRectF area;
-
-  Point normalized(const Point& p) const { return (p * 0.5 - centre * 0.5) * unit; }
-  CanvasPoint to_canvas(const Point& p) const {
-    const Point n = normalized(p);
-    return {area.center().x() + ((n | axes.right) - mid_x) * scale,
-            area.center().y() - ((n | axes.up) - mid_y) * scale, n | forward};
-  }
-};
-
-//! Vertices the picture is fitted to: those of defects with `focus` (if any), else all used.
-std::vector<char> fit_vertices(const Soup& soup, const DefectReport& report, SnapshotFocus focus) {
-  std::vector<char> fit(soup.num_vertices(), 0);
-  bool any = false;
-  if (focus != SnapshotFocus::whole) {
-    const auto mark = [&](Index v) {
-      if (v < fit.size()) {
-        fit[v] = 1;
-        any = true;
-      }
-    };
-    for (const SingularEdge& e : report.singular_edges)
-      mark(e.vertices.v0), mark(e.vertices.v1);
-    for (const VertexPair& e : report.boundary_edges)
-      mark(e.v0), mark(e.v1);
-    for (Index v : report.pinch_vertices)
-      mark(v);
-  }
-  if (!any) {
-    for (Index v : soup.corner_vertices)
-      fit[v] = 1;
-  }
-  return fit;
-}
-
-Frame make_frame(const Soup& soup, const DefectReport& report, const SnapshotOptions& options,
-                 const QRectF& area) {
-  Frame frame;
-  frame.axes = screen_axes(options.view);
-  if (options.y_up) {
-    // Drawn as if the model were turned by R: (x, y, z) -> (x, -z, y), +y to +z; projecting R p
-    // on an axis a is projecting p on R^T a = (a.x, a.z, -a.y).
-    for (Point* a : {&frame.axes.right, &frame.axes.up})
-      *a = Point((*a)[0], (*a)[2], -(*a)[1]);
-  }
-  frame.forward = frame.axes.right % frame.axes.up;
-  frame.area = area;
-  std::vector<char> used(soup.num_vertices(), 0);
-  for (Index v : soup.corner_vertices)
-    used[v] = 1;
-  Point low(std::numeric_limits<double>::max());
-  Point high(std::numeric_limits<double>::lowest());
-  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-    if (used[v]) {
-      low.minimize(soup.positions[v]);
-      high.maximize(soup.positions[v]);
-    }
-  }
-  frame.centre = low * 0.5 + high * 0.5;
-  double extent = 0;
-  for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-    if (used[v])
-      extent = std::max(extent, (soup.positions[v] * 0.5 - frame.centre * 0.5).max_abs());
-  }
-  frame.unit = extent > 0 ? 1 / extent : 1;
-
-  // The projected box of the fitted vertices, and of the whole model (a zoom shows at least a
-  // tenth of the model's width, so one short defect edge is not blown up to fill the picture).
-  const auto box = [&](const std::vector<char>& which, double* out) {
-    out[0] = out[2] = std::numeric_limits<double>::max();
-    out[1] = out[3] = std::numeric_limits<double>::lowest();
-    for (std::size_t v = 0; v < soup.num_vertices(); ++v) {
-      if (!which[v])
-        continue;
-      const Point n = frame.normalized(soup.positions[v]);
-      const double x = n | frame.axes.right, y = n | frame.axes.up;
-      out[0] = std::min(out[0], x), out[1] = std::max(out[1], x);
-      out[2] = std::min(out[2], y), out[3] = std::max(out[3], y);
-    }
-  };
-  double whole[4], fitted[4];
-  box(used, whole);
-  box(fit_vertices(soup, report, options.focus), fitted);
-  const double across = std::max(whole[1] - whole[0], whole[3] - whole[2]);
-  SnapshotFocus focus = options.focus;
-  if (focus == SnapshotFocus::automatic) {  // defects when small, with the model around them
-    const bool small = std::max(fitted[1] - fitted[0], fitted[3] - fitted[2]) < 0.25 * across;
-    focus = small ? SnapshotFocus::defects : SnapshotFocus::whole;
-    if (!small)
-      std::copy(whole, whole + 4, fitted);
-  }
-  if (focus == SnapshotFocus::defects) {
-    const double least = (options.focus == SnapshotFocus::automatic ? 0.4 : 0.1) * across;
-    for (int axis = 0; axis < 4; axis += 2) {
-      const double middle = (fitted[axis] + fitted[axis + 1]) / 2;
-      const double half = std::max((fitted[axis + 1] - fitted[axis]) * 0.55, least / 2);
-      fitted[axis] = middle - half, fitted[axis + 1] = middle + half;
-    }
-  }
-  const double width = fitted[1] - fitted[0], height = fitted[3] - fitted[2];
-  frame.scale = 1;
-  if (width > 1e-12 || height > 1e-12) {
-    frame.scale =
-        std::min(width > 1e-12 ? area.width() / width : std::numeric_limits<double>::max(),
-                 height > 1e-12 ? area.height() / height : std::numeric_limits<double>::max());
-  }
-  frame.mid_x = (fitted[0] + fitted[1]) / 2;
-  frame.mid_y = (fitted[2] + fitted[3]) / 2;
-  return frame;
-}
 
 //! Light grey for a face whose unit normal makes `cosine` with the light (both sides lit).
 QRgb shade(double cosine) {
@@ -241,6 +95,116 @@ void check_vertex(const Soup& soup, Index v) {
   }
 }
 
+//! Light grey of every face when counting (the shade does not matter there).
+const QRgb kFlat = qRgb(165, 165, 165);
+
+//! Projects the vertices of `soup` in `frame` into `canvas_points` (resized) and fills its
+//! surface into `canvas`, shaded, or all kFlat when `counting`.
+void draw_surface(const Soup& soup, const Frame& frame, bool counting,
+                  std::vector<CanvasPoint>& canvas_points, ZBufferCanvas& canvas) {
+  canvas_points.resize(soup.num_vertices());
+  for (std::size_t v = 0; v < soup.num_vertices(); ++v)
+    canvas_points[v] = frame.to_canvas(soup.positions[v]);
+  // The light comes from the upper left, in front: fixed to the camera, so every view is lit.
+  Point light = frame.axes.right * -0.4 + frame.axes.up * 0.6 + frame.forward * 0.7;
+  light.normalize();
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const PolygonView polygon = soup.polygon(f);
+    QRgb color = kFlat;
+    if (!counting) {
+      Point normal(0, 0, 0);  // Newell's normal: fine for any simple polygon
+      for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const Point p = frame.normalized(soup.positions[polygon[i]]);
+        const Point q = frame.normalized(soup.positions[polygon[(i + 1) % polygon.size()]]);
+        normal += Point((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
+                        (p[0] - q[0]) * (p[1] + q[1]));
+      }
+      const double length = normal.norm();
+      color = shade(length > 0 ? (normal | light) / length : 0);
+    }
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+      canvas.fill_triangle(canvas_points[polygon[0]], canvas_points[polygon[i]],
+                           canvas_points[polygon[i + 1]], color);
+    }
+  }
+}
+
+//! Draws the defects of `report` on `canvas` (a `size` x `size` surface drawn by draw_surface,
+//! vertices at `canvas_points`, `scale` pixels per unit) and counts the defect pixels; the result
+//! takes the canvas's image. `counting` draws for choose_view (detail::count_defect_pixels), a
+//! sample of the defects when they are many.
+DefectSnapshot draw_defects(const DefectReport& report,
+                            const std::vector<CanvasPoint>& canvas_points, double scale, int size,
+                            bool counting, ZBufferCanvas& canvas) {
+  const double pen_scale = std::max(1.0, size / 800.0);
+  // Depth tolerance: three pixels' worth, so edges on the surface are not lost to rounding.
+  const double tolerance = 3 / std::max(scale, 1e-300);
+  const auto same = [](const VertexPair& pair) { return pair; };
+  const auto vertices_of = [](const SingularEdge& edge) { return edge.vertices; };
+  // Many defect edges (kFewestDense or more) shorter than kDenseLength pixels on screen (median)
+  // are too dense to draw one by one: they tint the surface instead (not counted as defect
+  // pixels), their hidden parts and vertex dots are left out, so the shape stays visible. Fewer
+  // are drawn at full width with their dots however short they look (an edge seen end on).
+  constexpr double kDenseLength = 6;
+  constexpr std::size_t kFewestDense = 100;
+  constexpr std::size_t kMostHiddenDrawn = 20000;
+  // Counting, at most about kMostCounted edges and dots of each colour are drawn (every n-th; a
+  // sample is enough to rank the views, and drawing 500,000 edges 14 times is not), and their
+  // pixels count n times.
+  constexpr std::size_t kMostCounted = 20000;
+  const auto stride_for = [&](std::size_t n) {
+    return counting ? std::max<std::size_t>(1, (n + kMostCounted - 1) / kMostCounted)
+                    : std::size_t{1};
+  };
+  const std::size_t green_stride = stride_for(report.boundary_edges.size());
+  const std::size_t red_stride =
+      stride_for(std::max(report.singular_edges.size(),
+                          report.singular_edge_vertices.size() + report.pinch_vertices.size()));
+  const auto draw_edges = [&](const auto& edges, const auto& pair_of, double width, QRgb color,
+                              QRgb hidden, std::size_t stride) {
+    const double median = median_length(canvas_points, edges, pair_of);
+    const bool few = edges.size() < kFewestDense;
+    const bool dense = !few && median < kDenseLength && !counting;
+    // Thinner where many edges are short on screen: a grid of defects stays a grid.
+    const double shown =
+        few ? width * pen_scale : std::max(1.0, std::min(width * pen_scale, median / 4));
+    if (dense || edges.size() > kMostHiddenDrawn || counting)
+      hidden = qRgba(0, 0, 0, 0);
+    for (std::size_t i = 0; i < edges.size(); i += stride) {
+      const VertexPair pair = pair_of(edges[i]);
+      canvas.draw_line(canvas_points[pair.v0], canvas_points[pair.v1], shown, color, hidden,
+                       tolerance, dense ? 0.45 : 1.0);
+    }
+    return dense ? 0.0 : shown;
+  };
+  draw_edges(report.boundary_edges, same, 2, kBoundaryColor.rgb(), qRgb(170, 225, 170),
+             green_stride);
+  const double red_width = draw_edges(report.singular_edges, vertices_of, 3, kSingularColor.rgb(),
+                                      qRgb(245, 170, 170), red_stride);
+  if (red_width > 0 || report.singular_edges.empty()) {
+    const double radius = std::max(red_width / 2 + 0.5, std::min(3.5 * pen_scale, red_width * 1.2));
+    for (std::size_t i = 0; i < report.singular_edge_vertices.size(); i += red_stride)
+      canvas.draw_dot(canvas_points[report.singular_edge_vertices[i]], radius, kSingularColor.rgb(),
+                      tolerance);
+  }
+  // No edge shows pinch vertices: always full size.
+  for (std::size_t i = 0; i < report.pinch_vertices.size(); i += red_stride)
+    canvas.draw_dot(canvas_points[report.pinch_vertices[i]], 3.5 * pen_scale, kSingularColor.rgb(),
+                    tolerance);
+  DefectSnapshot result;
+  result.image = std::move(canvas.image());
+  for (int y = 0; y < result.image.height(); ++y) {
+    const QRgb* row = reinterpret_cast<const QRgb*>(result.image.constScanLine(y));
+    for (int x = 0; x < result.image.width(); ++x) {
+      result.red_pixels += near(row[x], kSingularColor, DefectSnapshot::kColorTolerance) ? 1 : 0;
+      result.green_pixels += near(row[x], kBoundaryColor, DefectSnapshot::kColorTolerance) ? 1 : 0;
+    }
+  }
+  result.red_pixels *= red_stride;
+  result.green_pixels *= green_stride;
+  return result;
+}
+
 }  // namespace
 
 DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report,
@@ -255,6 +219,8 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
   }
   if (!(options.margin >= 0 && options.margin <= 0.45))
     throw std::invalid_argument("snapshot margin must be 0 to 0.45");
+  if (!options.view.is_valid())
+    throw std::invalid_argument("snapshot view: not a corner, an axis or automatic");
   validate_soup(soup);
   for (const SingularEdge& edge : report.singular_edges) {
     check_vertex(soup, edge.vertices.v0);
@@ -270,9 +236,7 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
     check_vertex(soup, v);
 
   const double size = options.size;
-  const double pen_scale = std::max(1.0, size / 800);
   const double border = size * options.margin;
-  DefectSnapshot result;
 
   // The legend: one line at the top, shrunk until it fits the width.
   const QString counts =
@@ -283,6 +247,7 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
                              ? counts
                              : QString::fromLocal8Bit(options.title.c_str()) + ": " + counts;
   QFont font;
+  bool legend_drawn = false;
   double legend_height = 0;
   if (options.legend && QGuiApplication::instance() != nullptr) {
     double pixel_size = std::max(10.0, size / 40);
@@ -292,79 +257,43 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
       font.setPixelSize(static_cast<int>(pixel_size));
     }
     if (text_renders(font)) {
-      result.legend_drawn = true;
+      legend_drawn = true;
       legend_height = QFontMetricsF(font).height() + border / 2;
     }
   }
   const QRectF area(border, border + legend_height, size - 2 * border,
                     size - 2 * border - legend_height);
-  const Frame frame = frame_soup ? make_frame(*frame_soup, *frame_report, options, area)
-                                 : make_frame(soup, report, options, area);
-  std::vector<CanvasPoint> canvas_points(soup.num_vertices());
-  for (std::size_t v = 0; v < soup.num_vertices(); ++v)
-    canvas_points[v] = frame.to_canvas(soup.positions[v]);
-
-  ZBufferCanvas canvas(options.size, options.size, kBackground);
-  // The light comes from the upper left, in front: fixed to the camera, so every view is lit.
-  Point light = frame.axes.right * -0.4 + frame.axes.up * 0.6 + frame.forward * 0.7;
-  light.normalize();
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const PolygonView polygon = soup.polygon(f);
-    Point normal(0, 0, 0);  // Newell's normal: fine for any simple polygon
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-      const Point p = frame.normalized(soup.positions[polygon[i]]);
-      const Point q = frame.normalized(soup.positions[polygon[(i + 1) % polygon.size()]]);
-      normal += Point((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
-                      (p[0] - q[0]) * (p[1] + q[1]));
-    }
-    const double length = normal.norm();
-    const QRgb color = shade(length > 0 ? (normal | light) / length : 0);
-    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      canvas.fill_triangle(canvas_points[polygon[0]], canvas_points[polygon[i]],
-                           canvas_points[polygon[i + 1]], color);
-    }
-  }
-
-  // Depth tolerance: three pixels' worth, so edges on the surface are not lost to rounding.
-  const double tolerance = 3 / std::max(frame.scale, 1e-300);
-  const auto same = [](const VertexPair& pair) { return pair; };
-  const auto vertices_of = [](const SingularEdge& edge) { return edge.vertices; };
-  // Many defect edges (kFewestDense or more) shorter than kDenseLength pixels on screen (median)
-  // are too dense to draw one by one: they tint the surface instead (not counted as defect
-  // pixels), their hidden parts and vertex dots are left out, so the shape stays visible. Fewer
-  // are drawn at full width with their dots however short they look (an edge seen end on).
-  constexpr double kDenseLength = 6;
-  constexpr std::size_t kFewestDense = 100;
-  constexpr std::size_t kMostHiddenDrawn = 20000;
-  const auto draw_edges = [&](const auto& edges, const auto& pair_of, double width, QRgb color,
-                              QRgb hidden) {
-    const double median = median_length(canvas_points, edges, pair_of);
-    const bool few = edges.size() < kFewestDense;
-    const bool dense = !few && median < kDenseLength;
-    // Thinner where many edges are short on screen: a grid of defects stays a grid.
-    const double shown =
-        few ? width * pen_scale : std::max(1.0, std::min(width * pen_scale, median / 4));
-    if (dense || edges.size() > kMostHiddenDrawn)
-      hidden = qRgba(0, 0, 0, 0);
-    for (const auto& edge : edges) {
-      const VertexPair pair = pair_of(edge);
-      canvas.draw_line(canvas_points[pair.v0], canvas_points[pair.v1], shown, color, hidden,
-                       tolerance, dense ? 0.45 : 1.0);
-    }
-    return dense ? 0.0 : shown;
+  const Placement placement =
+      frame_soup ? place_model(*frame_soup, *frame_report) : place_model(soup, report);
+  std::vector<CanvasPoint> canvas_points;
+  const auto draw_along = [&](const SnapshotView& view) {
+    SnapshotOptions along = options;
+    along.view = view;
+    const Frame frame = make_frame(frame_soup ? *frame_soup : soup, placement, along, area);
+    ZBufferCanvas canvas(options.size, options.size, kBackground);
+    draw_surface(soup, frame, false, canvas_points, canvas);
+    DefectSnapshot result =
+        draw_defects(report, canvas_points, frame.scale, options.size, false, canvas);
+    result.view = view;
+    return result;
   };
-  draw_edges(report.boundary_edges, same, 2, kBoundaryColor.rgb(), qRgb(170, 225, 170));
-  const double red_width =
-      draw_edges(report.singular_edges, vertices_of, 3, kSingularColor.rgb(), qRgb(245, 170, 170));
-  if (red_width > 0 || report.singular_edges.empty()) {
-    const double radius = std::max(red_width / 2 + 0.5, std::min(3.5 * pen_scale, red_width * 1.2));
-    for (Index v : report.singular_edge_vertices)
-      canvas.draw_dot(canvas_points[v], radius, kSingularColor.rgb(), tolerance);
+  DefectSnapshot result;
+  if (!options.view.automatic) {
+    result = draw_along(options.view);
+  } else if (frame_soup != nullptr) {
+    result = draw_along(choose_view(*frame_soup, *frame_report, options).view);
+  } else {
+    // The small pictures rank the views; drawn full size, the winner must still beat iso (line
+    // widths and the tint of dense defects depend on the size), else iso it is.
+    const SnapshotView best = choose_view(soup, report, options).view;
+    result = draw_along(SnapshotView::iso());
+    if (best != SnapshotView::iso()) {
+      DefectSnapshot other = draw_along(best);
+      if (other.red_pixels + other.green_pixels > result.red_pixels + result.green_pixels)
+        result = std::move(other);
+    }
   }
-  for (Index v : report.pinch_vertices)  // no edge shows these: always full size
-    canvas.draw_dot(canvas_points[v], 3.5 * pen_scale, kSingularColor.rgb(), tolerance);
-  result.image = std::move(canvas.image());
-
+  result.legend_drawn = legend_drawn;
   if (result.legend_drawn) {
     QPainter painter(&result.image);
     painter.setRenderHint(QPainter::TextAntialiasing, true);
@@ -373,15 +302,79 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
     painter.drawText(QRectF(border, border / 2, size - 2 * border, legend_height),
                      Qt::AlignLeft | Qt::AlignTop, legend);
   }
+  return result;
+}
 
-  for (int y = 0; y < result.image.height(); ++y) {
-    const QRgb* row = reinterpret_cast<const QRgb*>(result.image.constScanLine(y));
-    for (int x = 0; x < result.image.width(); ++x) {
-      result.red_pixels += near(row[x], kSingularColor, DefectSnapshot::kColorTolerance) ? 1 : 0;
-      result.green_pixels += near(row[x], kBoundaryColor, DefectSnapshot::kColorTolerance) ? 1 : 0;
+std::vector<std::size_t> detail::count_defect_pixels(const Soup& soup, const DefectReport& report,
+                                                     const SnapshotOptions& options,
+                                                     const std::vector<SnapshotView>& views) {
+  const double border = options.size * options.margin;
+  const QRectF area(border, border, options.size - 2 * border, options.size - 2 * border);
+  const Placement placement = place_model(soup, report);
+  // A view and its opposite (x and -x, iso and -x-y-z) are mirror images with depths reversed:
+  // one pass over the faces fills both (ZBufferCanvas::opposite). The jobs (a view, with its
+  // opposite when that is asked for too) are independent: up to kMostThreads threads draw them,
+  // each with its own canvas and projected points, each count in its own slot, so the result
+  // does not depend on the threads.
+  std::vector<std::size_t> pair_of(views.size(), views.size()), jobs;
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    if (pair_of[i] != views.size() && pair_of[i] < i)
+      continue;  // drawn with its opposite
+    jobs.push_back(i);
+    const SnapshotView back{false, -views[i].x, -views[i].y, -views[i].z};
+    for (std::size_t j = i + 1; j < views.size(); ++j) {
+      if (views[j] == back && pair_of[j] == views.size()) {
+        pair_of[i] = j, pair_of[j] = i;
+        break;
+      }
     }
   }
-  return result;
+  constexpr unsigned kMostThreads = 4;
+  const std::size_t threads = std::max<std::size_t>(
+      1, std::min<std::size_t>({jobs.size(), kMostThreads, std::thread::hardware_concurrency()}));
+  std::vector<std::size_t> counts(views.size(), 0);
+  std::vector<std::exception_ptr> failures(threads);
+  const auto work = [&](std::size_t first) {
+    try {
+      std::vector<CanvasPoint> points;
+      SnapshotOptions along = options;
+      for (std::size_t k = first; k < jobs.size(); k += threads) {
+        const std::size_t i = jobs[k], j = pair_of[i];
+        along.view = views[i];
+        const Frame frame = make_frame(soup, placement, along, area);
+        ZBufferCanvas canvas(options.size, options.size, kBackground);
+        if (j != views.size())
+          canvas.keep_farthest();
+        draw_surface(soup, frame, true, points, canvas);
+        std::optional<ZBufferCanvas> back;
+        if (j != views.size())
+          back.emplace(canvas.opposite(kFlat));
+        const DefectSnapshot drawn =
+            draw_defects(report, points, frame.scale, options.size, true, canvas);
+        counts[i] = drawn.red_pixels + drawn.green_pixels;
+        if (j != views.size()) {
+          for (CanvasPoint& point : points)
+            point.x = options.size - point.x, point.depth = -point.depth;
+          const DefectSnapshot mirrored =
+              draw_defects(report, points, frame.scale, options.size, true, *back);
+          counts[j] = mirrored.red_pixels + mirrored.green_pixels;
+        }
+      }
+    } catch (...) {
+      failures[first] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (std::size_t t = 1; t < threads; ++t)
+    helpers.emplace_back(work, t);
+  work(0);
+  for (std::thread& helper : helpers)
+    helper.join();
+  for (const std::exception_ptr& failure : failures) {
+    if (failure)
+      std::rethrow_exception(failure);
+  }
+  return counts;
 }
 
 DefectSnapshot side_by_side(const DefectSnapshot& left, const DefectSnapshot& right) {
@@ -398,6 +391,7 @@ DefectSnapshot side_by_side(const DefectSnapshot& left, const DefectSnapshot& ri
   painter.drawImage(left.image.width() + kRule, 0, right.image);
   painter.end();
   both.legend_drawn = left.legend_drawn && right.legend_drawn;
+  both.view = left.view;
   both.red_pixels = left.red_pixels + right.red_pixels;
   both.green_pixels = left.green_pixels + right.green_pixels;
   return both;

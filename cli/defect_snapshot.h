@@ -12,6 +12,7 @@
 #include <QImage>
 
 #include <cstddef>
+#include <vector>
 
 namespace meshbridge::cli {
 
@@ -25,33 +26,48 @@ struct DefectSnapshot {
   std::size_t red_pixels = 0;
   std::size_t green_pixels = 0;
   static constexpr int kColorTolerance = 48;
+  //! The view drawn: `options.view`, or the one choose_view chose when that was automatic.
+  SnapshotView view = SnapshotView::iso();
 };
 
-//! Draws `soup` seen orthographically along `options.view`: its polygons flat-shaded light grey
-//! (Lambert, one fixed light, both sides lit) with a depth buffer, on white; on top, where the
-//! surface does not hide them, boundary edges green (0,160,0), 2 px, and singular edges red
-//! (220,0,0), 3 px, with singular vertices (singular-edge endpoints and pinch vertices) as red
-//! dots 7 px across; widths grow with `size` above 800 and shrink (to 1 px) where the defect
-//! edges are short on screen, so a dense mesh shows a grid rather than a solid colour. Defect
-//! edges behind the surface are drawn 1 px in pale red / pale green (not counted). Polygons
-//! smaller than a pixel still colour the pixel under their centre. The model (or with
-//! SnapshotFocus::defects the defects' bounding box) is fitted into the image inside the margin,
-//! below the legend; with `frame_soup` the fit is that of `frame_soup` and `frame_report`
-//! instead, so two pictures (before and after a repair) line up. The legend is one black line,
-//! "TITLE: N singular edges, M singular vertices, K boundary edges"; text needs a
-//! QGuiApplication (the CLI makes one on the "offscreen" platform), so without one the legend
-//! is left out and the rest is drawn all the same.
-//! \pre `soup` passes validate_soup(); `report` is detect_defects(soup); `options.size` in
-//! [kMinSize, kMaxSize]; `options.margin` in [0, 0.45]; `frame_report` set when `frame_soup` is
-//! \throw InvalidSoupError from validate_soup()
+//! Draws `soup` seen orthographically along `options.view`. When that is automatic: along the
+//! view choose_view() in cli/snapshot_views.h picks for `frame_soup` if given; else for `soup`,
+//! if drawn at full size it shows more defect pixels than iso, else iso (so the automatic view
+//! never shows fewer defect pixels than iso). Its polygons flat-shaded light grey (Lambert, one
+//! fixed light, both sides lit) with a depth buffer, on white; on top, where the surface does not
+//! hide them, boundary edges green (0,160,0), 2 px, and singular edges red (220,0,0), 3 px, with
+//! singular vertices (singular-edge endpoints and pinch vertices) as red dots 7 px across; widths
+//! grow with `size` above 800 and shrink (to 1 px) where the defect edges are short on screen, so a
+//! dense mesh shows a grid rather than a solid colour. Defect edges behind the surface are drawn 1
+//! px in pale red / pale green (not counted). Polygons smaller than a pixel still colour the pixel
+//! under their centre. The model (or with SnapshotFocus::defects the defects' bounding box) is
+//! fitted into the image inside the margin, below the legend; with `frame_soup` the fit is that of
+//! `frame_soup` and `frame_report` instead, so two pictures (before and after a repair) line up.
+//! The legend is one black line, "TITLE: N singular edges, M singular vertices, K boundary edges";
+//! text needs a QGuiApplication (the CLI makes one on the "offscreen" platform), so without one the
+//! legend is left out and the rest is drawn all the same. \pre `soup` passes validate_soup();
+//! `report` is detect_defects(soup); `options.size` in [kMinSize, kMaxSize]; `options.margin` in
+//! [0, 0.45]; `frame_report` set when `frame_soup` is \throw InvalidSoupError from validate_soup()
 //! \throw std::invalid_argument naming the bad option, or a report vertex the soup lacks
 DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report,
                                     const SnapshotOptions& options = {},
                                     const Soup* frame_soup = nullptr,
                                     const DefectReport* frame_report = nullptr);
 
+namespace detail {
+//! For choose_view: the red + green pixels of `soup` drawn along each of `views` (not automatic)
+//! as draw_defect_snapshot draws it with `options`, but without legend, without shading, with
+//! dense defects as opaque lines (not a tint) and no hidden defect lines; of more than 20,000
+//! edges or dots of one colour, every n-th is drawn and its pixels count n times. The framing
+//! is computed once for all views, and a view and its opposite are drawn in one pass.
+//! \pre as draw_defect_snapshot (not checked here)
+std::vector<std::size_t> count_defect_pixels(const Soup& soup, const DefectReport& report,
+                                             const SnapshotOptions& options,
+                                             const std::vector<SnapshotView>& views);
+}  // namespace detail
+
 //! `left` and `right` side by side with a 2-pixel grey rule between them (heights may differ;
-//! the rest is white). Pixel counts add up.
+//! the rest is white). Pixel counts add up; the view is the left one's.
 DefectSnapshot side_by_side(const DefectSnapshot& left, const DefectSnapshot& right);
 
 }  // namespace meshbridge::cli

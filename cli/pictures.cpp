@@ -138,6 +138,7 @@ PicturesDrawn write_pictures_png(const std::string& path, const std::vector<Pict
   drawn.red_pixels = result.red_pixels;
   drawn.green_pixels = result.green_pixels;
   drawn.legend_drawn = result.legend_drawn != 0;
+  drawn.view = result.view;
   return drawn;
 }
 

@@ -38,6 +38,9 @@ struct PicturesDrawn {
   std::size_t red_pixels = 0;    //!< summed over the pictures
   std::size_t green_pixels = 0;  //!< summed over the pictures
   bool legend_drawn = false;     //!< every picture has its legend
+  //! The view of the first picture as drawn: the one chosen when its options said automatic (a
+  //! later picture whose view is automatic is drawn along it too).
+  SnapshotView view = SnapshotView::iso();
 };
 
 //! The module's file: the first that exists of meshbridge_pictures.so next to the executable (the

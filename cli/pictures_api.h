@@ -21,7 +21,7 @@
 extern "C" {
 
 //! The version of everything in this header; bumped whenever a struct or a function changes.
-#define MESHBRIDGE_PICTURES_ABI 1
+#define MESHBRIDGE_PICTURES_ABI 2
 //! The name of the one symbol the module exports (a MeshbridgePicturesEntry).
 #define MESHBRIDGE_PICTURES_ENTRY "meshbridge_pictures_api"
 
@@ -54,13 +54,17 @@ struct MeshbridgePictureResult {
   std::size_t red_pixels;    //!< DefectSnapshot::red_pixels, summed over the pictures
   std::size_t green_pixels;  //!< DefectSnapshot::green_pixels, summed over the pictures
   int legend_drawn;          //!< 1 when every picture has its legend (text renders here)
+  //! The view the first picture was drawn along (chosen there when its options asked for auto).
+  meshbridge::cli::SnapshotView view;
 };
 
 //! The module's functions.
 struct MeshbridgePicturesApi {
   int abi;  //!< MESHBRIDGE_PICTURES_ABI as the module was built
   //! Draws the `count` >= 1 pictures side by side, left to right, with a 2-pixel grey rule between
-  //! them (side_by_side in cli/defect_snapshot.h), and encodes the result as PNG. Qt runs on its
+  //! them (side_by_side in cli/defect_snapshot.h), and encodes the result as PNG. A later picture
+  //! whose view is automatic takes the view chosen for the first (a before/after pair lines up;
+  //! the "after" is framed on the "before" anyway). Qt runs on its
   //! "offscreen" platform (no display needed) for the duration of the call. Never throws.
   void (*draw_png)(const MeshbridgePictureRequest* pictures, std::size_t count,
                    MeshbridgePictureResult* result);

@@ -31,10 +31,14 @@ void fail(MeshbridgePictureResult& result, MeshbridgePicturesStatus status, cons
   result.error = copy_of(message);
 }
 
-DefectSnapshot draw(const MeshbridgePictureRequest& picture) {
+//! Draws `picture`; an automatic view becomes `view` unless that is automatic too.
+DefectSnapshot draw(const MeshbridgePictureRequest& picture, const SnapshotView& view) {
   if (picture.soup == nullptr || picture.report == nullptr || picture.options == nullptr)
     throw std::invalid_argument("draw_png: a picture without soup, report or options");
-  return draw_defect_snapshot(*picture.soup, *picture.report, *picture.options, picture.frame_soup,
+  SnapshotOptions options = *picture.options;
+  if (options.view.automatic)
+    options.view = view;
+  return draw_defect_snapshot(*picture.soup, *picture.report, options, picture.frame_soup,
                               picture.frame_report);
 }
 
@@ -45,9 +49,10 @@ void draw_png(const MeshbridgePictureRequest* pictures, std::size_t count,
     if (pictures == nullptr || count == 0)
       throw std::invalid_argument("draw_png: no picture to draw");
     const OffscreenQt qt;  // fonts for the legends
-    DefectSnapshot drawn = draw(pictures[0]);
+    DefectSnapshot drawn = draw(pictures[0], SnapshotView::automatic_view());
+    const SnapshotView first = drawn.view;
     for (std::size_t i = 1; i < count; ++i)
-      drawn = side_by_side(drawn, draw(pictures[i]));
+      drawn = side_by_side(drawn, draw(pictures[i], first));
     const QByteArray png = encode_png(drawn.image);
     result->png = static_cast<unsigned char*>(std::malloc(static_cast<std::size_t>(png.size())));
     if (result->png == nullptr)
@@ -57,6 +62,7 @@ void draw_png(const MeshbridgePictureRequest* pictures, std::size_t count,
     result->red_pixels = drawn.red_pixels;
     result->green_pixels = drawn.green_pixels;
     result->legend_drawn = drawn.legend_drawn ? 1 : 0;
+    result->view = drawn.view;
     result->status = MESHBRIDGE_PICTURES_OK;
   } catch (const std::bad_alloc&) {
     fail(*result, MESHBRIDGE_PICTURES_OUT_OF_MEMORY, "out of memory");

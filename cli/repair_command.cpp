@@ -152,6 +152,7 @@ int run_repair(RepairArguments& arguments) {
       }
     }
   }
+  std::string picture_view;  // drawn along, for the summary
   if (!arguments.before_after.empty()) {
     // The result framed as the input, so the two pictures line up; the file as a reader gets
     // it back where that differs (STL).
@@ -166,12 +167,13 @@ int run_repair(RepairArguments& arguments) {
     after.frame_soup = &file.input;
     after.frame_report = &report.before;
     for (Picture* picture : {&before, &after}) {
-      picture->options.view = parse_snapshot_view(arguments.view.empty() ? "iso" : arguments.view);
+      picture->options.view = parse_snapshot_view(arguments.view.empty() ? "auto" : arguments.view);
       picture->options.focus =
           parse_snapshot_focus(arguments.focus.empty() ? "auto" : arguments.focus);
       picture->options.y_up = arguments.up == "y";
     }
-    write_pictures_png(arguments.before_after, {before, after});
+    const PicturesDrawn drawn = write_pictures_png(arguments.before_after, {before, after});
+    picture_view = (before.options.view.automatic ? "auto -> " : "") + to_string(drawn.view);
   }
   warn_about_reader(in, file.info);
   const WrittenOutput& written = file.written;
@@ -217,6 +219,9 @@ int run_repair(RepairArguments& arguments) {
                    "OBJ or OFF.\n";
     }
   }
+  if (!picture_view.empty())
+    summary << "before/after picture " << arguments.before_after << ": view " << picture_view
+            << "\n";
   return kOk;
 }
 

@@ -20,7 +20,7 @@ namespace {
 
 struct SnapshotArguments {
   std::string file, out;
-  std::string view = "iso";
+  std::string view = "auto";
   std::string focus = "auto";
   std::string up = "z";
   SnapshotOptions options;
@@ -62,7 +62,8 @@ int run_snapshot(const SnapshotArguments& arguments) {
               << " has no legend\n";
   }
   std::cout << path << " -> " << out << " (" << options.size << "x" << options.size << ", view "
-            << to_string(options.view) << (options.y_up ? ", y up" : "")
+            << (options.view.automatic ? "auto -> " : "") << to_string(snapshot.view)
+            << (options.y_up ? ", y up" : "")
             << "): " << counted(report.singular_edges.size(), "singular edge") << ", "
             << counted(report.num_singular_vertices(), "singular vertex") << ", "
             << counted(report.boundary_edges.size(), "boundary edge") << "; red pixels "

@@ -3,26 +3,72 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cctype>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace meshbridge::cli {
 
+namespace {
+
+std::string lower(std::string text) {
+  for (char& c : text)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+}  // namespace
+
 SnapshotView parse_snapshot_view(const std::string& text) {
-  if (text == "iso")
-    return SnapshotView::iso;
-  if (text == "x")
-    return SnapshotView::x;
-  if (text == "y")
-    return SnapshotView::y;
-  if (text == "z")
-    return SnapshotView::z;
-  throw std::invalid_argument("view must be iso, x, y or z, got '" + text + "'");
+  const std::string name = lower(text);
+  if (name == "auto")
+    return SnapshotView::automatic_view();
+  if (name == "iso")
+    return SnapshotView::iso();
+  // Signed axes: "x", "+x", "-x+y+z"; each axis at most once, a sign before all but a lone one.
+  SnapshotView view{false, 0, 0, 0};
+  std::size_t i = 0, axes = 0;
+  bool bare = false;
+  while (i < name.size()) {
+    int sign = 1;
+    if (name[i] == '+' || name[i] == '-')
+      sign = name[i++] == '-' ? -1 : 1;
+    else
+      bare = true;
+    int* axis = nullptr;
+    if (i < name.size() && name[i] >= 'x' && name[i] <= 'z')
+      axis = name[i] == 'x' ? &view.x : name[i] == 'y' ? &view.y : &view.z;
+    if (axis == nullptr || *axis != 0) {
+      axes = 0;
+      break;
+    }
+    *axis = sign;
+    ++i, ++axes;
+  }
+  if ((axes == 1 || (axes == 3 && !bare)) && view.is_valid())
+    return view;
+  throw std::invalid_argument(
+      "view must be auto, iso, x, y, z, -x, -y, -z or a corner such as "
+      "-x+y+z, got '" +
+      text + "'");
 }
 
 void add_view_options(CLI::App& command, std::string& view, std::string& focus, std::string& up) {
   command
-      .add_option("--view", view, "look from: iso (above a corner), x, y or z (along that axis)")
-      ->transform(CLI::IsMember({"iso", "x", "y", "z"}, CLI::ignore_case));
+      .add_option("--view", view,
+                  "look from: auto (default) = of iso, the other seven corners and the six "
+                  "axes, the view that shows the most defect pixels; iso (above the +x+y "
+                  "corner); x, y, z, -x, -y, -z (along that axis); or a corner such as -x+y+z")
+      ->transform(CLI::Validator(
+          [](std::string& text) {
+            try {
+              text = to_string(parse_snapshot_view(text));
+              return std::string();
+            } catch (const std::invalid_argument&) {
+              return text + " is not auto, iso, x, y, z, -x, -y, -z or a corner such as -x+y+z";
+            }
+          },
+          "VIEW"));
   command
       .add_option("--focus", focus,
                   "auto (default) = zoom toward the defects when they are small, the whole "
@@ -45,18 +91,20 @@ SnapshotFocus parse_snapshot_focus(const std::string& text) {
   throw std::invalid_argument("focus must be auto, whole or defects, got '" + text + "'");
 }
 
-const char* to_string(SnapshotView view) {
-  switch (view) {
-    case SnapshotView::iso:
-      return "iso";
-    case SnapshotView::x:
-      return "x";
-    case SnapshotView::y:
-      return "y";
-    case SnapshotView::z:
-      return "z";
+std::string to_string(const SnapshotView& view) {
+  if (view.automatic)
+    return "auto";
+  if (view == SnapshotView::iso())
+    return "iso";
+  const bool axis = std::abs(view.x) + std::abs(view.y) + std::abs(view.z) == 1;
+  std::string name;
+  const char* letters = "xyz";
+  const int signs[] = {view.x, view.y, view.z};
+  for (int i = 0; i < 3; ++i) {
+    if (signs[i] != 0)
+      name += std::string(signs[i] < 0 ? "-" : (axis ? "" : "+")) + letters[i];
   }
-  throw std::invalid_argument("unknown snapshot view");
+  return name;
 }
 
 }  // namespace meshbridge::cli

@@ -11,7 +11,10 @@ namespace meshbridge::cli {
 ZBufferCanvas::ZBufferCanvas(int width, int height, const QColor& background)
     : image_(width, height, QImage::Format_ARGB32),
       depth_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height),
-             -std::numeric_limits<float>::infinity()) {
+             -std::numeric_limits<float>::infinity()),
+      background_(background.rgb()),
+      width_(width),
+      height_(height) {
   if (image_.isNull())
     throw std::bad_alloc();
   image_.fill(background);
@@ -33,6 +36,8 @@ void ZBufferCanvas::fill_triangle(const CanvasPoint& a, const CanvasPoint& b, co
     for (int y = y0; y <= y1; ++y) {
       QRgb* row = reinterpret_cast<QRgb*>(image_.scanLine(y));
       float* depth_row = depth_.data() + static_cast<std::size_t>(y) * width;
+      float* far_row =
+          farthest_.empty() ? nullptr : farthest_.data() + static_cast<std::size_t>(y) * width;
       const double py = y + 0.5;
       for (int x = x0; x <= x1; ++x) {
         const double px = x + 0.5;
@@ -48,6 +53,8 @@ void ZBufferCanvas::fill_triangle(const CanvasPoint& a, const CanvasPoint& b, co
           depth_row[x] = depth;
           row[x] = color;
         }
+        if (far_row != nullptr && depth < far_row[x])
+          far_row[x] = depth;
       }
     }
   }
@@ -62,28 +69,55 @@ void ZBufferCanvas::fill_triangle(const CanvasPoint& a, const CanvasPoint& b, co
       stored = depth;
       reinterpret_cast<QRgb*>(image_.scanLine(y))[x] = color;
     }
+    if (!farthest_.empty()) {
+      float& far = farthest_[static_cast<std::size_t>(y) * width + x];
+      far = std::min(far, depth);
+    }
   }
+}
+
+void ZBufferCanvas::keep_farthest() {
+  farthest_.assign(depth_.size(), std::numeric_limits<float>::infinity());
+}
+
+ZBufferCanvas ZBufferCanvas::opposite(QRgb color) const {
+  const int width = image_.width(), height = image_.height();
+  ZBufferCanvas other(width, height, QColor::fromRgba(background_));
+  for (int y = 0; y < height; ++y) {
+    QRgb* row = reinterpret_cast<QRgb*>(other.image_.scanLine(y));
+    const std::size_t start = static_cast<std::size_t>(y) * width;
+    for (int x = 0; x < width; ++x) {
+      const float far =
+          farthest_.empty() ? std::numeric_limits<float>::infinity() : farthest_[start + x];
+      if (far < std::numeric_limits<float>::infinity()) {
+        other.depth_[start + (width - 1 - x)] = -far;
+        row[width - 1 - x] = color;
+      }
+    }
+  }
+  return other;
 }
 
 bool ZBufferCanvas::visible(double x, double y, double depth, double tolerance) const {
   const int px = static_cast<int>(std::floor(x)), py = static_cast<int>(std::floor(y));
-  if (px < 0 || py < 0 || px >= image_.width() || py >= image_.height())
+  const int width = width_, height = height_;  // QImage's accessors are calls through the PLT
+  if (px < 0 || py < 0 || px >= width || py >= height)
     return false;
   // The farthest surface in the 3x3 pixels around: an edge on a crease or silhouette lies
   // between pixel centres, where either neighbouring face (or the background) owns a pixel.
   float farthest = std::numeric_limits<float>::infinity();
-  for (int qy = std::max(0, py - 1); qy <= std::min(image_.height() - 1, py + 1); ++qy) {
-    for (int qx = std::max(0, px - 1); qx <= std::min(image_.width() - 1, px + 1); ++qx)
-      farthest = std::min(farthest, depth_[static_cast<std::size_t>(qy) * image_.width() + qx]);
+  for (int qy = std::max(0, py - 1); qy <= std::min(height - 1, py + 1); ++qy) {
+    for (int qx = std::max(0, px - 1); qx <= std::min(width - 1, px + 1); ++qx)
+      farthest = std::min(farthest, depth_[static_cast<std::size_t>(qy) * width + qx]);
   }
   return depth + tolerance >= farthest;
 }
 
 void ZBufferCanvas::stamp(double x, double y, double radius, QRgb color, double opacity) {
   const int x0 = std::max(0, static_cast<int>(std::floor(x - radius)));
-  const int x1 = std::min(image_.width() - 1, static_cast<int>(std::floor(x + radius)));
+  const int x1 = std::min(width_ - 1, static_cast<int>(std::floor(x + radius)));
   const int y0 = std::max(0, static_cast<int>(std::floor(y - radius)));
-  const int y1 = std::min(image_.height() - 1, static_cast<int>(std::floor(y + radius)));
+  const int y1 = std::min(height_ - 1, static_cast<int>(std::floor(y + radius)));
   const double limit = std::max(radius * radius, 0.25);
   for (int py = y0; py <= y1; ++py) {
     QRgb* row = reinterpret_cast<QRgb*>(image_.scanLine(py));
@@ -117,7 +151,7 @@ void ZBufferCanvas::draw_line(const CanvasPoint& a, const CanvasPoint& b, double
       stamp(x, y, width / 2, visible_color, opacity);
     } else if (qAlpha(hidden_color) != 0) {
       const int px = static_cast<int>(std::floor(x)), py = static_cast<int>(std::floor(y));
-      if (px >= 0 && py >= 0 && px < image_.width() && py < image_.height())
+      if (px >= 0 && py >= 0 && px < width_ && py < height_)
         reinterpret_cast<QRgb*>(image_.scanLine(py))[px] = hidden_color;
     }
   }

@@ -36,6 +36,16 @@ class ZBufferCanvas {
   //! A filled disc of `radius` pixels, where its centre is not behind the surface.
   void draw_dot(const CanvasPoint& centre, double radius, QRgb color, double tolerance);
 
+  //! From now on fill_triangle also keeps the farthest depth of every pixel (at +infinity where
+  //! nothing is), for opposite().
+  void keep_farthest();
+  //! The canvas seen from the opposite side of the same orthographic camera: mirrored left to
+  //! right (pixel x to width - 1 - x; a point at x to width - x), the farthest depths kept since
+  //! keep_farthest(), negated, as its depths, every pixel they cover `color`, the rest the
+  //! background. What fill_triangle would have drawn of the mirrored triangles in one colour.
+  //! \pre keep_farthest() was called before the triangles were filled
+  ZBufferCanvas opposite(QRgb color) const;
+
   QImage& image() { return image_; }
 
  private:
@@ -44,6 +54,9 @@ class ZBufferCanvas {
 
   QImage image_;
   std::vector<float> depth_;
+  std::vector<float> farthest_;  //!< empty unless keep_farthest()
+  QRgb background_;
+  int width_, height_;
 };
 
 }  // namespace meshbridge::cli

@@ -772,7 +772,7 @@ snapshot_errors)
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --size 8
   expect_in "$work/err" "--size: Value 8 not in range 16 to 8192"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.png" --view top
-  expect_in "$work/err" "--view: top not in {iso,x,y,z}"
+  expect_in "$work/err" "--view: top is not auto, iso, x, y, z, -x, -y, -z or a corner such as -x+y+z"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj" "$work/a.jpg"
   expect_in "$work/err" "name it .png"
   expect_exit 2 "$mb" snapshot "$models/twocubes.obj"
@@ -803,7 +803,7 @@ arguments)
   done
   expect_exit 0 "$mb" snapshot --help
   expect_in "$work/out" "--size INT:INT in [16 - 8192]=800"
-  expect_in "$work/out" "--view TEXT:{iso,x,y,z}=iso"
+  expect_in "$work/out" "--view TEXT:VIEW=auto"
   expect_exit 0 "$mb" batch --help
   for option in "--format TEXT:{obj,off,ply,stl,3mf}" "--weld TEXT:NUMBER>=0|auto=auto" --json --quiet --progress --in-place --resume "--jobs"; do
     expect_in "$work/out" "$option"
@@ -1011,10 +1011,10 @@ messages)
 snapshot_views)
   # --focus defects zooms in: prisms24's defects span the model, the hole of cube_with_hole does
   # not, so its green rim gets longer (more green pixels) when zoomed.
-  expect_exit 1 "$mb" snapshot "$models/cube_with_hole.obj" "$work/whole.png" --size 400
+  expect_exit 1 "$mb" snapshot "$models/cube_with_hole.obj" "$work/whole.png" --size 400 --view iso
   expect_in "$work/out" "cube_with_hole.obj ->"
   whole=$(pixels "$work/out" green)
-  expect_exit 1 "$mb" snapshot "$models/cube_with_hole.obj" "$work/zoom.png" --size 400 --focus defects
+  expect_exit 1 "$mb" snapshot "$models/cube_with_hole.obj" "$work/zoom.png" --size 400 --focus defects --view iso
   zoom=$(pixels "$work/out" green)
   [ "$zoom" -gt "$whole" ] 2>/dev/null || fail "--focus defects did not zoom: $whole -> $zoom green"
   [ "$(pixels "$work/out" red)" = 0 ] || fail "red pixels for cube_with_hole"
@@ -1069,7 +1069,7 @@ snapshot_views)
       convert "$1" -crop "$2" +repage -fuzz 18% -fill black +opaque 'rgb(0,160,0)' \
         -fill white -opaque 'rgb(0,160,0)' -format '%[fx:round(mean*w*h)]' info:
     }
-    expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj" --before-after "$work/hw.png"
+    expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj" --before-after "$work/hw.png" --view iso
     expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj" --before-after "$work/hz.png" --view z --focus defects
     whole=$(green_in "$work/hw.png" 800x800+0+0)
     zoom=$(green_in "$work/hz.png" 800x800+0+0)
@@ -1084,6 +1084,72 @@ snapshot_views)
     [ "$(green_in "$work/upright.png" 800x200+0+0)" -gt 50 ] 2>/dev/null || fail "--up y: the strip does not stand"
     expect_exit 0 "$mb" repair "$work/strip.obj" "$work/s.obj" --before-after "$work/sba.png" --view x --up y
     [ "$(green_in "$work/sba.png" 800x200+0+0)" -gt 50 ] 2>/dev/null || fail "--before-after --up y"
+  fi
+  # --view auto (the default) looks from where the defects show. A unit box with a fin on its
+  # back vertical edge (x = y = 0): iso (from +x+y+z) sees only the dot at the edge's top end;
+  # auto picks the side view from +x, where the red edge and the fin's green rim show.
+  printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nv -0.3 -0.3 0.5\n%s\n' \
+    'f 1 4 3 2
+f 5 6 7 8
+f 1 2 6 5
+f 2 3 7 6
+f 3 4 8 7
+f 4 1 5 8
+f 1 5 9' >"$work/finbox.obj"
+  defect_pixels() { echo $(($(pixels "$1" red) + $(pixels "$1" green))); }
+  expect_exit 1 "$mb" snapshot "$work/finbox.obj" "$work/fin_iso.png" --size 400 --view iso
+  iso=$(defect_pixels "$work/out")
+  expect_exit 1 "$mb" snapshot "$work/finbox.obj" "$work/fin_auto.png" --size 400
+  expect_in "$work/out" "(400x400, view auto -> x):"
+  auto=$(defect_pixels "$work/out")
+  [ "$(pixels "$work/out" green)" -gt 100 ] 2>/dev/null || fail "auto: the fin's green rim is not seen"
+  [ "$auto" -gt $((10 * iso)) ] 2>/dev/null || fail "auto shows $auto defect pixels, iso $iso"
+  expect_exit 1 "$mb" snapshot "$work/finbox.obj" "$work/fin_x.png" --size 400 --view X
+  [ "$(defect_pixels "$work/out")" = "$auto" ] || fail "auto -> x differs from --view x"
+  # The same box written y-up (file y = model z): with --up y the same view, the same pixels.
+  awk '/^v /{print "v", $2, $4, -$3; next} {print}' "$work/finbox.obj" >"$work/finbox_y.obj"
+  expect_exit 1 "$mb" snapshot "$work/finbox_y.obj" "$work/fin_y.png" --size 400 --up y
+  expect_in "$work/out" "(400x400, view auto -> x, y up):"
+  [ "$(defect_pixels "$work/out")" = "$auto" ] || fail "--up y: $(cat "$work/out")"
+  # Other views by name; a name printed by auto is taken back by --view.
+  expect_exit 1 "$mb" snapshot "$work/finbox.obj" "$work/fin_c.png" --size 64 --view -x-y+z
+  expect_in "$work/out" "(64x64, view -x-y+z):"
+  expect_exit 1 "$mb" snapshot "$work/finbox.obj" "$work/fin_c.png" --size 64 --view=+X+y+z
+  expect_in "$work/out" "(64x64, view iso):"
+  expect_exit 2 "$mb" snapshot "$work/finbox.obj" "$work/fin_c.png" --view=+x+y
+  expect_in "$work/err" "--view: +x+y is not auto, iso, x, y, z, -x, -y, -z or a corner such as -x+y+z"
+  # Where iso already shows the most, auto keeps it: prisms24.
+  expect_exit 1 "$mb" snapshot "$models/prisms24.obj" "$work/p_iso.png" --size 300 --view iso
+  iso=$(defect_pixels "$work/out")
+  expect_exit 1 "$mb" snapshot "$models/prisms24.obj" "$work/p_auto.png" --size 300
+  expect_in "$work/out" "(300x300, view auto -> iso):"
+  [ "$(defect_pixels "$work/out")" = "$iso" ] || fail "prisms24: auto is not iso"
+  # Real files, each with defects iso hides or shows small: a printer (Cura's Weedo X40: the
+  # bed's underside), the UR20 forearm (a seam seen from above), a cycloidal drive (pinch
+  # vertices under its base). Auto shows strictly more defect pixels than iso.
+  data="$models/../../tests/data"
+  for file in realworld2/cura_weedo_x40.3mf realworld2/ur_ur20_forearm_collision.stl \
+    realworld/trimesh_cycloidal.ply; do
+    expect_exit 1 "$mb" snapshot "$data/$file" "$work/rw_iso.png" --size 400 --view iso
+    iso=$(defect_pixels "$work/out")
+    expect_exit 1 "$mb" snapshot "$data/$file" "$work/rw_auto.png" --size 400
+    expect_in "$work/out" "view auto -> "
+    auto=$(defect_pixels "$work/out")
+    [ "$auto" -gt "$iso" ] 2>/dev/null || fail "$file: auto $auto defect pixels, iso $iso"
+  done
+  if command -v convert >/dev/null; then
+    # The counts are those of the PNG.
+    [ "$(red_in "$work/fin_auto.png" 400x400+0+0)" -gt 300 ] 2>/dev/null || fail "fin_auto.png: no red"
+    [ "$(green_in "$work/fin_auto.png" 400x400+0+0)" -gt 100 ] 2>/dev/null || fail "fin_auto.png: no green"
+    [ "$(green_in "$work/fin_iso.png" 400x400+0+0)" = 0 ] || fail "fin_iso.png: green"
+    # repair --before-after takes the view auto chooses for the input, both halves alike.
+    expect_exit 0 "$mb" repair "$work/finbox.obj" "$work/f.obj" --before-after "$work/fba.png"
+    expect_in "$work/out" "before/after picture $work/fba.png: view auto -> x"
+    [ "$(red_in "$work/fba.png" 800x800+0+0)" -gt 300 ] 2>/dev/null || fail "fba.png: no red on the left"
+    [ "$(green_in "$work/fba.png" 800x800+802+0)" -gt 100 ] 2>/dev/null || fail "fba.png: no green on the right"
+    expect_exit 0 "$mb" repair "$work/finbox.obj" "$work/f.obj" --before-after "$work/fba.png" --view iso
+    expect_in "$work/out" "before/after picture $work/fba.png: view iso"
+    [ "$(red_in "$work/fba.png" 800x800+0+0)" -lt 100 ] 2>/dev/null || fail "fba.png, iso: the fin is seen"
   fi
   expect_exit 2 "$mb" repair "$models/prisms24.obj" "$work/q.obj" --view z
   expect_in "$work/err" "--view draws the --before-after picture: give --before-after PIC.png too"
