@@ -37,6 +37,8 @@ const QColor kBackground(255, 255, 255);
 const QColor kEdgeColor(192, 192, 192);
 const QColor kBoundaryColor(0, 160, 0);
 const QColor kSingularColor(220, 0, 0);
+//! Self-intersecting faces: the violet of MeshLab's Detect (plugin/crossing_faces.h).
+const QColor kCrossingColor(140, 0, 255);
 const QColor kLegendColor(0, 0, 0);
 
 //! Screen axes of an orthographic camera: `right` and `up` are orthonormal, and right x up points
@@ -192,6 +194,13 @@ QRgb shade(double cosine) {
   return qRgb(grey, grey, grey);
 }
 
+//! Violet for a self-intersecting face, shaded like shade() but never darker than 0.55 of it.
+QRgb shade_crossing(double cosine) {
+  const double k = 0.55 + 0.45 * std::min(1.0, std::abs(cosine));
+  return qRgb(static_cast<int>(std::lround(kCrossingColor.red() * k)), 0,
+              static_cast<int>(std::lround(kCrossingColor.blue() * k)));
+}
+
 //! The median on-screen length of some edges (0 for none): how dense the defects are drawn.
 template <class Edges, class PairOf>
 double median_length(const std::vector<CanvasPoint>& canvas, const Edges& edges, PairOf pair_of) {
@@ -243,9 +252,15 @@ void check_vertex(const Soup& soup, Index v) {
 
 }  // namespace
 
+bool is_violet(unsigned red, unsigned green, unsigned blue) {
+  return blue >= 100 && green <= 50 && 10 * red >= 3 * blue && 10 * red <= 8 * blue &&
+         red >= green + 40;
+}
+
 DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report,
                                     const SnapshotOptions& options, const Soup* frame_soup,
-                                    const DefectReport* frame_report) {
+                                    const DefectReport* frame_report,
+                                    const SelfIntersectionReport* crossings) {
   if (frame_soup != nullptr && frame_report == nullptr)
     throw std::invalid_argument("draw_defect_snapshot: frame_soup without frame_report");
   if (options.size < SnapshotOptions::kMinSize || options.size > SnapshotOptions::kMaxSize) {
@@ -268,6 +283,17 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
     check_vertex(soup, v);
   for (Index v : report.pinch_vertices)
     check_vertex(soup, v);
+  std::vector<char> crossing(crossings ? soup.num_faces() : 0, 0);
+  if (crossings != nullptr) {
+    for (Index f : crossings->faces) {
+      if (f >= soup.num_faces()) {
+        throw std::invalid_argument("draw_defect_snapshot: the self-intersections name face " +
+                                    std::to_string(f) + " but the soup has " +
+                                    std::to_string(soup.num_faces()) + " faces");
+      }
+      crossing[f] = 1;
+    }
+  }
 
   const double size = options.size;
   const double pen_scale = std::max(1.0, size / 800);
@@ -275,10 +301,11 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
   DefectSnapshot result;
 
   // The legend: one line at the top, shrunk until it fits the width.
-  const QString counts =
-      QString::fromStdString(counted(report.singular_edges.size(), "singular edge") + ", " +
-                             counted(report.num_singular_vertices(), "singular vertex") + ", " +
-                             counted(report.boundary_edges.size(), "boundary edge"));
+  const QString counts = QString::fromStdString(
+      counted(report.singular_edges.size(), "singular edge") + ", " +
+      counted(report.num_singular_vertices(), "singular vertex") + ", " +
+      counted(report.boundary_edges.size(), "boundary edge") +
+      (crossings ? ", " + counted(crossings->faces.size(), "self-intersecting face") : ""));
   const QString legend = options.title.empty()
                              ? counts
                              : QString::fromLocal8Bit(options.title.c_str()) + ": " + counts;
@@ -318,7 +345,8 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
                       (p[0] - q[0]) * (p[1] + q[1]));
     }
     const double length = normal.norm();
-    const QRgb color = shade(length > 0 ? (normal | light) / length : 0);
+    const double cosine = length > 0 ? (normal | light) / length : 0;
+    const QRgb color = crossing.empty() || !crossing[f] ? shade(cosine) : shade_crossing(cosine);
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
       canvas.fill_triangle(canvas_points[polygon[0]], canvas_points[polygon[i]],
                            canvas_points[polygon[i + 1]], color);
@@ -379,6 +407,7 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
     for (int x = 0; x < result.image.width(); ++x) {
       result.red_pixels += near(row[x], kSingularColor, DefectSnapshot::kColorTolerance) ? 1 : 0;
       result.green_pixels += near(row[x], kBoundaryColor, DefectSnapshot::kColorTolerance) ? 1 : 0;
+      result.violet_pixels += is_violet(qRed(row[x]), qGreen(row[x]), qBlue(row[x])) ? 1 : 0;
     }
   }
   return result;
@@ -400,6 +429,7 @@ DefectSnapshot side_by_side(const DefectSnapshot& left, const DefectSnapshot& ri
   both.legend_drawn = left.legend_drawn && right.legend_drawn;
   both.red_pixels = left.red_pixels + right.red_pixels;
   both.green_pixels = left.green_pixels + right.green_pixels;
+  both.violet_pixels = left.violet_pixels + right.violet_pixels;
   return both;
 }
 

@@ -35,7 +35,7 @@ DefectSnapshot draw(const MeshbridgePictureRequest& picture) {
   if (picture.soup == nullptr || picture.report == nullptr || picture.options == nullptr)
     throw std::invalid_argument("draw_png: a picture without soup, report or options");
   return draw_defect_snapshot(*picture.soup, *picture.report, *picture.options, picture.frame_soup,
-                              picture.frame_report);
+                              picture.frame_report, picture.crossings);
 }
 
 void draw_png(const MeshbridgePictureRequest* pictures, std::size_t count,
@@ -56,6 +56,7 @@ void draw_png(const MeshbridgePictureRequest* pictures, std::size_t count,
     result->png_size = static_cast<std::size_t>(png.size());
     result->red_pixels = drawn.red_pixels;
     result->green_pixels = drawn.green_pixels;
+    result->violet_pixels = drawn.violet_pixels;
     result->legend_drawn = drawn.legend_drawn ? 1 : 0;
     result->status = MESHBRIDGE_PICTURES_OK;
   } catch (const std::bad_alloc&) {
