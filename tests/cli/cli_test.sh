@@ -904,6 +904,7 @@ check_self_intersections)
   [ "$(json_field "$work/out" self_intersections.face_pairs)" = 0 ] || fail "repaired twocubes"
   expect_exit 0 "$mb" explain self-intersection
   expect_in "$work/out" "shared"
+  expect_in "$work/out" "Shown violet: \`snapshot --self-intersections\` and MeshLab's Detect."
   ;;
 snapshot_self_intersections)
   # snapshot --self-intersections: the 6 crossing faces violet, counted by the drawing and by
