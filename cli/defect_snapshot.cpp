@@ -38,12 +38,21 @@ const QColor kBackground(255, 255, 255);
 const QColor kEdgeColor(192, 192, 192);
 const QColor kBoundaryColor(0, 160, 0);
 const QColor kSingularColor(220, 0, 0);
+//! Self-intersecting faces: the violet of MeshLab's Detect (plugin/crossing_faces.h).
+const QColor kCrossingColor(140, 0, 255);
 const QColor kLegendColor(0, 0, 0);
 
 //! Light grey for a face whose unit normal makes `cosine` with the light (both sides lit).
 QRgb shade(double cosine) {
   const int grey = static_cast<int>(std::lround(95 + 140 * std::min(1.0, std::abs(cosine))));
   return qRgb(grey, grey, grey);
+}
+
+//! Violet for a self-intersecting face, shaded like shade() but never darker than 0.55 of it.
+QRgb shade_crossing(double cosine) {
+  const double k = 0.55 + 0.45 * std::min(1.0, std::abs(cosine));
+  return qRgb(static_cast<int>(std::lround(kCrossingColor.red() * k)), 0,
+              static_cast<int>(std::lround(kCrossingColor.blue() * k)));
 }
 
 //! The median on-screen length of some edges (0 for none): how dense the defects are drawn.
@@ -99,9 +108,11 @@ void check_vertex(const Soup& soup, Index v) {
 const QRgb kFlat = qRgb(165, 165, 165);
 
 //! Projects the vertices of `soup` in `frame` into `canvas_points` (resized) and fills its
-//! surface into `canvas`, shaded, or all kFlat when `counting`.
+//! surface into `canvas`, shaded, or all kFlat when `counting`; faces marked in `crossing` (empty,
+//! or one flag per face) shaded violet.
 void draw_surface(const Soup& soup, const Frame& frame, bool counting,
-                  std::vector<CanvasPoint>& canvas_points, ZBufferCanvas& canvas) {
+                  const std::vector<char>& crossing, std::vector<CanvasPoint>& canvas_points,
+                  ZBufferCanvas& canvas) {
   canvas_points.resize(soup.num_vertices());
   for (std::size_t v = 0; v < soup.num_vertices(); ++v)
     canvas_points[v] = frame.to_canvas(soup.positions[v]);
@@ -120,7 +131,8 @@ void draw_surface(const Soup& soup, const Frame& frame, bool counting,
                         (p[0] - q[0]) * (p[1] + q[1]));
       }
       const double length = normal.norm();
-      color = shade(length > 0 ? (normal | light) / length : 0);
+      const double cosine = length > 0 ? (normal | light) / length : 0;
+      color = crossing.empty() || !crossing[f] ? shade(cosine) : shade_crossing(cosine);
     }
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
       canvas.fill_triangle(canvas_points[polygon[0]], canvas_points[polygon[i]],
@@ -198,6 +210,7 @@ DefectSnapshot draw_defects(const DefectReport& report,
     for (int x = 0; x < result.image.width(); ++x) {
       result.red_pixels += near(row[x], kSingularColor, DefectSnapshot::kColorTolerance) ? 1 : 0;
       result.green_pixels += near(row[x], kBoundaryColor, DefectSnapshot::kColorTolerance) ? 1 : 0;
+      result.violet_pixels += is_violet(qRed(row[x]), qGreen(row[x]), qBlue(row[x])) ? 1 : 0;
     }
   }
   result.red_pixels *= red_stride;
@@ -207,9 +220,15 @@ DefectSnapshot draw_defects(const DefectReport& report,
 
 }  // namespace
 
+bool is_violet(unsigned red, unsigned green, unsigned blue) {
+  return blue >= 100 && green <= 50 && 10 * red >= 3 * blue && 10 * red <= 8 * blue &&
+         red >= green + 40;
+}
+
 DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report,
                                     const SnapshotOptions& options, const Soup* frame_soup,
-                                    const DefectReport* frame_report) {
+                                    const DefectReport* frame_report,
+                                    const SelfIntersectionReport* crossings) {
   if (frame_soup != nullptr && frame_report == nullptr)
     throw std::invalid_argument("draw_defect_snapshot: frame_soup without frame_report");
   if (options.size < SnapshotOptions::kMinSize || options.size > SnapshotOptions::kMaxSize) {
@@ -234,15 +253,27 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
     check_vertex(soup, v);
   for (Index v : report.pinch_vertices)
     check_vertex(soup, v);
+  std::vector<char> crossing(crossings ? soup.num_faces() : 0, 0);
+  if (crossings != nullptr) {
+    for (Index f : crossings->faces) {
+      if (f >= soup.num_faces()) {
+        throw std::invalid_argument("draw_defect_snapshot: the self-intersections name face " +
+                                    std::to_string(f) + " but the soup has " +
+                                    std::to_string(soup.num_faces()) + " faces");
+      }
+      crossing[f] = 1;
+    }
+  }
 
   const double size = options.size;
   const double border = size * options.margin;
 
   // The legend: one line at the top, shrunk until it fits the width.
-  const QString counts =
-      QString::fromStdString(counted(report.singular_edges.size(), "singular edge") + ", " +
-                             counted(report.num_singular_vertices(), "singular vertex") + ", " +
-                             counted(report.boundary_edges.size(), "boundary edge"));
+  const QString counts = QString::fromStdString(
+      counted(report.singular_edges.size(), "singular edge") + ", " +
+      counted(report.num_singular_vertices(), "singular vertex") + ", " +
+      counted(report.boundary_edges.size(), "boundary edge") +
+      (crossings ? ", " + counted(crossings->faces.size(), "self-intersecting face") : ""));
   const QString legend = options.title.empty()
                              ? counts
                              : QString::fromLocal8Bit(options.title.c_str()) + ": " + counts;
@@ -271,7 +302,7 @@ DefectSnapshot draw_defect_snapshot(const Soup& soup, const DefectReport& report
     along.view = view;
     const Frame frame = make_frame(frame_soup ? *frame_soup : soup, placement, along, area);
     ZBufferCanvas canvas(options.size, options.size, kBackground);
-    draw_surface(soup, frame, false, canvas_points, canvas);
+    draw_surface(soup, frame, false, crossing, canvas_points, canvas);
     DefectSnapshot result =
         draw_defects(report, canvas_points, frame.scale, options.size, false, canvas);
     result.view = view;
@@ -345,7 +376,7 @@ std::vector<std::size_t> detail::count_defect_pixels(const Soup& soup, const Def
         ZBufferCanvas canvas(options.size, options.size, kBackground);
         if (j != views.size())
           canvas.keep_farthest();
-        draw_surface(soup, frame, true, points, canvas);
+        draw_surface(soup, frame, true, {}, points, canvas);
         std::optional<ZBufferCanvas> back;
         if (j != views.size())
           back.emplace(canvas.opposite(kFlat));
@@ -394,6 +425,7 @@ DefectSnapshot side_by_side(const DefectSnapshot& left, const DefectSnapshot& ri
   both.view = left.view;
   both.red_pixels = left.red_pixels + right.red_pixels;
   both.green_pixels = left.green_pixels + right.green_pixels;
+  both.violet_pixels = left.violet_pixels + right.violet_pixels;
   return both;
 }
 

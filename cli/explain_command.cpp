@@ -104,7 +104,8 @@ const std::vector<Entry> kEntries = {
      "assembly pushed into each other, or a fold. `check --self-intersections` counts the\n"
      "face pairs [f0-f1], the faces in them, and the pairs of components (shells) that cross.\n"
      "Faces that only touch at a vertex or an edge they share (compared by position, so the\n"
-     "copies repair splits count as shared) are not counted. Repair does not resolve them."},
+     "copies repair splits count as shared) are not counted. Repair does not resolve them.\n"
+     "Shown violet: `snapshot --self-intersections` and MeshLab's Detect."},
     {"detached",
      "Last resort: faces cut loose (given their own vertices) because OpenMesh could not\n"
      "represent them otherwise. Normally 0."},

@@ -115,8 +115,8 @@ PicturesDrawn write_pictures_png(const std::string& path, const std::vector<Pict
   const MeshbridgePicturesApi& api = pictures_api();
   std::vector<MeshbridgePictureRequest> requests;
   for (const Picture& picture : pictures) {
-    requests.push_back(
-        {picture.soup, picture.report, &picture.options, picture.frame_soup, picture.frame_report});
+    requests.push_back({picture.soup, picture.report, &picture.options, picture.frame_soup,
+                        picture.frame_report, picture.crossings});
   }
   ResultGuard guard(api);
   MeshbridgePictureResult& result = guard.result();
@@ -137,6 +137,7 @@ PicturesDrawn write_pictures_png(const std::string& path, const std::vector<Pict
   PicturesDrawn drawn;
   drawn.red_pixels = result.red_pixels;
   drawn.green_pixels = result.green_pixels;
+  drawn.violet_pixels = result.violet_pixels;
   drawn.legend_drawn = result.legend_drawn != 0;
   drawn.view = result.view;
   return drawn;

@@ -4,6 +4,7 @@
 // found and loaded on the first picture only, so commands that draw nothing never load Qt.
 
 #include "meshbridge/defect_report.h"
+#include "meshbridge/self_intersections.h"
 #include "meshbridge/soup.h"
 
 #include "snapshot_options.h"
@@ -24,20 +25,23 @@ class PicturesUnavailable : public std::runtime_error {
 
 //! One picture for write_pictures_png: `soup` with its defects `report`, drawn as `options` say;
 //! with `frame_soup` and `frame_report` (both or neither) framed as they would be. The pointers
-//! are not owned and must outlive the call.
+//! are not owned and must outlive the call. With `crossings` (find_self_intersections(*soup)) its
+//! faces are drawn violet.
 struct Picture {
   const Soup* soup = nullptr;
   const DefectReport* report = nullptr;
   SnapshotOptions options;
   const Soup* frame_soup = nullptr;
   const DefectReport* frame_report = nullptr;
+  const SelfIntersectionReport* crossings = nullptr;
 };
 
 //! What write_pictures_png drew (see DefectSnapshot in cli/defect_snapshot.h).
 struct PicturesDrawn {
-  std::size_t red_pixels = 0;    //!< summed over the pictures
-  std::size_t green_pixels = 0;  //!< summed over the pictures
-  bool legend_drawn = false;     //!< every picture has its legend
+  std::size_t red_pixels = 0;     //!< summed over the pictures
+  std::size_t green_pixels = 0;   //!< summed over the pictures
+  std::size_t violet_pixels = 0;  //!< summed over the pictures (self-intersecting faces)
+  bool legend_drawn = false;      //!< every picture has its legend
   //! The view of the first picture as drawn: the one chosen when its options said automatic (a
   //! later picture whose view is automatic is drawn along it too).
   SnapshotView view = SnapshotView::iso();

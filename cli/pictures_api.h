@@ -12,6 +12,7 @@
 // failure comes back as a status and a message.
 
 #include "meshbridge/defect_report.h"
+#include "meshbridge/self_intersections.h"
 #include "meshbridge/soup.h"
 
 #include "snapshot_options.h"
@@ -21,7 +22,7 @@
 extern "C" {
 
 //! The version of everything in this header; bumped whenever a struct or a function changes.
-#define MESHBRIDGE_PICTURES_ABI 2
+#define MESHBRIDGE_PICTURES_ABI 3
 //! The name of the one symbol the module exports (a MeshbridgePicturesEntry).
 #define MESHBRIDGE_PICTURES_ENTRY "meshbridge_pictures_api"
 
@@ -35,6 +36,8 @@ struct MeshbridgePictureRequest {
   //! pair, so both pictures line up); both set or both null.
   const meshbridge::Soup* frame_soup;
   const meshbridge::DefectReport* frame_report;
+  //! Null, or find_self_intersections(*soup): its faces are drawn violet.
+  const meshbridge::SelfIntersectionReport* crossings;
 };
 
 //! How draw_png ended.
@@ -47,13 +50,14 @@ enum MeshbridgePicturesStatus {
 
 //! What draw_png made. Filled by the module; give it back to `release` once read.
 struct MeshbridgePictureResult {
-  int status;                //!< a MeshbridgePicturesStatus
-  char* error;               //!< NUL-terminated message unless status is OK, else null
-  unsigned char* png;        //!< the PNG file's bytes when status is OK, else null
-  std::size_t png_size;      //!< bytes at `png`
-  std::size_t red_pixels;    //!< DefectSnapshot::red_pixels, summed over the pictures
-  std::size_t green_pixels;  //!< DefectSnapshot::green_pixels, summed over the pictures
-  int legend_drawn;          //!< 1 when every picture has its legend (text renders here)
+  int status;                 //!< a MeshbridgePicturesStatus
+  char* error;                //!< NUL-terminated message unless status is OK, else null
+  unsigned char* png;         //!< the PNG file's bytes when status is OK, else null
+  std::size_t png_size;       //!< bytes at `png`
+  std::size_t red_pixels;     //!< DefectSnapshot::red_pixels, summed over the pictures
+  std::size_t green_pixels;   //!< DefectSnapshot::green_pixels, summed over the pictures
+  std::size_t violet_pixels;  //!< DefectSnapshot::violet_pixels, summed over the pictures
+  int legend_drawn;           //!< 1 when every picture has its legend (text renders here)
   //! The view the first picture was drawn along (chosen there when its options asked for auto).
   meshbridge::cli::SnapshotView view;
 };

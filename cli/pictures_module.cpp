@@ -39,7 +39,7 @@ DefectSnapshot draw(const MeshbridgePictureRequest& picture, const SnapshotView&
   if (options.view.automatic)
     options.view = view;
   return draw_defect_snapshot(*picture.soup, *picture.report, options, picture.frame_soup,
-                              picture.frame_report);
+                              picture.frame_report, picture.crossings);
 }
 
 void draw_png(const MeshbridgePictureRequest* pictures, std::size_t count,
@@ -61,6 +61,7 @@ void draw_png(const MeshbridgePictureRequest* pictures, std::size_t count,
     result->png_size = static_cast<std::size_t>(png.size());
     result->red_pixels = drawn.red_pixels;
     result->green_pixels = drawn.green_pixels;
+    result->violet_pixels = drawn.violet_pixels;
     result->legend_drawn = drawn.legend_drawn ? 1 : 0;
     result->view = drawn.view;
     result->status = MESHBRIDGE_PICTURES_OK;

@@ -20,6 +20,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace meshbridge::cli {
 
@@ -166,6 +167,19 @@ int run_repair(RepairArguments& arguments) {
     after.options.title = "after: " + file_name_of(out);
     after.frame_soup = &file.input;
     after.frame_report = &report.before;
+    // With --self-intersections the crossing faces are violet on both sides: the input's found
+    // here, the result's are those of the mesh written, or found again on the STL read back.
+    std::optional<SelfIntersectionReport> crossings_before, crossings_reread;
+    if (arguments.self_intersections) {
+      crossings_before = find_self_intersections(file.input);
+      before.crossings = &*crossings_before;
+      if (reread_soup) {
+        crossings_reread = find_self_intersections(file.written_soup);
+        after.crossings = &*crossings_reread;
+      } else if (file.crossings) {
+        after.crossings = &*file.crossings;
+      }
+    }
     for (Picture* picture : {&before, &after}) {
       picture->options.view = parse_snapshot_view(arguments.view.empty() ? "auto" : arguments.view);
       picture->options.focus =
@@ -305,7 +319,8 @@ void add_repair_command(CLI::App& app, int& exit_code) {
                     "and the report's self_intersections");
   command->add_option("--before-after", arguments->before_after,
                       "also draw the input and the result side by side into this PNG (as "
-                      "`snapshot` draws them, same framing)");
+                      "`snapshot` draws them, same framing; with --self-intersections the faces "
+                      "that cross are violet)");
   add_view_options(*command, arguments->view, arguments->focus, arguments->up);
   command->add_flag("--progress", arguments->progress,
                     "show the stage and a progress bar on stderr even when it is not a terminal "

@@ -8,11 +8,13 @@
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/errors.h"
 #include "meshbridge/io.h"
+#include "meshbridge/self_intersections.h"
 
 #include <CLI/CLI.hpp>
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace meshbridge::cli {
 
@@ -25,6 +27,7 @@ struct SnapshotArguments {
   std::string up = "z";
   SnapshotOptions options;
   bool progress = false;
+  bool self_intersections = false;  //!< also draw the faces that cross, violet
 };
 
 int run_snapshot(const SnapshotArguments& arguments) {
@@ -48,12 +51,16 @@ int run_snapshot(const SnapshotArguments& arguments) {
   const Soup soup = read_soup(path, &info);
   progress.stage(Stage::detect, 0);
   const DefectReport report = detect_defects(soup);
+  std::optional<SelfIntersectionReport> crossings;
+  if (arguments.self_intersections)
+    crossings = find_self_intersections(soup);
 
   progress.stage(Stage::write, 0);
   Picture picture;
   picture.soup = &soup;
   picture.report = &report;
   picture.options = options;
+  picture.crossings = crossings ? &*crossings : nullptr;
   const PicturesDrawn snapshot = write_pictures_png(out, {picture});
   progress.finish();
   warn_about_reader(path, info);
@@ -66,9 +73,15 @@ int run_snapshot(const SnapshotArguments& arguments) {
             << (options.y_up ? ", y up" : "")
             << "): " << counted(report.singular_edges.size(), "singular edge") << ", "
             << counted(report.num_singular_vertices(), "singular vertex") << ", "
-            << counted(report.boundary_edges.size(), "boundary edge") << "; red pixels "
-            << snapshot.red_pixels << ", green pixels " << snapshot.green_pixels << "\n";
-  return report.has_defects() ? kDefectsFound : kOk;
+            << counted(report.boundary_edges.size(), "boundary edge");
+  if (crossings)
+    std::cout << ", " << counted(crossings->faces.size(), "self-intersecting face");
+  std::cout << "; red pixels " << snapshot.red_pixels << ", green pixels " << snapshot.green_pixels;
+  if (crossings)
+    std::cout << ", violet pixels " << snapshot.violet_pixels;
+  std::cout << "\n";
+  const bool crossing = crossings && crossings->has_self_intersections();
+  return report.has_defects() || crossing ? kDefectsFound : kOk;
 }
 
 }  // namespace
@@ -78,12 +91,16 @@ void add_snapshot_command(CLI::App& app, int& exit_code) {
   CLI::App* command = app.add_subcommand(
       "snapshot",
       "Draw FILE with its defects into a PNG (no display needed): the surface shaded grey,\n"
-      "boundary edges green, singular edges and vertices red. Exit codes as check.");
+      "boundary edges green, singular edges and vertices red, with --self-intersections the\n"
+      "faces that cross violet. Exit codes as check.");
   command->add_option("FILE", arguments->file, "mesh to draw (.obj, .off, .ply, .stl)")->required();
   command->add_option("OUT.png", arguments->out, "PNG to write; replaced atomically")->required();
   command->add_option("--size", arguments->options.size, "width and height in pixels")
       ->check(CLI::Range(SnapshotOptions::kMinSize, SnapshotOptions::kMaxSize));
   add_view_options(*command, arguments->view, arguments->focus, arguments->up);
+  command->add_flag("--self-intersections", arguments->self_intersections,
+                    "also find the faces that cross or overlap each other (as check "
+                    "--self-intersections) and draw them violet, MeshLab's colour for them");
   command->add_flag("--progress", arguments->progress,
                     "show the stage and a progress bar on stderr even when it is not a terminal "
                     "(on a terminal it shows anyway once the work takes over a second)");

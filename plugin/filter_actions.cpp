@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "filter_actions.h"
 
+#include "crossing_faces.h"
 #include "defect_tubes.h"
 
 #include "meshbridge/close_gaps.h"
@@ -94,7 +95,20 @@ void clear_selection(CMeshO& mesh) {
   refresh_selection_counts(mesh);
 }
 
+//! The self-intersection counts, keys as in docs/report-schema.md's `self_intersections`.
+void add_crossing_counts(std::vector<FilterCount>& counts, const SelfIntersectionReport& s,
+                         std::size_t violet_faces) {
+  counts.push_back(count("self_intersections.face_pairs", s.face_pairs.size()));
+  counts.push_back(count("self_intersections.faces", s.faces.size()));
+  counts.push_back(count("self_intersections.component_pairs", s.component_pairs.size()));
+  counts.push_back(count("violet_faces", violet_faces));
+}
+
 }  // namespace
+
+bool self_intersections_by_default(std::size_t faces) {
+  return faces <= kSelfIntersectionsDefaultMaxFaces;
+}
 
 bool is_stl_file_name(const std::string& file_name) {
   return mesh_format(file_name) == MeshFormat::stl;
@@ -159,6 +173,9 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
   CMeshSoup soup = soup_from_cmesh(mesh);
   out.report = detect_defects(soup.soup);
   out.gaps = preview_close_gaps(soup.soup, options.close_gaps);
+  const bool find_crossings = options.self_intersections && self_intersections_available();
+  if (find_crossings)
+    out.crossings = find_self_intersections(soup.soup);
 
   // Nothing has changed so far; from here on only the selection, face colours and a new layer.
   if (options.colour_faces)
@@ -174,6 +191,8 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
   CMeshO& layer = host.add_defect_layer(out.label, tubes);
   out.drawn = tubes ? build_defect_tubes(soup, out.report, layer)
                     : build_defect_layer(soup, out.report, layer);
+  if (tubes && out.crossings)
+    out.violet_faces = add_crossing_faces(soup, *out.crossings, layer);
   layer.Tr = mesh.Tr;
   vcg::tri::UpdateBounding<CMeshO>::Box(layer);
   layer.svn = int(vcg::tri::UpdateSelection<CMeshO>::VertexCount(layer));
@@ -181,6 +200,13 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
   out.log = "MeshBridge defects of '" + label + "':\n";
   out.log += trimmed(to_text(out.report));
   out.log += "\n" + would_close_gaps_text(out.gaps, options.close_gaps.tolerance < 0);
+  if (out.crossings) {
+    out.log += "\n" + trimmed(to_text(*out.crossings));
+  } else {
+    out.log += options.self_intersections
+                   ? "\nself-intersections: not searched (this build has no CGAL)"
+                   : "\nself-intersections: not searched (turn on 'Find self-intersections')";
+  }
   if (options.select_faces || options.colour_faces) {
     out.log += "\n" + std::string(options.select_faces ? "Selected " : "Coloured ") +
                std::to_string(out.selection.faces) + " faces at singular edges/vertices";
@@ -191,6 +217,12 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
              " red (singular) edges, " + std::to_string(out.drawn.boundary_edges) +
              " green (boundary) edges, " + std::to_string(out.drawn.singular_vertex_markers) +
              " singular vertex markers";
+  if (out.crossings && tubes) {
+    out.log += ", " + std::to_string(out.violet_faces) + " violet (self-intersecting) faces";
+  } else if (out.crossings) {
+    out.log += "; the " + std::to_string(out.crossings->faces.size()) +
+               " self-intersecting faces are not drawn in an Edges layer";
+  }
 
   const DefectReport& r = out.report;
   std::size_t contenders = 0;
@@ -225,6 +257,8 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
       count("coloured_faces", options.colour_faces ? out.selection.faces : 0),
   };
   add_gap_counts(out.counts, out.gaps);
+  if (out.crossings)
+    add_crossing_counts(out.counts, *out.crossings, out.violet_faces);
   return out;
 }
 

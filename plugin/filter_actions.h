@@ -13,6 +13,7 @@
 
 #include "meshbridge/defect_report.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/self_intersections.h"
 
 #include <optional>
 #include <stdexcept>
@@ -63,7 +64,22 @@ struct DetectOptions {
   //! Detect reports what Repair's gap closing would weld and close with these options (it
   //! changes nothing itself). Default: the core's (automatic tolerance, T-junctions closed).
   CloseGapsOptions close_gaps;
+  //! Also find the faces that cross or overlap another face (find_self_intersections(), exact
+  //! predicates, both cores), count them, and show them in the tube layer in violet
+  //! (crossing_faces.h). It costs about as much again as the rest of Detect (meshlabserver on a
+  //! torus, two cores: +0.9 s on 0.6 s at 1M faces, +2.8 s on 3.5 s at 2M), so the parameter
+  //! defaults to it only up to kSelfIntersectionsDefaultMaxFaces faces
+  //! (self_intersections_by_default()). Default here: on.
+  bool self_intersections = true;
 };
+
+//! The largest mesh (in faces, MeshLab's triangles) for which Detect's "Find self-intersections"
+//! is on by default: 2,000,000 (Detect then takes about 3 s more on two cores).
+inline constexpr std::size_t kSelfIntersectionsDefaultMaxFaces = 2000000;
+
+//! Whether Detect finds self-intersections by default on a mesh of `faces` faces: up to
+//! kSelfIntersectionsDefaultMaxFaces.
+bool self_intersections_by_default(std::size_t faces);
 
 //! What the filters need from MeshLab's document; each adapter implements it with its API's
 //! MeshModel/MeshDocument calls.
@@ -106,10 +122,18 @@ struct DetectOutcome {
   //! What Repair's gap closing would do with `options.close_gaps` (close_gaps() on the layer;
   //! the layer itself is not changed).
   CloseGapsReport gaps;
+  //! With `options.self_intersections`: the faces (the layer's live faces, in storage order)
+  //! that cross or overlap. Absent otherwise.
+  std::optional<SelfIntersectionReport> crossings;
+  //! Faces shown in violet in the tube layer (crossing faces of nonzero area; 0 for edges).
+  std::size_t violet_faces = 0;
   //! Plain text, one line per line: the report, what gap closing would do ("gaps (weld
-  //! tolerance T[, automatic]): Repair would weld N vertices ..."), the selection, then as its
-  //! last line the summary "Defect layer '<label>': N red (singular) edges, M green (boundary)
-  //! edges, K singular vertex markers". Pass it through html_log_lines() for MeshLab's log.
+  //! tolerance T[, automatic]): Repair would weld N vertices ..."), the self-intersections
+  //! (to_text() of `crossings`, or "self-intersections: not searched ..."), the selection, then
+  //! as its last line the summary "Defect layer '<label>': N red (singular) edges, M green
+  //! (boundary) edges, K singular vertex markers" (with `crossings` followed by ", F violet
+  //! (self-intersecting) faces", or for an Edges layer by "; the F self-intersecting faces are
+  //! not drawn in an Edges layer"). Pass it through html_log_lines() for MeshLab's log.
   std::string log;
   //! The numbers, in this order: vertices, faces (triangles), edges, singular_edges,
   //! singular_edge_contenders (sides on singular edges, summed), singular_vertices,
@@ -120,16 +144,18 @@ struct DetectOutcome {
   //! selected_vertices (0 unless `select_faces`), coloured_faces (0 unless `colour_faces`);
   //! what gap closing would do: gaps.tolerance (real; 0 = off), gaps.vertices_welded,
   //! gaps.largest_weld_distance (real), gaps.welds_refused, gaps.t_junctions_closed,
-  //! gaps.sides_split.
+  //! gaps.sides_split; with `crossings` only (keys of docs/report-schema.md's
+  //! `self_intersections`): self_intersections.face_pairs, self_intersections.faces,
+  //! self_intersections.component_pairs, and the layer's violet_faces.
   std::vector<FilterCount> counts;
 };
 
-//! Detects the singular defects of `mesh` (labelled `label`) without changing its geometry;
-//! then selects/colours faces as `options` say (colours and the colour mask of `mesh` are left
-//! alone unless `colour_faces`) and fills a new defect layer from `host`, replacing the one a
-//! previous Detect made.
-//! \throw FilterInputError if `mesh` has no faces (nothing changed, no layer added)
-//! \throw std::exception from the core (before anything changed)
+//! Detects the singular defects of `mesh` (labelled `label`) without changing its geometry, and
+//! its self-intersections if `options.self_intersections`; then selects/colours faces as
+//! `options` say (self-intersecting faces are neither selected nor coloured) (colours and the
+//! colour mask of `mesh` are left alone unless `colour_faces`) and fills a new defect layer from
+//! `host`, replacing the one a previous Detect made. \throw FilterInputError if `mesh` has no faces
+//! (nothing changed, no layer added) \throw std::exception from the core (before anything changed)
 DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
                                       const DetectOptions& options, DocumentHost& host);
 

@@ -115,6 +115,19 @@ std::vector<ParameterSpec> make_detect_parameters() {
               "Paint those faces: red at singular edges, orange at pinch vertices. Turns on "
               "per-face colour for the layer and overwrites the colour of those faces."),
       layer_form,
+      boolean(
+          parameter::self_intersections, defaults.self_intersections,
+          "Find self-intersections (violet)",
+          "Also find the faces that cross or overlap another face (shells of an assembly that "
+          "cross, a fold, coplanar overlap), with exact predicates: faces that only touch along "
+          "a shared edge or at a shared vertex do not count, nor do the touching copies Repair "
+          "makes. They are shown in the defect layer in violet (Tubes only), counted in the log "
+          "and returned (self_intersections.face_pairs, .faces, .component_pairs). On by "
+          "default for meshes of at most " +
+              std::to_string(kSelfIntersectionsDefaultMaxFaces) +
+              " faces, off above (it costs about as much again as the rest of Detect); tick it "
+              "to search a larger mesh. Python: self_intersections=True. The CLI: check "
+              "--self-intersections."),
   };
   const std::vector<ParameterSpec> gaps = gap_parameters(
       "Also report what Repair's gap closing would do (Detect moves no vertex): how many "
@@ -256,6 +269,15 @@ const std::vector<ParameterSpec>& parameters(FilterId id) {
       return repair;
   }
   throw std::invalid_argument("unknown MeshBridge filter id " + std::to_string(int(id)));
+}
+
+std::vector<ParameterSpec> parameters(FilterId id, std::size_t faces) {
+  std::vector<ParameterSpec> specs = parameters(id);
+  for (ParameterSpec& p : specs) {
+    if (id == FilterId::detect && std::string(p.name) == parameter::self_intersections)
+      p.bool_default = self_intersections_by_default(faces);
+  }
+  return specs;
 }
 
 }  // namespace meshbridge::meshlab

@@ -54,6 +54,9 @@ inline constexpr const char* weld_tolerance = "weld_tolerance";
 inline constexpr const char* close_t_junctions = "close_t_junctions";
 //! Hole filling (Repair only): FillHolesOptions::max_edges, the CLI's `--fill-holes N`; 0 = off.
 inline constexpr const char* fill_holes = "fill_holes";
+//! Detect only: DetectOptions::self_intersections, the CLI's `--self-intersections`; its default
+//! depends on the mesh (self_intersections_by_default()).
+inline constexpr const char* self_intersections = "self_intersections";
 }  // namespace parameter
 
 //! One parameter of a filter, of one of four kinds; only the default of its kind is read.
@@ -88,8 +91,13 @@ ParameterSpec length_parameter(const char* name, double default_value, const cha
                                std::string tooltip);
 
 //! The parameters of `id`, in dialog order. Defaults are DetectOptions{}'s and
-//! RepairFilterOptions{}'s (so the core's RepairOptions{} for the core's options).
+//! RepairFilterOptions{}'s (so the core's RepairOptions{} for the core's options), except
+//! Detect's `self_intersections`, whose default here is on (see the overload below).
 const std::vector<ParameterSpec>& parameters(FilterId id);
+
+//! The parameters of `id` for a mesh of `faces` faces: as parameters(id), with Detect's
+//! `self_intersections` defaulting to self_intersections_by_default(faces).
+std::vector<ParameterSpec> parameters(FilterId id, std::size_t faces);
 
 //! The gap closing options of a `weld_tolerance` value: negative means automatic
 //! (kAutoWeldTolerance), 0 off, anything else the distance itself.
@@ -114,10 +122,11 @@ CloseGapsOptions close_gaps_options(const ParameterList& params) {
 }
 
 //! Reads the detect filter's options from a MeshLab RichParameterList (either API generation:
-//! both have getBool(name) and getEnum(name)). A script that predates `defect_layer` gets the
-//! default (tubes).
+//! both have getBool(name) and getEnum(name)), for a mesh of `faces` faces. A script that
+//! predates `defect_layer` gets the default (tubes); one that predates `self_intersections`
+//! gets self_intersections_by_default(faces).
 template <class ParameterList>
-DetectOptions detect_options(const ParameterList& params) {
+DetectOptions detect_options(const ParameterList& params, std::size_t faces) {
   DetectOptions options;
   options.select_faces = params.getBool(parameter::select_faces);
   options.colour_faces = params.getBool(parameter::colour_faces);
@@ -126,6 +135,9 @@ DetectOptions detect_options(const ParameterList& params) {
                                                                       : DefectLayerForm::tubes;
   }
   options.close_gaps = close_gaps_options(params);
+  options.self_intersections = params.hasParameter(parameter::self_intersections)
+                                   ? params.getBool(parameter::self_intersections)
+                                   : self_intersections_by_default(faces);
   return options;
 }
 

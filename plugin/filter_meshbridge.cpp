@@ -6,6 +6,7 @@
 #include "meshlab_document_host.h"
 #include "rich_parameters.h"
 
+#include <algorithm>
 #include <exception>
 #include <string>
 
@@ -76,7 +77,8 @@ void FilterMeshBridgePlugin::initParameterSet(QAction* action, MeshModel& m,
                                               RichParameterList& params) {
   // Lengths are shown as a distance and as a percentage of this diagonal.
   const float diagonal = m.cm.bbox.IsNull() || !(m.cm.bbox.Diag() > 0) ? 1.0f : m.cm.bbox.Diag();
-  mbm::add_rich_parameters<RichAbsPerc>(filter_id(ID(action)), diagonal, params);
+  mbm::add_rich_parameters<RichAbsPerc>(filter_id(ID(action)), std::size_t(std::max(m.cm.fn, 0)),
+                                        diagonal, params);
 }
 
 bool FilterMeshBridgePlugin::applyFilter(QAction* action, MeshDocument& md,
@@ -119,8 +121,8 @@ void FilterMeshBridgePlugin::log_lines(const std::string& text) {
 void FilterMeshBridgePlugin::detect(MeshDocument& md, const RichParameterList& params) {
   MeshModel& m = *md.mm();
   mbm::MeshDocumentHost host(md, false);  // MeshLab 2020.09 has no 3MF exporter
-  const mbm::DetectOutcome out = mbm::detect_singular_defects(m.cm, m.label().toStdString(),
-                                                              mbm::detect_options(params), host);
+  const mbm::DetectOutcome out = mbm::detect_singular_defects(
+      m.cm, m.label().toStdString(), mbm::detect_options(params, std::size_t(m.cm.fn)), host);
   log_lines(out.log);
 }
 

@@ -9,6 +9,7 @@
 #include <common/globals.h>
 #include <common/plugins/plugin_manager.h>
 
+#include <algorithm>
 #include <exception>
 #include <string>
 
@@ -118,7 +119,8 @@ RichParameterList FilterMeshBridgePlugin::initParameterList(const QAction* actio
   const Scalarm diagonal =
       m.cm.bbox.IsNull() || !(m.cm.bbox.Diag() > 0) ? Scalarm(1) : m.cm.bbox.Diag();
   RichParameterList params;
-  mbm::add_rich_parameters<RichPercentage>(filter_id(ID(action)), diagonal, params);
+  mbm::add_rich_parameters<RichPercentage>(filter_id(ID(action)), std::size_t(std::max(m.cm.fn, 0)),
+                                           diagonal, params);
   return params;
 }
 
@@ -135,7 +137,7 @@ std::map<std::string, QVariant> FilterMeshBridgePlugin::applyFilter(const QActio
     switch (ID(action)) {
       case FP_DETECT_SINGULAR_DEFECTS: {
         mbm::MeshDocumentHost host(md, can_save_3mf());
-        const mbm::DetectOptions options = mbm::detect_options(params);
+        const mbm::DetectOptions options = mbm::detect_options(params, std::size_t(m.cm.fn));
         const mbm::DetectOutcome out = mbm::detect_singular_defects(m.cm, label, options, host);
         log_lines(out.log);
         postConditionMask = postCondition(action);

@@ -13,11 +13,12 @@
 
 namespace meshbridge::meshlab {
 
-//! Adds the parameters of filter `id` to `params` in dialog order. Lengths range over
-//! [0, diagonal] (the mesh's bounding box diagonal, shown as a distance and a percentage of it).
+//! Adds the parameters of filter `id` for a mesh of `faces` faces to `params` in dialog order.
+//! Lengths range over [0, diagonal] (the mesh's bounding box diagonal, shown as a distance and a
+//! percentage of it).
 template <class RichLength, class Scalar, class ParameterList>
-void add_rich_parameters(FilterId id, Scalar diagonal, ParameterList& params) {
-  for (const ParameterSpec& p : parameters(id)) {
+void add_rich_parameters(FilterId id, std::size_t faces, Scalar diagonal, ParameterList& params) {
+  for (const ParameterSpec& p : parameters(id, faces)) {
     const QString tooltip = QString::fromStdString(p.tooltip);
     switch (p.kind) {
       case ParameterSpec::Kind::boolean:

@@ -50,6 +50,48 @@ pixels() {  # pixels FILE COLOUR -> N from "COLOUR pixels N" in a snapshot's out
   grep -o "$2 pixels [0-9]*" "$1" | head -1 | cut -d' ' -f3
 }
 
+# write_crossing_obj FILE: two unit cubes as quads, the second moved by (0.5, 0.5, 0.5): its three
+# low faces cross the first one's three high faces, two each.
+write_crossing_obj() {
+  cat >"$1" <<'OBJ'
+v 0 0 0
+v 1 0 0
+v 0 1 0
+v 1 1 0
+v 0 0 1
+v 1 0 1
+v 0 1 1
+v 1 1 1
+v 0.5 0.5 0.5
+v 1.5 0.5 0.5
+v 0.5 1.5 0.5
+v 1.5 1.5 0.5
+v 0.5 0.5 1.5
+v 1.5 0.5 1.5
+v 0.5 1.5 1.5
+v 1.5 1.5 1.5
+f 1 3 4 2
+f 5 6 8 7
+f 1 2 6 5
+f 3 7 8 4
+f 1 5 7 3
+f 2 4 8 6
+f 9 11 12 10
+f 13 14 16 15
+f 9 10 14 13
+f 11 15 16 12
+f 9 13 15 11
+f 10 12 16 14
+OBJ
+}
+# violet_in FILE [GEOMETRY] -> pixels of FILE (or of that part) with blue - green >= 100: what
+# snapshot counts as violet (self-intersecting faces), since nothing else it draws has blue above
+# green (grey has R = G = B; red, green and black none of it).
+violet_in() {
+  convert "$1" ${2:+-crop "$2" +repage} -separate -delete 0 -compose minus_dst -composite \
+    -threshold 39% -format '%[fx:round(mean*w*h)]' info:
+}
+
 case "$case_name" in
 check_exit_codes)
   expect_exit 0 "$mb" check "$models/icosphere.obj"
@@ -827,38 +869,7 @@ arguments)
   expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/c.obj" --pairing=COMBINATORIAL
   ;;
 check_self_intersections)
-  # Two unit cubes as quads, the second moved by (0.5, 0.5, 0.5): its three low faces cross the
-  # first one's three high faces, two each.
-  cat >"$work/crossing.obj" <<'OBJ'
-v 0 0 0
-v 1 0 0
-v 0 1 0
-v 1 1 0
-v 0 0 1
-v 1 0 1
-v 0 1 1
-v 1 1 1
-v 0.5 0.5 0.5
-v 1.5 0.5 0.5
-v 0.5 1.5 0.5
-v 1.5 1.5 0.5
-v 0.5 0.5 1.5
-v 1.5 0.5 1.5
-v 0.5 1.5 1.5
-v 1.5 1.5 1.5
-f 1 3 4 2
-f 5 6 8 7
-f 1 2 6 5
-f 3 7 8 4
-f 1 5 7 3
-f 2 4 8 6
-f 9 11 12 10
-f 13 14 16 15
-f 9 10 14 13
-f 11 15 16 12
-f 9 13 15 11
-f 10 12 16 14
-OBJ
+  write_crossing_obj "$work/crossing.obj"
   # Without the flag: no word about them (two closed cubes: exit 0, no key).
   expect_exit 0 "$mb" check "$work/crossing.obj" --json
   grep -q '"self_intersections"' "$work/out" && fail "self_intersections without the flag"
@@ -893,6 +904,38 @@ OBJ
   [ "$(json_field "$work/out" self_intersections.face_pairs)" = 0 ] || fail "repaired twocubes"
   expect_exit 0 "$mb" explain self-intersection
   expect_in "$work/out" "shared"
+  expect_in "$work/out" "Shown violet: \`snapshot --self-intersections\` and MeshLab's Detect."
+  ;;
+snapshot_self_intersections)
+  # snapshot --self-intersections: the 6 crossing faces violet, counted by the drawing and by
+  # ImageMagick alike; none without the flag, none on cubes that only touch (twocubes).
+  write_crossing_obj "$work/crossing.obj"
+  expect_exit 1 "$mb" snapshot "$work/crossing.obj" "$work/crossing.png" --self-intersections
+  expect_in "$work/out" "0 boundary edges, 6 self-intersecting faces; red pixels 0, green pixels 0, violet pixels"
+  violet=$(pixels "$work/out" violet)
+  [ "${violet:-0}" -gt 10000 ] 2>/dev/null || fail "too few violet pixels: $(cat "$work/out")"
+  [ "$(violet_in "$work/crossing.png")" = "$violet" ] ||
+    fail "ImageMagick counts $(violet_in "$work/crossing.png") violet pixels, snapshot $violet"
+  expect_exit 0 "$mb" snapshot "$work/crossing.obj" "$work/plain.png"
+  grep -q violet "$work/out" && fail "violet pixels counted without --self-intersections"
+  [ "$(violet_in "$work/plain.png")" = 0 ] || fail "violet without --self-intersections"
+  expect_exit 1 "$mb" snapshot "$models/twocubes.obj" "$work/touching.png" --self-intersections
+  expect_in "$work/out" "0 self-intersecting faces"
+  [ "$(pixels "$work/out" violet)" = 0 ] || fail "violet pixels on twocubes: $(cat "$work/out")"
+  [ "$(pixels "$work/out" red)" -gt 0 ] 2>/dev/null || fail "twocubes lost its red edge"
+  # repair --self-intersections --before-after: violet on both sides (repair leaves the crossing
+  # shells as they are), none on the touching cubes before or after.
+  expect_exit 0 "$mb" repair "$work/crossing.obj" "$work/fixed.obj" --self-intersections \
+    --before-after "$work/ba.png"
+  left=$(violet_in "$work/ba.png" 800x800+0+0)
+  right=$(violet_in "$work/ba.png" 800x800+802+0)
+  [ "$left" -gt 10000 ] 2>/dev/null || fail "before: $left violet pixels"
+  [ "$right" = "$left" ] || fail "after: $right violet pixels, before $left (the same mesh)"
+  expect_exit 0 "$mb" repair "$work/crossing.obj" "$work/fixed.obj" --before-after "$work/ba0.png"
+  [ "$(violet_in "$work/ba0.png")" = 0 ] || fail "violet in --before-after without --self-intersections"
+  expect_exit 0 "$mb" repair "$models/twocubes.obj" "$work/fixed.stl" --self-intersections \
+    --before-after "$work/ba2.png"
+  [ "$(violet_in "$work/ba2.png")" = 0 ] || fail "violet on twocubes before or after (STL read back)"
   ;;
 explain)
   expect_exit 0 "$mb" explain

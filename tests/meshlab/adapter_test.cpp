@@ -5,6 +5,7 @@
 // added, and the fans of polygons with a side split at its midpoint.
 #include "cmesh_adapter.h"
 #include "defect_tubes.h"
+#include "fake_host.h"
 #include "filter_actions.h"
 #include "filter_catalog.h"
 
@@ -40,21 +41,6 @@ void t_junction(CMeshO& m) {
     ++fi;
   }
 }
-
-//! A document without MeshLab: layers are kept here, the layer's file name is given.
-class FakeHost final : public mbm::DocumentHost {
- public:
-  explicit FakeHost(std::string file_name) : file_name_(std::move(file_name)) {}
-  void enable_face_colour() override {}
-  CMeshO& add_defect_layer(const std::string&, bool) override { return layer_; }
-  std::size_t remove_layers(const std::string&) override { return 0; }
-  bool can_save_3mf() const override { return false; }
-  std::string file_name() const override { return file_name_; }
-
- private:
-  std::string file_name_;
-  CMeshO layer_;
-};
 
 const mbm::ParameterSpec* find_parameter(mbm::FilterId id, const std::string& name) {
   for (const mbm::ParameterSpec& p : mbm::parameters(id)) {

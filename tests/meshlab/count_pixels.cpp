@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Counts the red and green pixels of a screenshot (binary PPM, P6, maxval 255), for the real-GUI
-// tests: defect tubes are pure red / pure green, lit by MeshLab's lights, so a pixel counts as
-// red when R >= 120 and G, B <= 60 (green likewise). MeshLab's pink selection overlay, its
+// Counts the red, green and violet pixels of a screenshot (binary PPM, P6, maxval 255), for the
+// real-GUI tests: defect tubes are pure red / pure green, lit by MeshLab's lights, so a pixel
+// counts as red when R >= 120 and G, B <= 60 (green likewise). Self-intersecting faces are violet
+// (140, 0, 255), lit (about (158, 0, 255) facing the light): B >= 100, G <= 50, R between 0.3
+// and 0.8 of B and at least G + 40 (magenta pinch markers have R = B; MeshLab's blue background
+// has R = G, and passes the rest where it is (50, 50, 100)). MeshLab's pink selection overlay, its
 // trackball lines and anti-aliased grey edges do not count.
 //
 // Usage: meshbridge_count_pixels IMAGE.ppm [X Y W H]    (the rectangle defaults to the image)
-// Prints: width=, height=, pixels= (in the rectangle), red=, green=.
+// Prints: width=, height=, pixels= (in the rectangle), red=, green=, violet=.
 #include <cctype>
 #include <cstdio>
 #include <fstream>
@@ -71,16 +74,20 @@ int main(int argc, char** argv) {
         throw std::invalid_argument("rectangle lies outside the " + std::to_string(width) + "x" +
                                     std::to_string(height) + " image");
     }
-    long red = 0, green = 0;
+    long red = 0, green = 0, violet = 0;
     for (long y = y0; y < y0 + h; ++y) {
       for (long x = x0; x < x0 + w; ++x) {
         const unsigned char* p = &rgb[std::size_t((y * width + x) * 3)];
         red += (p[0] >= 120 && p[1] <= 60 && p[2] <= 60) ? 1 : 0;
         green += (p[1] >= 120 && p[0] <= 60 && p[2] <= 60) ? 1 : 0;
+        violet += (p[2] >= 100 && p[1] <= 50 && 10 * p[0] >= 3 * p[2] && 10 * p[0] <= 8 * p[2] &&
+                   p[0] >= p[1] + 40)
+                      ? 1
+                      : 0;
       }
     }
     std::cout << "width=" << width << "\nheight=" << height << "\npixels=" << w * h
-              << "\nred=" << red << "\ngreen=" << green << '\n';
+              << "\nred=" << red << "\ngreen=" << green << "\nviolet=" << violet << '\n';
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "meshbridge_count_pixels: " << e.what() << '\n';

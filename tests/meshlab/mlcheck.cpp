@@ -6,9 +6,11 @@
 //!                                Debian's meshlabserver 2020.09 aborts on every OBJ file
 //!                                (import_obj.h:640 assertion, Debian bug #1054006), so the
 //!                                tests feed it OFF.
-//!   mlcheck report FILE          key=value lines: element counts, the core's detection on the
-//!                                file's faces, selection counts (PLY flags), defect-layer counts
-//!                                (edges by vertex colour: red singular, green boundary).
+//!   mlcheck report FILE          key=value lines: element counts, the core's detection and
+//!                                self-intersections on the file's faces, selection counts (PLY
+//!                                flags), defect-layer counts (edges by vertex colour: red
+//!                                singular, green boundary; faces by face colour, violet for
+//!                                self-intersecting faces).
 //!   mlcheck make-attributed IN OUT.ply
 //!                                IN (read by the core) -> ASCII PLY with a distinct colour and
 //!                                quality per vertex and per face and a texture coordinate per
@@ -23,6 +25,7 @@
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
+#include "meshbridge/self_intersections.h"
 #include "meshbridge/soup.h"
 
 #include <algorithm>
@@ -389,6 +392,12 @@ int report(const std::string& path) {
     for (const auto& e : r.singular_edges)
       contenders += e.contenders;
     std::cout << "singular_edge_contenders=" << contenders << '\n';
+    if (meshbridge::self_intersections_available()) {
+      const meshbridge::SelfIntersectionReport s = meshbridge::find_self_intersections(to_soup(m));
+      std::cout << "self_intersecting_face_pairs=" << s.face_pairs.size()
+                << "\nself_intersecting_faces=" << s.faces.size()
+                << "\ncrossing_component_pairs=" << s.component_pairs.size() << '\n';
+    }
   }
   constexpr int kSelected = 0x20;  // vcg::BitFlags SELECTED
   if (!m.vertex_flags.empty()) {
@@ -404,15 +413,16 @@ int report(const std::string& path) {
               << '\n';
   }
   if (!m.face_colour.empty()) {
-    std::size_t red = 0, orange = 0, green = 0, magenta = 0;
+    std::size_t red = 0, orange = 0, green = 0, magenta = 0, violet = 0;
     for (const auto& c : m.face_colour) {
       red += is_colour(c, 1, 0, 0) ? 1 : 0;
       orange += is_colour(c, 1, 128.0 / 255, 0) ? 1 : 0;
       green += is_colour(c, 0, 1, 0) ? 1 : 0;
       magenta += is_colour(c, 1, 0, 1) ? 1 : 0;
+      violet += is_colour(c, 140.0 / 255, 0, 1) ? 1 : 0;  // self-intersecting faces
     }
     std::cout << "red_faces=" << red << "\norange_faces=" << orange << "\ngreen_faces=" << green
-              << "\nmagenta_faces=" << magenta << '\n';
+              << "\nmagenta_faces=" << magenta << "\nviolet_faces=" << violet << '\n';
   }
   if (!m.edges.empty() || m.faces.empty()) {
     std::size_t red = 0, green = 0, other = 0;

@@ -19,6 +19,14 @@
 #                             exact counts in Detect's and Repair's logs, the repaired file
 #   holes open_boxes          fill_holes set in .mlx scripts on two open boxes (crack_models.sh):
 #                             holes of 4 and 6 edges, exact counts in Repair's log and file
+#   crossings crossing_cubes|apart_cubes
+#                             Detect's self_intersections on two cubes whose shells cross (or lie
+#                             apart), as triangles (crossing_models.sh): the log's counts == the
+#                             core's, two violet triangles per crossing face in the tube layer,
+#                             none with self_intersections=false
+#   gui-crossings crossing_cubes|apart_cubes
+#                             the real GUI (gui_detect.sh) on them: violet pixels exactly when the
+#                             shells cross, the summary line with the violet faces
 #   stl-truth MODEL           Repair's "STL re-read" line on MODEL written as STL, checked
 #                             against the STL file meshlabserver then writes
 #   compare-builtin MODEL     ours vs MeshLab's "Repair non Manifold Edges" (both methods):
@@ -40,6 +48,8 @@ mode=${1:?mode}; shift
 source "$(dirname "${BASH_SOURCE[0]}")/check_helpers.sh"
 # write_cube_twice, write_t_junction_box, off_to_stl, expect_in_log, the expected gap lines
 source "$(dirname "${BASH_SOURCE[0]}")/crack_models.sh"
+# write_crossing_cubes
+source "$(dirname "${BASH_SOURCE[0]}")/crossing_models.sh"
 # server LOG ARGS...: runs meshlabserver, its stdout (the filter log) into LOG; returns its status
 server() {
   local log=$1; shift
@@ -337,6 +347,65 @@ case "$mode" in
     check_expectations six.txt vertices=20 faces=32 boundary_edges=0 singular_edges=0 \
       inconsistent_edges=0 watertight=1
     grep -q "Mesh is two-manifold" six.log && pass "MeshLab: Mesh is two-manifold" || fail "MeshLab: not two-manifold"
+    ;;
+
+  crossings)
+    write_crossing_cubes cubes.off "$([ "$name" = crossing_cubes ] && echo 0.5 || echo 2)"
+    "$MLCHECK" report cubes.off >input.txt
+    pairs=$(value self_intersecting_face_pairs input.txt)
+    faces=$(value self_intersecting_faces input.txt)
+    components=$(value crossing_component_pairs input.txt)
+    if [ "$name" = crossing_cubes ]; then
+      expect_eq "core: crossing faces" "$faces" 12
+    else
+      expect_eq "core: crossing faces" "$faces" 0
+    fi
+    mlx on.mlx detect self_intersections=true
+    status=0
+    server on.log -i cubes.off -o layer.ply -l x -m vc fc sa -s on.mlx || status=$?
+    cat on.log
+    expect_eq "Detect: meshlabserver status" "$status" 0
+    expect_in_log "Detect: face pairs" on.log "self-intersecting face pairs: $pairs"
+    expect_in_log "Detect: faces" on.log "faces in them: $faces"
+    expect_in_log "Detect: shells" on.log "pairs of components (shells) crossing: $components"
+    expect_in_log "Detect: summary" on.log \
+      "0 singular vertex markers, $faces violet (self-intersecting) faces"
+    if [ "$faces" -gt 0 ]; then
+      "$MLCHECK" report layer.ply >layer.txt
+      expect_eq "tube layer: two violet triangles per crossing face" \
+        "$(value violet_faces layer.txt)" "$(( 2 * faces ))"
+      expect_eq "tube layer: nothing else" "$(value faces layer.txt)" "$(( 2 * faces ))"
+    else
+      "$MLCHECK" report layer.ply >layer.txt
+      expect_eq "empty defect layer (nothing to show)" "$(value faces layer.txt)" 0
+    fi
+    mlx off.mlx detect self_intersections=false
+    server off.log -i cubes.off -o off_layer.ply -l x -m vc fc sa -s off.mlx || status=$?
+    expect_eq "Detect (off): meshlabserver status" "$status" 0
+    expect_in_log "Detect (off)" off.log "self-intersections: not searched"
+    expect_not_in_log "Detect (off): no violet" off.log "violet"
+    "$MLCHECK" report off_layer.ply >off_layer.txt
+    expect_eq "off: empty defect layer" "$(value faces off_layer.txt)" 0
+    ;;
+
+  gui-crossings)
+    write_crossing_cubes "$name.off" "$([ "$name" = crossing_cubes ] && echo 0.5 || echo 2)"
+    "$MLCHECK" report "$name.off" >input.txt
+    gui_bin=$("$root_script" make-gui "$ROOT/gui" "$PLUGIN")
+    status=0
+    # Turned with the mouse as a user does, so the crossing is seen from above and aside.
+    DRAG="160 120" COUNT_PIXELS="$COUNT_PIXELS" bash "$SOURCE_DIR/tests/meshlab/gui_detect.sh" \
+      "$gui_bin" "$dir/$name.off" "$dir/shot" >gui.txt || status=$?
+    cat shot/session.txt
+    expect_eq "GUI session status" "$status" 0
+    expect_gui_shot shot input.txt "$name"
+    faces=$(value self_intersecting_faces input.txt)
+    grep -q "LOG: [0-9]* Defect layer '$name - defects': .*, $faces violet (self-intersecting) faces" \
+      shot/meshlab.log && pass "GUI log: $faces violet faces" || fail "GUI log: no '$faces violet' summary"
+    if [ "$faces" -gt 0 ]; then
+      # The shells cross near the view's middle: a clear patch, not a few stray pixels.
+      [ "$(value violet shot/view.txt)" -gt 5000 ] && pass "violet patch" || fail "violet patch too small"
+    fi
     ;;
 
   stl-truth)

@@ -22,6 +22,10 @@
 #                             counts in the logs and result maps, the repaired layer
 #   holes open_boxes          fill_holes by python name on two open boxes (crack_models.sh): holes
 #                             of 4 and 6 edges, exact counts in the log, result map and file
+#   crossings crossing_cubes|apart_cubes
+#                             Detect's self-intersections on two cubes whose shells cross or lie
+#                             apart (crossing_models.sh), by default and with
+#                             self_intersections=False: result map == core, violet layer faces
 #   stl-truth MODEL           Repair's "STL re-read" line and reread.* results on MODEL written
 #                             as STL, checked against the STL file MeshLab then writes
 #   compare-builtin MODEL     ours vs MeshLab's "Repair non Manifold Edges" (both methods)
@@ -47,6 +51,8 @@ mode=${1:?mode}; shift
 source "$(dirname "${BASH_SOURCE[0]}")/../meshlab/check_helpers.sh"
 # write_cube_twice, write_t_junction_box, off_to_stl, expect_in_log, the expected gap lines
 source "$(dirname "${BASH_SOURCE[0]}")/../meshlab/crack_models.sh"
+# write_crossing_cubes
+source "$(dirname "${BASH_SOURCE[0]}")/../meshlab/crossing_models.sh"
 # result FILTER KEY LOG: the value of KEY in the result map of the last FILTER step in LOG
 result() {
   awk -v f="$1" -v k="$2" '
@@ -122,7 +128,7 @@ case "$mode" in
     # Our parameters, by python name, with type and default, in dialog order.
     params() { awk -v f="filter $1 " 'index($0, f) == 1 { on = 1; next } /^filter / { on = 0 } on' list.txt; }
     expect_eq "$detect_filter parameters" "$(params "$detect_filter" | tr '\n' '|')" \
-      "  select_faces : bool = True|  color_faces : bool = False|  defect_layer : str = 'Tubes'|  weld_tolerance : PercentageValue = -57.735%|  close_t_junctions : bool = True|"
+      "  select_faces : bool = True|  color_faces : bool = False|  defect_layer : str = 'Tubes'|  self_intersections : bool = True|  weld_tolerance : PercentageValue = -57.735%|  close_t_junctions : bool = True|"
     expect_eq "$repair_filter parameters" "$(params "$repair_filter" | tr '\n' '|')" \
       "  pairing : str = 'Geometric'|  orient : bool = True|  stitch : bool = True|  cut_nonorientable : bool = False|  remove_duplicate_faces : bool = False|  remove_degenerate_faces : bool = False|  remove_isolated_vertices : bool = False|  recompute_normals : bool = True|  weld_tolerance : PercentageValue = -57.735%|  close_t_junctions : bool = True|  fill_holes : int = 0|"
     ;;
@@ -340,6 +346,37 @@ case "$mode" in
     grep -q "Error while loading plugins\|Unable to find the plugins" shot/meshlab.log \
       && fail "MeshLab could not load all its plugins" || pass "MeshLab loaded its plugins"
     expect_gui_shot shot input.txt "$name"
+    ;;
+
+  crossings)
+    write_crossing_cubes cubes.off "$([ "$name" = crossing_cubes ] && echo 0.5 || echo 2)"
+    "$MLCHECK" report cubes.off >input.txt
+    faces=$(value self_intersecting_faces input.txt)
+    expect_eq "core: crossing faces" "$faces" "$([ "$name" = crossing_cubes ] && echo 12 || echo 0)"
+    status=0
+    # No self_intersections given: on by default (24 faces, far below 2,000,000).
+    run on.log load cubes.off filter "$detect_filter" \
+      save layer.ply layer=last attributes=vc,fc binary=false || status=$?
+    cat on.log
+    expect_eq "Detect: runner status" "$status" 0
+    expect_results "$detect_filter" on.log \
+      "self_intersections.face_pairs=$(value self_intersecting_face_pairs input.txt)" \
+      "self_intersections.faces=$faces" \
+      "self_intersections.component_pairs=$(value crossing_component_pairs input.txt)" \
+      "violet_faces=$faces" red_edges=0 green_edges=0
+    expect_in_log "Detect: summary" on.log \
+      "0 singular vertex markers, $faces violet (self-intersecting) faces"
+    if [ -e layer.ply ]; then
+      "$MLCHECK" report layer.ply >layer.txt
+      expect_eq "tube layer: two violet triangles per crossing face" \
+        "$(value violet_faces layer.txt)" "$(( 2 * faces ))"
+    else
+      expect_eq "no layer saved: nothing to show" "$faces" 0
+    fi
+    run off.log load cubes.off filter "$detect_filter" self_intersections=false || status=$?
+    expect_eq "Detect (off): runner status" "$status" 0
+    expect_results "$detect_filter" off.log self_intersections.face_pairs= violet_faces=
+    expect_in_log "Detect (off)" off.log "self-intersections: not searched"
     ;;
 
   gaps)
