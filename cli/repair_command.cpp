@@ -8,6 +8,7 @@
 #include "release_memory.h"
 #include "validators.h"
 
+#include "meshbridge/counted.h"
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/errors.h"
 #include "meshbridge/io.h"
