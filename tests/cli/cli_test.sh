@@ -254,7 +254,7 @@ repair_formats)
   # without a word; OBJ to OBJ keeps mtllib, groups and the vertices' own colours.
   printf 'mtllib m.mtl\nv 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvn 0 0 1\nvn 1 0 0\nusemtl red\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$work/tex.obj"
   expect_exit 0 "$mb" repair "$work/tex.obj" "$work/tex.stl" --report "$work/tex.json"
-  expect_in "$work/err" "tex.stl: 1 texture coordinate (vt) and 2 normals (vn) not written: MeshBridge writes neither"
+  expect_in "$work/err" "tex.stl: 1 texture coordinate (vt) and 2 normals (vn) not written: STL holds none per corner (write OBJ to keep them)"
   expect_in "$work/err" "tex.stl: vertex colours not written: STL holds none"
   expect_in "$work/err" "tex.stl: OBJ groups and materials not written (1 o/g/usemtl line, 1 mtllib line): STL holds none"
   [ "$(json_field "$work/tex.json" written.left_out.2)" = "OBJ groups and materials not written (1 o/g/usemtl line, 1 mtllib line): STL holds none" ] ||

@@ -77,3 +77,47 @@ def test_open3d_reads_the_obj_colours_meshbridge_writes(tmp_path):
     assert len(mesh.vertices) == 3 and len(mesh.triangles) == 1
     assert mesh.has_vertex_colors()
     assert np.allclose(np.asarray(mesh.vertex_colors), np.eye(3))
+
+
+def test_open3d_reads_the_texture_coordinates_of_a_repaired_obj(tmp_path):
+    """Two textured cubes on one edge (every corner its own vt, a vn per face direction),
+    repaired OBJ to OBJ: Open3D reads a uv for every triangle corner, and exactly the input's."""
+    import os
+    import subprocess
+
+    cli = os.environ.get("MESHBRIDGE_CLI", "")
+    if not cli:
+        pytest.skip("MESHBRIDGE_CLI not set: no CLI to repair the OBJ")
+    sides = [[(0, 0, 0), (0, 0, 1), (0, 1, 1), (0, 1, 0)], [(1, 0, 0), (1, 1, 0), (1, 1, 1), (1, 0, 1)],
+             [(0, 0, 0), (1, 0, 0), (1, 0, 1), (0, 0, 1)], [(0, 1, 0), (0, 1, 1), (1, 1, 1), (1, 1, 0)],
+             [(0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0)], [(0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]]
+    normals = [(-1, 0, 0), (1, 0, 0), (0, -1, 0), (0, 1, 0), (0, 0, -1), (0, 0, 1)]
+    index, v, vt, f = {}, [], [], []
+    for offset in [(0, 0, 0), (1, 1, 0)]:
+        for side, corners in enumerate(sides):
+            face = []
+            for corner in corners:
+                p = tuple(o + c for o, c in zip(offset, corner))
+                if p not in index:
+                    index[p] = len(index) + 1
+                    v.append("v %d %d %d" % p)
+                vt.append("vt %s %s" % (len(vt) / 64.0, 1 - len(vt) / 64.0))
+                face.append("%d/%d/%d" % (index[p], len(vt), side + 1))
+            f.append("f " + " ".join(face))
+    text = "\n".join(v + vt + ["vn %d %d %d" % n for n in normals] + f) + "\n"
+    (tmp_path / "cubes.obj").write_text(text)
+    result = subprocess.run([cli, "repair", tmp_path / "cubes.obj", tmp_path / "out.obj"],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert "not written" not in result.stderr, result.stderr
+    mesh = o3d.io.read_triangle_mesh(str(tmp_path / "out.obj"))
+    assert len(mesh.vertices) == 16 and len(mesh.triangles) == 24
+    assert mesh.has_triangle_uvs()
+    uvs = np.asarray(mesh.triangle_uvs)
+    assert uvs.shape == (72, 2)
+    # Open3D flips v (1 - v) as it reads; every uv is one of the input's, all 48 used.
+    given = {(k / 64.0, k / 64.0) for k in range(48)}
+    read = {(u, 1 - w) for u, w in uvs.tolist()}
+    read = {(u, 1 - w) for u, w in read}
+    assert len({tuple(x) for x in uvs.tolist()}) == 48
+    assert mesh.has_vertex_normals()

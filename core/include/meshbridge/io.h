@@ -8,6 +8,7 @@
 #include "meshbridge/indexed_mesh.h"
 #include "meshbridge/soup.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -163,6 +164,33 @@ struct Metadata {
   }
 };
 
+//! OBJ texture coordinates (`vt`) and normals (`vn`), given per face corner ("f 1/4/2 ..."): the
+//! OBJ reader keeps them, repair carries them through IndexedMesh::corner_origin
+//! (carry_attributes(), write_mesh()), and the OBJ writer writes them back as `vt`, `vn` and
+//! `v/vt/vn` corners. No other format holds them per corner: the other writers leave them out
+//! and describe_unwritten() says so.
+struct CornerAttributes {
+  //! The `vt` records in file order: u, v, w (a number the record leaves out is 0).
+  std::vector<std::array<double, 3>> texture_coordinates;
+  //! The most numbers a `vt` record gave (1 to 3; 0 without records): the OBJ writer writes
+  //! this many (at least u and v).
+  int texture_components = 0;
+  //! The `vn` records in file order (x, y, z as written, not normalised).
+  std::vector<std::array<double, 3>> normals;
+  //! Empty (no corner names a `vt`), or one per soup corner (Soup::corner_vertices): the 0-based
+  //! `vt` record of the corner, or kNoIndex where it names none (no index, or one the file has
+  //! no record for: counted in MeshAttributes::not_kept).
+  std::vector<Index> corner_texture;
+  //! The same for `vn`.
+  std::vector<Index> corner_normal;
+
+  //! True if no corner has a texture coordinate or normal and the file had no record of either.
+  bool empty() const {
+    return texture_coordinates.empty() && normals.empty() && corner_texture.empty() &&
+           corner_normal.empty();
+  }
+};
+
 //! What a file carries besides positions and polygons, where MeshBridge keeps it.
 struct MeshAttributes {
   std::vector<Rgba> vertex_colors;  //!< empty, or one per soup vertex
@@ -180,10 +208,12 @@ struct MeshAttributes {
   //! OBJ `mtllib` lines as written (never opened); the OBJ writer writes them back, so that the
   //! `usemtl` groups still name materials of a library.
   std::vector<std::string> material_libraries;
-  //! OBJ `vt` and `vn` records: read and the form of their indices checked, but not kept (no
-  //! writer writes texture coordinates or normals); corners whose vt or vn index names no
-  //! record are a NotKept entry. See describe_unwritten().
+  //! OBJ `vt` and `vn` records (counts; the records and the corners' indices are in `corners`).
+  //! Corners whose vt or vn index names no record are a NotKept entry. The OBJ writer writes
+  //! them; describe_unwritten() names them for the other formats.
   std::size_t texture_coordinates = 0, normals = 0;
+  //! OBJ texture coordinates and normals per corner (filled by the OBJ reader only).
+  CornerAttributes corners;
   //! Everything else the file holds that is read past, not kept (filled only when the reader is
   //! given attributes). See describe_unwritten().
   std::vector<NotKept> not_kept;
