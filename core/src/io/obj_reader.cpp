@@ -363,6 +363,8 @@ void ObjReader::keep_corner_attributes(std::size_t first, std::size_t given) {
       }
     }
     std::vector<Index>& out = slot == 0 ? kept.corner_texture : kept.corner_normal;
+    if (out.capacity() == 0)  // once: as many as the soup's corners were reserved for
+      out.reserve(soup_.corner_vertices.capacity());
     out.resize(first, kNoIndex);
     out.insert(out.end(), slots.begin(), slots.end());
   }
