@@ -61,7 +61,7 @@ struct ReadInfo {
   std::size_t trailing_bytes = 0;
   //! OBJ lines whose keyword is no OBJ record (e.g. "F 1 2 3", "vx 1 2"), skipped: counted so
   //! that a misspelt face is not lost without a word (the CLI warns). Records of the OBJ format
-  //! MeshBridge has no use for (vt, vn, s, mtllib, curves...) are not counted.
+  //! MeshBridge has no use for (s, curves...) are not counted.
   std::size_t unknown_records = 0;
   //! OFF colours given as a single colour-map index (Geomview's colour map is a file of its own,
   //! not read): not kept, counted so that they are not lost without a word.
