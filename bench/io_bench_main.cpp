@@ -10,6 +10,9 @@
 //   openmesh-read FILE          OpenMesh's stock read_mesh into a PolyMesh
 //   openmesh-readwrite IN OUT   OpenMesh's read_mesh + write_mesh (binary PLY and STL)
 //   parse FILE                  MeshBridge's read_soup (parse, validate, account)
+//   read FILE [RUNS]            read_soup without and with MeshAttributes (what repair_file
+//                               reads), alternating RUNS (5) times in one process: best and
+//                               median of each (the OBJ vt/vn cost, issue 31)
 //   floor FILE                  the floor: mmap + one pass over the bytes (text: every number
 //                               through std::from_chars; binary: every 4-byte word summed)
 //   split FILE [RUNS]           in one process: floor, parse and parse with one thread
@@ -140,6 +143,33 @@ int parse(const std::string& path) {
   const Soup soup = read_soup(path, &info);
   std::printf("parse %s: %zu vertices, %zu faces\n", path.c_str(), soup.num_vertices(),
               soup.num_faces());
+  return 0;
+}
+
+double seconds_of(const std::function<void()>& step);
+std::pair<double, double> min_and_median(std::vector<double>& samples);
+
+int read_twice(const std::string& path, int runs) {
+  std::vector<double> plain, attributed;
+  std::size_t faces = 0, corners = 0;
+  for (int run = 0; run < runs; ++run) {
+    plain.push_back(seconds_of([&] {
+      ReadInfo info;
+      faces = read_soup(path, &info).num_faces();
+    }));
+    attributed.push_back(seconds_of([&] {
+      ReadInfo info;
+      MeshAttributes attributes;
+      corners = read_soup(path, &info, &attributes).num_corners();
+    }));
+  }
+  const auto [plain_best, plain_median] = min_and_median(plain);
+  const auto [attributed_best, attributed_median] = min_and_median(attributed);
+  std::printf(
+      "read %s (%zu faces, %zu corners): without attributes best %.4f s (median %.4f), "
+      "with attributes best %.4f s (median %.4f), %d runs\n",
+      path.c_str(), faces, corners, plain_best, plain_median, attributed_best, attributed_median,
+      runs);
   return 0;
 }
 
@@ -335,6 +365,8 @@ int main(int argc, char** argv) {
       return openmesh_readwrite(argv[2], argv[3]);
     if (command == "parse" && argc == 3)
       return parse(argv[2]);
+    if (command == "read" && (argc == 3 || argc == 4))
+      return read_twice(argv[2], std::max(1, argc == 4 ? std::atoi(argv[3]) : 5));
     if (command == "floor" && argc == 3)
       return floor_pass(argv[2]);
     if (command == "read-3mf" && argc >= 3) {
@@ -349,7 +381,8 @@ int main(int argc, char** argv) {
   }
   std::fprintf(stderr,
                "usage: meshbridge-io-bench make DIR | make-soup DIR | openmesh-read FILE | "
-               "openmesh-readwrite IN OUT | parse FILE | floor FILE | split FILE [RUNS] | "
+               "openmesh-readwrite IN OUT | parse FILE | read FILE [RUNS] | floor FILE | split "
+               "FILE [RUNS] | "
                "read-3mf DIR [RUNS] [FILE.3mf...]\n");
   return 2;
 }

@@ -296,13 +296,15 @@ repair_formats)
   # without a word; OBJ to OBJ keeps mtllib, groups and the vertices' own colours.
   printf 'mtllib m.mtl\nv 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvn 0 0 1\nvn 1 0 0\nusemtl red\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$work/tex.obj"
   expect_exit 0 "$mb" repair "$work/tex.obj" "$work/tex.stl" --report "$work/tex.json"
-  expect_in "$work/err" "tex.stl: 1 texture coordinate (vt) and 2 normals (vn) not written: MeshBridge writes neither"
+  expect_in "$work/err" "tex.stl: 1 texture coordinate (vt) and 2 normals (vn) not written: STL holds none per corner (write OBJ to keep them)"
   expect_in "$work/err" "tex.stl: vertex colours not written: STL holds none"
   expect_in "$work/err" "tex.stl: OBJ groups and materials not written (1 o/g/usemtl line, 1 mtllib line): STL holds none"
   [ "$(json_field "$work/tex.json" written.left_out.2)" = "OBJ groups and materials not written (1 o/g/usemtl line, 1 mtllib line): STL holds none" ] ||
     fail "written.left_out.2: $(cat "$work/tex.json")"
   expect_exit 0 "$mb" repair "$work/tex.obj" "$work/tex_out.obj"
-  [ "$(grep -c "not written" "$work/err")" = 1 ] || fail "OBJ keeps all but vt/vn: $(cat "$work/err")"
+  [ "$(grep -c "not written" "$work/err")" = 0 ] || fail "OBJ keeps all, vt/vn too: $(cat "$work/err")"
+  [ "$(grep -c '^vt 0 0$' "$work/tex_out.obj") $(grep -c '^vn ' "$work/tex_out.obj")" = "1 2" ] ||
+    fail "vt and vn records written back: $(cat "$work/tex_out.obj")"
   [ "$(grep -c '^v .* .* .* 1 0 0$' "$work/tex_out.obj") $(grep -c '^v [^ ]* [^ ]* [^ ]*$' "$work/tex_out.obj")" = "1 3" ] ||
     fail "vertex colours where the input had them: $(cat "$work/tex_out.obj")"
   expect_in "$work/tex_out.obj" "mtllib m.mtl"
@@ -1330,6 +1332,35 @@ interop)
   expect_in "$work/out" "vertices 3, faces 1"
   expect_in "$work/err" "meshbridge: warning: $work/blender.ply: PLY header lines that are neither keywords nor comments, read past (the first, line 3: 'Created by Blender3D 247 - www.blender.org, source file: \"\"'), on 1 line"
   expect_exit 0 "$mb" repair "$work/blender.ply" "$work/blender_out.ply"
+  # OBJ texture coordinates and normals through a repair: twocubes with a vt of its own on every
+  # corner and one vn. The output keeps all 72 vt and the vn, every face v/vt/vn, and each
+  # corner's position with its vt is one of the input's (the split vertices' copies carry the vt
+  # of their own faces' corners); nothing is said to be lost.
+  awk '/^v /{print; next} /^f /{f[++n]=$0} END{for (k = 0; k < 3 * n; ++k) print "vt " k / 128 " " 1 - k / 128; print "vn 0 0 1"; for (i = 1; i <= n; ++i) {split(f[i], c, " "); print "f " c[2] "/" 3*i-2 "/1 " c[3] "/" 3*i-1 "/1 " c[4] "/" 3*i "/1"}}' \
+    "$models/twocubes.obj" >"$work/uv_cubes.obj"
+  expect_exit 0 "$mb" repair "$work/uv_cubes.obj" "$work/uv_cubes_out.obj"
+  expect_in "$work/out" "vertices: 14 in, 16 out"
+  grep -q "not written" "$work/err" && fail "textured OBJ to OBJ lost something: $(cat "$work/err")"
+  [ "$(grep -c '^vt ' "$work/uv_cubes_out.obj")" = 72 ] || fail "72 vt: $(grep -c '^vt ' "$work/uv_cubes_out.obj")"
+  [ "$(grep -c '^vn 0 0 1$' "$work/uv_cubes_out.obj")" = 1 ] || fail "one vn"
+  [ "$(grep -c '^f [0-9]*/[0-9]*/1 [0-9]*/[0-9]*/1 [0-9]*/[0-9]*/1$' "$work/uv_cubes_out.obj")" = 24 ] ||
+    fail "24 faces v/vt/vn: $(grep '^f' "$work/uv_cubes_out.obj" | head -3)"
+  corners_with_vt() {  # "x y z | u v" of every face corner, sorted
+    awk '/^v /{p[++v]=$2" "$3" "$4} /^vt /{t[++u]=$2" "$3} /^f /{for (i = 2; i <= NF; ++i) {split($i, c, "/"); print p[c[1]] " | " t[c[2]]}}' "$1" | sort
+  }
+  [ "$(corners_with_vt "$work/uv_cubes.obj")" = "$(corners_with_vt "$work/uv_cubes_out.obj")" ] ||
+    fail "a corner's vt changed: $(diff <(corners_with_vt "$work/uv_cubes.obj") <(corners_with_vt "$work/uv_cubes_out.obj") | head -4)"
+  # To STL they cannot go (no vt per corner there): said.
+  expect_exit 0 "$mb" repair "$work/uv_cubes.obj" "$work/uv_cubes_out.stl"
+  expect_in "$work/err" "uv_cubes_out.stl: 72 texture coordinates (vt) and 1 normal (vn) not written: STL holds none per corner (write OBJ to keep them)"
+  # A hole filled in a textured OBJ: its new faces have no vt or vn, written 'f a b c' and said.
+  if "$mb" repair --help | grep -q -- --fill-holes; then
+    printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 -1\nf 1/1/1 4/4/1 3/3/1 2/2/1\nf 1/1 2/2 6/3 5/4\nf 2/1 3/2 7/3 6/4\nf 3/1 4/2 8/3 7/4\nf 4/1 1/2 5/3 8/4\n' >"$work/uv_open.obj"
+    expect_exit 0 "$mb" repair "$work/uv_open.obj" "$work/uv_open_out.obj" --fill-holes
+    expect_in "$work/err" "uv_open_out.obj: 2 faces added by hole filling written without texture coordinates (vt) and normals (vn): they have no input corner to take them from"
+    [ "$(grep -c '^f [0-9]* [0-9]* [0-9]*$' "$work/uv_open_out.obj")" = 2 ] || fail "2 plain faces: $(cat "$work/uv_open_out.obj")"
+    [ "$(grep -c '^f .*/' "$work/uv_open_out.obj")" = 5 ] || fail "5 textured faces"
+  fi
   ;;
 readme_quick_start)
   # The `meshbridge` lines of README's quick start, as written, from a folder with the

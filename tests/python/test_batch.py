@@ -293,7 +293,7 @@ def test_warnings_once_per_harmless_kind_lost_data_per_file_quiet_none(tmp_path)
                           "(MeshBridge reads past them)") == 1, result.stderr
     for n in (1, 2, 3):
         assert (f"meshbridge.batch: warning: uv{n}.obj: output uv{n}.stl: 1 texture coordinate "
-                "(vt) not written: MeshBridge writes neither") in warnings, result.stderr
+                "(vt) not written: STL holds none per corner (write OBJ to keep them)") in warnings, result.stderr
     assert len(warnings) == 4, result.stderr
     quiet = batch(indir, tmp_path / "quiet", "--workers", "1", "--format", "stl", "--quiet")
     assert quiet.returncode == 0 and quiet.stderr == "", quiet.stderr

@@ -77,3 +77,51 @@ def test_open3d_reads_the_obj_colours_meshbridge_writes(tmp_path):
     assert len(mesh.vertices) == 3 and len(mesh.triangles) == 1
     assert mesh.has_vertex_colors()
     assert np.allclose(np.asarray(mesh.vertex_colors), np.eye(3))
+
+
+def test_open3d_reads_the_texture_coordinates_of_a_repaired_obj(tmp_path):
+    """Two textured cubes on one edge (every corner its own vt, a vn per side of a cube),
+    repaired OBJ to OBJ: Open3D reads a uv for every triangle corner, and exactly the input's."""
+    import os
+    import subprocess
+
+    cli = os.environ.get("MESHBRIDGE_CLI", "")
+    if not cli:
+        pytest.skip("MESHBRIDGE_CLI not set: no CLI to repair the OBJ")
+    sides = [[(0, 0, 0), (0, 0, 1), (0, 1, 1), (0, 1, 0)], [(1, 0, 0), (1, 1, 0), (1, 1, 1), (1, 0, 1)],
+             [(0, 0, 0), (1, 0, 0), (1, 0, 1), (0, 0, 1)], [(0, 1, 0), (0, 1, 1), (1, 1, 1), (1, 1, 0)],
+             [(0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0)], [(0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]]
+    normals = [(-1, 0, 0), (1, 0, 0), (0, -1, 0), (0, 1, 0), (0, 0, -1), (0, 0, 1)]
+    index, v, vt, f, given = {}, [], [], [], set()
+    for offset in [(0, 0, 0), (1, 1, 0)]:
+        for side, corners in enumerate(sides):
+            # Triangles (Open3D 0.16 skips OBJ polygons of more corners), each corner its own vt.
+            for triangle in ((0, 1, 2), (0, 2, 3)):
+                face = []
+                for k in triangle:
+                    p = tuple(o + c for o, c in zip(offset, corners[k]))
+                    if p not in index:
+                        index[p] = len(index) + 1
+                        v.append("v %d %d %d" % p)
+                    uv = (len(vt) / 128.0, 1 - len(vt) / 128.0)
+                    given.add((tuple(float(x) for x in p), uv))
+                    vt.append("vt %s %s" % uv)
+                    face.append("%d/%d/%d" % (index[p], len(vt), side + 1))
+                f.append("f " + " ".join(face))
+    text = "\n".join(v + vt + ["vn %d %d %d" % n for n in normals] + f) + "\n"
+    (tmp_path / "cubes.obj").write_text(text)
+    result = subprocess.run([cli, "repair", tmp_path / "cubes.obj", tmp_path / "out.obj"],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert "not written" not in result.stderr, result.stderr
+    mesh = o3d.io.read_triangle_mesh(str(tmp_path / "out.obj"))
+    # (Open3D gives every corner with a uv of its own a point of its own: 72 points.)
+    assert len(mesh.triangles) == 24
+    assert mesh.has_triangle_uvs() and mesh.has_vertex_normals()
+    uvs = np.asarray(mesh.triangle_uvs)
+    assert uvs.shape == (72, 2)
+    # Every corner Open3D read is one of the input's (position, uv), and all 72 are there.
+    points = np.asarray(mesh.vertices)
+    read = {(tuple(points[t[k]].tolist()), tuple(uvs[3 * i + k].tolist()))
+            for i, t in enumerate(np.asarray(mesh.triangles)) for k in range(3)}
+    assert read == given, sorted(read ^ given)[:4]

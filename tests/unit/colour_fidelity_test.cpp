@@ -69,12 +69,15 @@ TEST_F(ColourFidelity, obj_vertices_without_a_colour_stay_without_one) {
 
   const std::string out = write_back(r, "partial_out.obj");
   const std::vector<std::string> lines = lines_of(out);
-  ASSERT_EQ(lines.size(), 1u + 1 + 4 + 1 + 4);  // comment, mtllib, v x 4, usemtl, f x 4
+  // comment, mtllib, v x 4, vt x 2 and vn (kept, though no face names them), usemtl, f x 4
+  ASSERT_EQ(lines.size(), 1u + 1 + 4 + 3 + 1 + 4);
   EXPECT_EQ(lines[1], "mtllib a.mtl b.mtl");
   EXPECT_EQ(lines[2], "v 0 0 0 1 0 0 1");
   EXPECT_EQ(lines[3], "v 1 0 0");  // no colour invented
   EXPECT_EQ(lines[5], "v 0 0 1");
-  EXPECT_EQ(lines[6], "usemtl red");
+  EXPECT_EQ(lines[6], "vt 0 0");
+  EXPECT_EQ(lines[8], "vn 0 0 1");
+  EXPECT_EQ(lines[9], "usemtl red");
   const Reading back = read(out);
   EXPECT_EQ(back.attributes.vertex_colors, a.vertex_colors);
   EXPECT_EQ(back.attributes.vertex_color_missing, a.vertex_color_missing);
@@ -218,15 +221,15 @@ TEST_F(ColourFidelity, describe_unwritten_names_what_each_format_cannot_hold) {
   a.double_precision = true;
   EXPECT_EQ(describe_unwritten("x.obj", a),
             (std::vector<std::string>{
-                "3 texture coordinates (vt) and 1 normal (vn) not written: MeshBridge writes "
-                "neither",
+                "3 texture coordinates (vt) and 1 normal (vn) not written: they were not kept "
+                "(read without them)",
                 "face colours not written: OBJ holds none"}));
   EXPECT_EQ(describe_unwritten("x.ply", a).size(), 2u);  // vt/vn, groups
   EXPECT_EQ(
       describe_unwritten("x.stl", a),
       (std::vector<std::string>{
-          "3 texture coordinates (vt) and 1 normal (vn) not written: MeshBridge writes "
-          "neither",
+          "3 texture coordinates (vt) and 1 normal (vn) not written: STL holds none per corner "
+          "(write OBJ to keep them)",
           "vertex colours not written: STL holds none", "face colours not written: STL holds none",
           "OBJ groups and materials not written (1 o/g/usemtl line, 0 mtllib lines): STL "
           "holds none"}));

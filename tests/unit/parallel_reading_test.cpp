@@ -93,6 +93,12 @@ Reading read_with(unsigned threads, const std::string& path) {
     if (s.not_kept[k].what != t.not_kept[k].what || s.not_kept[k].count != t.not_kept[k].count)
       return ::testing::AssertionFailure() << "read past: '" << s.not_kept[k].what << "' differs";
   }
+  const CornerAttributes &u = s.corners, &w = t.corners;
+  if (u.texture_coordinates != w.texture_coordinates || u.normals != w.normals ||
+      u.texture_components != w.texture_components)
+    return ::testing::AssertionFailure() << "vt or vn records differ";
+  if (u.corner_texture != w.corner_texture || u.corner_normal != w.corner_normal)
+    return ::testing::AssertionFailure() << "vt or vn of the corners differ";
   if (a.attributes.face_groups.size() != b.attributes.face_groups.size())
     return ::testing::AssertionFailure() << "groups differ";
   for (std::size_t g = 0; g < a.attributes.face_groups.size(); ++g) {
@@ -285,7 +291,7 @@ void write_busy_obj(const std::string& file, const Soup& soup) {
     int i = 0;
     for (Index v : soup.polygon(f)) {
       if (f % 3 == 0)
-        out << " -" << written - v;
+        out << " -" << written - v << (f % 6 == 0 ? "/-1/-2" : "");
       else
         out << ' ' << v + 1 << (f % 3 == 1 ? "//1" : "");
       if (f % 97 == 0 && i++ == 1)
@@ -318,6 +324,23 @@ TEST_F(ParallelReading, obj_with_relative_indices_groups_and_colours_reads_the_s
   EXPECT_EQ(one.attributes.material_libraries.front(), "mtllib lib0.mtl");
   EXPECT_EQ(one.attributes.texture_coordinates, group_lines);
   EXPECT_EQ(one.attributes.normals, 2 * group_lines);
+  // Every sixth face names the last vt and the last vn but one by relative indices; every
+  // third but those, the first vn.
+  const CornerAttributes& kept = one.attributes.corners;
+  ASSERT_EQ(kept.corner_texture.size(), one.soup.num_corners());
+  ASSERT_EQ(kept.corner_normal.size(), one.soup.num_corners());
+  std::size_t textured = 0, normal_first = 0;
+  for (std::size_t f = 0; f < one.soup.num_faces(); ++f) {
+    const Index c = one.soup.face_begin[f];
+    const Index group = static_cast<Index>(f / 5000);
+    if (f % 6 == 0) {
+      textured += kept.corner_texture[c] == group && kept.corner_normal[c] == 2 * group;
+    } else if (f % 3 == 1) {
+      normal_first += kept.corner_texture[c] == kNoIndex && kept.corner_normal[c] == 0;
+    }
+  }
+  EXPECT_EQ(textured, (one.soup.num_faces() + 5) / 6);
+  EXPECT_EQ(normal_first, (one.soup.num_faces() + 1) / 3);
   EXPECT_FALSE(one.attributes.face_groups.empty());
   expect_same_for_every_thread_count(file);
 }

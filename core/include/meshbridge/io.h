@@ -8,6 +8,7 @@
 #include "meshbridge/indexed_mesh.h"
 #include "meshbridge/soup.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -60,7 +61,7 @@ struct ReadInfo {
   std::size_t trailing_bytes = 0;
   //! OBJ lines whose keyword is no OBJ record (e.g. "F 1 2 3", "vx 1 2"), skipped: counted so
   //! that a misspelt face is not lost without a word (the CLI warns). Records of the OBJ format
-  //! MeshBridge has no use for (vt, vn, s, mtllib, curves...) are not counted.
+  //! MeshBridge has no use for (s, curves...) are not counted.
   std::size_t unknown_records = 0;
   //! OFF colours given as a single colour-map index (Geomview's colour map is a file of its own,
   //! not read): not kept, counted so that they are not lost without a word.
@@ -163,6 +164,33 @@ struct Metadata {
   }
 };
 
+//! OBJ texture coordinates (`vt`) and normals (`vn`), given per face corner ("f 1/4/2 ..."): the
+//! OBJ reader keeps them, repair carries them through IndexedMesh::corner_origin
+//! (carry_attributes(), write_mesh()), and the OBJ writer writes them back as `vt`, `vn` and
+//! `v/vt/vn` corners. No other format holds them per corner: the other writers leave them out
+//! and describe_unwritten() says so.
+struct CornerAttributes {
+  //! The `vt` records in file order: u, v, w (a number the record leaves out is 0).
+  std::vector<std::array<double, 3>> texture_coordinates;
+  //! The most numbers a `vt` record gave (1 to 3; 0 without records): the OBJ writer writes
+  //! this many (at least u and v).
+  int texture_components = 0;
+  //! The `vn` records in file order (x, y, z as written, not normalised).
+  std::vector<std::array<double, 3>> normals;
+  //! Empty (no corner names a `vt`), or one per soup corner (Soup::corner_vertices): the 0-based
+  //! `vt` record of the corner, or kNoIndex where it names none (no index, or one the file has
+  //! no record for: counted in MeshAttributes::not_kept).
+  std::vector<Index> corner_texture;
+  //! The same for `vn`.
+  std::vector<Index> corner_normal;
+
+  //! True if no corner has a texture coordinate or normal and the file had no record of either.
+  bool empty() const {
+    return texture_coordinates.empty() && normals.empty() && corner_texture.empty() &&
+           corner_normal.empty();
+  }
+};
+
 //! What a file carries besides positions and polygons, where MeshBridge keeps it.
 struct MeshAttributes {
   std::vector<Rgba> vertex_colors;  //!< empty, or one per soup vertex
@@ -180,10 +208,12 @@ struct MeshAttributes {
   //! OBJ `mtllib` lines as written (never opened); the OBJ writer writes them back, so that the
   //! `usemtl` groups still name materials of a library.
   std::vector<std::string> material_libraries;
-  //! OBJ `vt` and `vn` records: read and the form of their indices checked, but not kept (no
-  //! writer writes texture coordinates or normals); corners whose vt or vn index names no
-  //! record are a NotKept entry. See describe_unwritten().
+  //! OBJ `vt` and `vn` records (counts; the records and the corners' indices are in `corners`).
+  //! Corners whose vt or vn index names no record are a NotKept entry. The OBJ writer writes
+  //! them; describe_unwritten() names them for the other formats.
   std::size_t texture_coordinates = 0, normals = 0;
+  //! OBJ texture coordinates and normals per corner (filled by the OBJ reader only).
+  CornerAttributes corners;
   //! Everything else the file holds that is read past, not kept (filled only when the reader is
   //! given attributes). See describe_unwritten().
   std::vector<NotKept> not_kept;
@@ -230,18 +260,21 @@ Soup read_soup(const std::string& path, ReadInfo* info = nullptr,
 //! face carry their original's colour), OBJ groups moved to the first output face of each (a
 //! group left with no face gives way to the next one that starts there); the missing-colour flags
 //! mapped the same way; the 3MF objects of the faces (`face_objects`) through `mesh.face_origin`
-//! too; channels, `material_libraries`, the vt/vn counts, `double_precision`, `length_unit` and
-//! `metadata` kept. An origin outside the input (kNoIndex: a face added by hole filling) gets
-//! the default colour and is flagged as having none. The result belongs to `mesh` itself, element
-//! by element: it is for callers that keep attributes per output element. write_mesh() takes the
-//! input's attributes and maps them itself; handing it these instead would map them twice. \pre
-//! `mesh.face_origin` is non-decreasing (repair keeps the face order; added faces, marked kNoIndex,
-//! come last)
+//! too; the OBJ vt/vn of the corners through `mesh.corner_origin` (carry_corner_attributes in
+//! core/src/io/formats.h: a corner repair inserted into a side is interpolated between its ends,
+//! a corner of an added face has none); channels, `material_libraries`, the vt/vn counts,
+//! `double_precision`, `length_unit` and `metadata` kept. An origin outside the input (kNoIndex: a
+//! face added by hole filling) gets the default colour and is flagged as having none. The result
+//! belongs to `mesh` itself, element by element: it is for callers that keep attributes per output
+//! element. write_mesh() takes the input's attributes and maps them itself; handing it these
+//! instead would map them twice. \pre `mesh.face_origin` is non-decreasing (repair keeps the face
+//! order; added faces, marked kNoIndex, come last)
 MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& mesh);
 
 //! What write_mesh() leaves out when it writes a mesh read with `attributes` to `path` (format
 //! by extension), as far as the attributes tell: one phrase per kind, e.g. "24 texture
-//! coordinates (vt) and 8 normals (vn) not written: MeshBridge writes neither", "face colours not
+//! coordinates (vt) and 8 normals (vn) not written: PLY holds none per corner (write OBJ to keep
+//! them)" (OBJ writes them), "face colours not
 //! written: STL holds none", "3 vertices without a colour written white: PLY gives every vertex a
 //! colour or none", "OBJ groups and materials not written (2 o/g/usemtl lines, 1 mtllib line):
 //! PLY holds none", and each NotKept of the attributes. Empty when the output holds all
@@ -278,7 +311,10 @@ struct WrittenOutput {
 //! repair welded `vertices_welded` vertices (RepairReport::gaps), that their colours gave way.
 WrittenOutput describe_written(const std::string& path, const Soup& soup,
                                const MeshAttributes& attributes, std::size_t vertices_welded = 0);
-//! describe_written() of the mesh write_mesh(path, mesh, &attributes) wrote: the same, and
+//! describe_written() of the mesh write_mesh(path, mesh, &attributes) wrote: the same; for an OBJ
+//! output whose input corners had vt or vn, the faces hole filling added, written without ("2
+//! faces added by hole filling written without texture coordinates (vt) and normals (vn): they
+//! have no input corner to take them from"); and
 //! where the faces are of several 3MF objects (MeshAttributes::face_objects, mapped through
 //! `mesh.face_origin`), a 3MF output's rounding is measured object by object.
 WrittenOutput describe_written(const std::string& path, const IndexedMesh& mesh,
@@ -329,7 +365,9 @@ struct WriteOptions {
 //! (polygons cut by ear clipping in their plane: the triangles cover the polygon, not more).
 //! Colours of `attributes` (of the soup `mesh` came from) are carried through `vertex_origin`
 //! and `face_origin` where the format holds them (OFF faces, PLY vertices and faces); a face
-//! with origin kNoIndex (added by hole filling) gets the default colour.
+//! with origin kNoIndex (added by hole filling) gets the default colour. OBJ also gets the
+//! attributes' `vt`/`vn` records and each corner's through `corner_origin` (see
+//! carry_attributes(); a face gets vt (vn) only when all its corners have one).
 //! The file is written under a unique temporary name beside `path` and renamed on success, so
 //! on any error the previous file at `path` is untouched and no temporary file stays. A `path`
 //! that is a device or a pipe (/dev/stdout, a FIFO) is written in place, never replaced

@@ -86,6 +86,7 @@ MeshAttributes carry_attributes(const MeshAttributes& input, const IndexedMesh& 
   out.texture_coordinates = input.texture_coordinates;
   out.normals = input.normals;
   out.not_kept = input.not_kept;
+  out.corners = detail::carry_corner_attributes(input.corners, mesh);
   out.metadata = input.metadata;
   // The 3MF object of each output face (an added face: of the faces around it).
   out.face_objects = detail::output_face_objects(mesh.soup, mesh.face_origin, input.face_objects);

@@ -130,7 +130,12 @@ std::vector<std::string> describe_unwritten(const std::string& path,
   const Format format = detail::format_of(path);
   const std::string name = name_of(format);
   std::vector<std::string> lost;
-  if (attributes.texture_coordinates + attributes.normals > 0) {
+  // OBJ writes the records it kept (CornerAttributes); the other formats hold none per corner.
+  const CornerAttributes& corners = attributes.corners;
+  const bool corners_kept = corners.texture_coordinates.size() == attributes.texture_coordinates &&
+                            corners.normals.size() == attributes.normals;
+  if (attributes.texture_coordinates + attributes.normals > 0 &&
+      !(format == Format::obj && corners_kept)) {
     std::string what;
     if (attributes.texture_coordinates > 0)
       what = counted(attributes.texture_coordinates, "texture coordinate") + " (vt)";
@@ -138,7 +143,10 @@ std::vector<std::string> describe_unwritten(const std::string& path,
       what += " and ";
     if (attributes.normals > 0)
       what += counted(attributes.normals, "normal") + " (vn)";
-    lost.push_back(what + " not written: MeshBridge writes neither");
+    lost.push_back(what + " not written: " +
+                   (format == Format::obj
+                        ? std::string("they were not kept (read without them)")
+                        : name + " holds none per corner (write OBJ to keep them)"));
   }
   const bool writes_vertex_colors =
       format == Format::obj || format == Format::off || format == Format::ply;
@@ -260,6 +268,21 @@ WrittenOutput describe_written(const std::string& path, const Soup& soup,
   if (vertices_welded > 0 && !attributes.vertex_colors.empty()) {
     written.left_out.push_back("colours of " + counted(vertices_welded, "welded vertex") +
                                " not written: each takes the colour of the vertex it welded into");
+  }
+  // OBJ: the faces hole filling added have no input corner to take a vt or vn from.
+  const CornerAttributes& corners = attributes.corners;
+  if (format == detail::Format::obj &&
+      (!corners.corner_texture.empty() || !corners.corner_normal.empty())) {
+    const std::size_t added =
+        static_cast<std::size_t>(std::count(face_origin.begin(), face_origin.end(), kNoIndex));
+    if (added > 0) {
+      const bool both = !corners.corner_texture.empty() && !corners.corner_normal.empty();
+      written.left_out.push_back(
+          counted(added, "face") + " added by hole filling written without " +
+          (!corners.corner_texture.empty() ? "texture coordinates (vt)" : "") +
+          (both ? " and " : "") + (!corners.corner_normal.empty() ? "normals (vn)" : "") +
+          ": they have no input corner to take them from");
+    }
   }
   if (format == detail::Format::stl || format == detail::Format::threemf) {
     for (std::size_t f = 0; f < soup.num_faces(); ++f) {

@@ -182,6 +182,14 @@ inline Index input_vertex(const IndexedMesh& mesh, std::size_t v) {
 inline Index input_face(const IndexedMesh& mesh, std::size_t f) {
   return mesh.face_origin.empty() ? static_cast<Index>(f) : mesh.face_origin[f];
 }
+//! The OBJ texture coordinates and normals of the corners of `mesh`, from `input` (of the soup
+//! `mesh` was repaired from) through `mesh.corner_origin` (identity when empty): each corner
+//! takes its input corner's records; a corner repair inserted into a side (a midpoint split, a
+//! closed T-junction: its origin repeats its neighbour's) gets records interpolated between the
+//! side's two corners by its position along it (new records, appended after the input's); a
+//! corner of a face hole filling added (origin kNoIndex) gets none. Every input record is kept.
+CornerAttributes carry_corner_attributes(const CornerAttributes& input, const IndexedMesh& mesh);
+
 //! The colour of the input element `origin` (from input_vertex / input_face), or the default
 //! colour (opaque black) for an element with no input (kNoIndex: a face added by hole filling).
 inline Rgba colour_of(const std::vector<Rgba>& colours, Index origin) {

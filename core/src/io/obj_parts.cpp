@@ -35,6 +35,31 @@ RecordCounts count_records(const char* p, const char* end) {
   return n;
 }
 
+// Appends the part's vt/vn records and its corners' records (its first corner `corner_base` of
+// the file), resolving its relative indices from the records before it (`attributes`' counts).
+void append_corner_attributes(ObjPart& part, std::size_t corner_base, MeshAttributes& attributes) {
+  CornerAttributes& kept = attributes.corners;
+  CornerAttributes& given = part.attributes.corners;
+  const std::int64_t before[2] = {static_cast<std::int64_t>(attributes.texture_coordinates),
+                                  static_cast<std::int64_t>(attributes.normals)};
+  for (int slot = 0; slot < 2; ++slot) {
+    std::vector<Index>& records = slot == 0 ? given.corner_texture : given.corner_normal;
+    for (const auto& [corner, offset] : part.relative.attributes[slot]) {
+      const std::int64_t record = before[slot] + offset;
+      records[corner] = record >= 0 ? static_cast<Index>(record) : kNoIndex;
+    }
+    if (records.empty())
+      continue;
+    std::vector<Index>& out = slot == 0 ? kept.corner_texture : kept.corner_normal;
+    out.resize(corner_base, kNoIndex);
+    out.insert(out.end(), records.begin(), records.end());
+  }
+  kept.texture_coordinates.insert(kept.texture_coordinates.end(), given.texture_coordinates.begin(),
+                                  given.texture_coordinates.end());
+  kept.normals.insert(kept.normals.end(), given.normals.begin(), given.normals.end());
+  kept.texture_components = std::max(kept.texture_components, given.texture_components);
+}
+
 }  // namespace
 
 void rescale_unit_colours(const ColourScale& scale, MeshAttributes& attributes) {
@@ -141,6 +166,7 @@ bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attr
       pad_missing_colors(colors, missing, vertices_after);
     }
     attributes->vertex_color_channels |= part.attributes.vertex_color_channels;
+    append_corner_attributes(part, soup.num_corners(), *attributes);
     attributes->texture_coordinates += part.attributes.texture_coordinates;
     attributes->normals += part.attributes.normals;
     for (std::string& library : part.attributes.material_libraries)

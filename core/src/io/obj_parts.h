@@ -20,6 +20,10 @@ struct RelativeCorners {
   //! corner given as a negative index: its vertex is (vertices before the part) + that offset.
   std::vector<std::pair<std::size_t, std::int64_t>> corners;
   std::int64_t lowest = 0;  //!< lowest offset of any relative index (faces, l, p), or 0
+  //! (soup corner, vt (0) / vn (1) records read in the part before it + its negative index) of
+  //! every face corner whose vt / vn index is negative: its record is (records of the kind
+  //! before the part) + that offset, none if that is below 0.
+  std::vector<std::pair<std::size_t, std::int64_t>> attributes[2];
 };
 
 //! The texture coordinate (vt, slot 0) and normal (vn, slot 1) indices of the corners a reader

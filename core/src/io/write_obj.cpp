@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // OBJ writer: the input's mtllib lines, "v x y z [r g b [a]]" (shortest exact decimals; a colour
-// only where the input vertex had one; alpha only when some vertex is not opaque), "f a b c ..."
-// (1-based), and the input's o/g/usemtl groups before the first face of each.
+// only where the input vertex had one; alpha only when some vertex is not opaque), the input's
+// "vt" and "vn" records (and those interpolated for corners repair inserted), "f a b c ..." or
+// "f a/ta/na ..." (1-based; vt or vn on a face only when all its corners have one), and the
+// input's o/g/usemtl groups before the first face of each.
 
 #include "io/formats.h"
 #include "io/text_output.h"
@@ -37,6 +39,27 @@ void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
     }
     text.ch('\n');
   }
+  const CornerAttributes corners = attributes != nullptr
+                                       ? carry_corner_attributes(attributes->corners, mesh)
+                                       : CornerAttributes();
+  const int components = std::max(corners.texture_components, 2);
+  for (const std::array<double, 3>& t : corners.texture_coordinates) {
+    text.text("vt ").number(t[0]).ch(' ').number(t[1]);
+    if (components == 3)
+      text.ch(' ').number(t[2]);
+    text.ch('\n');
+  }
+  for (const std::array<double, 3>& n : corners.normals)
+    text.text("vn ").number(n[0]).ch(' ').number(n[1]).ch(' ').number(n[2]).ch('\n');
+  const auto every_corner = [&soup](const std::vector<Index>& records, std::size_t f) {
+    if (records.empty())
+      return false;
+    for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
+      if (records[c] == kNoIndex)
+        return false;
+    }
+    return true;
+  };
   const std::vector<FaceGroup>* groups = attributes != nullptr && !attributes->face_groups.empty()
                                              ? &attributes->face_groups
                                              : nullptr;
@@ -64,8 +87,18 @@ void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
       }
     }
     text.ch('f');
-    for (Index v : soup.polygon(f))
-      text.ch(' ').number(static_cast<std::uint64_t>(v) + 1);
+    const bool texture = every_corner(corners.corner_texture, f);
+    const bool normal = every_corner(corners.corner_normal, f);
+    for (Index c = soup.face_begin[f]; c < soup.face_begin[f + 1]; ++c) {
+      text.ch(' ').number(static_cast<std::uint64_t>(soup.corner_vertices[c]) + 1);
+      if (texture || normal) {
+        text.ch('/');
+        if (texture)
+          text.number(static_cast<std::uint64_t>(corners.corner_texture[c]) + 1);
+        if (normal)
+          text.ch('/').number(static_cast<std::uint64_t>(corners.corner_normal[c]) + 1);
+      }
+    }
     text.ch('\n');
   }
   // Group lines after the input's last face (a trailing "g" or "usemtl") follow the faces.
