@@ -2,6 +2,7 @@
 // The report schema (docs/report-schema.md), written with nlohmann-json. Key order is fixed by
 // nlohmann::ordered_json, so equal reports give equal bytes.
 #include "meshbridge/report_json.h"
+#include "meshbridge/report_tree.h"
 
 #include "meshbridge/self_intersections.h"
 
@@ -189,13 +190,76 @@ Json figures(const BuildFigures& f) {
               {"components", f.components}};
 }
 
+//! Walks `json` into `visitor` (ReportVisitor's order).
+void visit_json(const Json& json, ReportVisitor& visitor) {
+  switch (json.type()) {
+    case Json::value_t::object:
+      visitor.begin_object();
+      for (const auto& [name, value] : json.items()) {
+        visitor.key(name);
+        visit_json(value, visitor);
+      }
+      visitor.end_object();
+      break;
+    case Json::value_t::array:
+      visitor.begin_array();
+      for (const Json& value : json)
+        visit_json(value, visitor);
+      visitor.end_array();
+      break;
+    case Json::value_t::string:
+      visitor.string(to_valid_utf8(json.get_ref<const std::string&>()));
+      break;
+    case Json::value_t::boolean:
+      visitor.boolean(json.get<bool>());
+      break;
+    case Json::value_t::number_integer:
+      visitor.integer(json.get<std::int64_t>());
+      break;
+    case Json::value_t::number_unsigned:
+      visitor.unsigned_integer(json.get<std::uint64_t>());
+      break;
+    case Json::value_t::number_float:
+      visitor.real(json.get<double>());
+      break;
+    default:  // null, and the binary and discarded kinds no report holds
+      visitor.null_value();
+      break;
+  }
+}
+
 }  // namespace
 
-std::string check_report_json(const std::string& file, const DefectReport& report,
-                              const ReadInfo* read, const ReportJsonOptions& options,
-                              const CloseGapsReport* gaps,
-                              const SelfIntersectionReport* self_intersections,
-                              const OrientationPreview* orientation) {
+struct ReportTree::Values {
+  Json json;
+};
+
+ReportTree::ReportTree(std::unique_ptr<Values> values) : values_(std::move(values)) {}
+ReportTree::ReportTree(ReportTree&&) noexcept = default;
+ReportTree& ReportTree::operator=(ReportTree&&) noexcept = default;
+ReportTree::~ReportTree() = default;
+
+void ReportTree::visit(ReportVisitor& visitor) const {
+  visit_json(values_->json, visitor);
+}
+
+std::string ReportTree::text(int indent) const {
+  return dump(values_->json, indent);
+}
+
+namespace {
+
+ReportTree tree_of(Json json) {
+  return ReportTree(std::make_unique<ReportTree::Values>(ReportTree::Values{std::move(json)}));
+}
+
+}  // namespace
+
+ReportTree check_report_tree(const std::string& file, const DefectReport& report,
+                             const ReadInfo* read, const ReportJsonOptions& options,
+                             const CloseGapsReport* gaps,
+                             const SelfIntersectionReport* self_intersections,
+                             const OrientationPreview* orientation) {
   Json out = header("check", file);
   if (read)
     out["read"] = read_json(*read);
@@ -208,7 +272,16 @@ std::string check_report_json(const std::string& file, const DefectReport& repor
   }
   if (self_intersections)
     out["self_intersections"] = self_intersections_json(*self_intersections, options.elements);
-  return dump(out, options.indent);
+  return tree_of(std::move(out));
+}
+
+std::string check_report_json(const std::string& file, const DefectReport& report,
+                              const ReadInfo* read, const ReportJsonOptions& options,
+                              const CloseGapsReport* gaps,
+                              const SelfIntersectionReport* self_intersections,
+                              const OrientationPreview* orientation) {
+  return check_report_tree(file, report, read, options, gaps, self_intersections, orientation)
+      .text(options.indent);
 }
 
 std::string check_failed_json(const std::string& file, const std::string& reason,
@@ -219,11 +292,11 @@ std::string check_failed_json(const std::string& file, const std::string& reason
   return dump(out, options.indent);
 }
 
-std::string repair_report_json(const std::string& file, const std::string& output,
-                               const RepairReport& report, const ReadInfo* read,
-                               const ReportJsonOptions& options, const DefectReport* reread,
-                               const WrittenOutput* written,
-                               const SelfIntersectionReport* self_intersections) {
+ReportTree repair_report_tree(const std::string& file, const std::string& output,
+                              const RepairReport& report, const ReadInfo* read,
+                              const ReportJsonOptions& options, const DefectReport* reread,
+                              const WrittenOutput* written,
+                              const SelfIntersectionReport* self_intersections) {
   Json out = header("repair", file);
   if (!output.empty())
     out["output"] = output;
@@ -233,7 +306,17 @@ std::string repair_report_json(const std::string& file, const std::string& outpu
   add_written(out, written);
   if (self_intersections)
     out["self_intersections"] = self_intersections_json(*self_intersections, options.elements);
-  return dump(out, options.indent);
+  return tree_of(std::move(out));
+}
+
+std::string repair_report_json(const std::string& file, const std::string& output,
+                               const RepairReport& report, const ReadInfo* read,
+                               const ReportJsonOptions& options, const DefectReport* reread,
+                               const WrittenOutput* written,
+                               const SelfIntersectionReport* self_intersections) {
+  return repair_report_tree(file, output, report, read, options, reread, written,
+                            self_intersections)
+      .text(options.indent);
 }
 
 std::string compare_report_json(const std::string& file, std::size_t soup_vertices,

@@ -25,12 +25,11 @@ Errors: :class:`InvalidMeshError` (a ``ValueError``) names the face, corner or v
 :class:`ReadError` and :class:`WriteError` (``OSError``) name the file.
 
 The GIL is released while a file is read or written and while a mesh is checked or repaired,
-so threads run those in parallel (file reading and writing take turns within one process).
+so threads run those in parallel.
 """
 
 from __future__ import annotations
 
-import json
 import warnings
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
@@ -235,7 +234,7 @@ def check(
 
     Raises :class:`InvalidMeshError` naming the offending face, corner or vertex.
     """
-    return json.loads(_core.check(_soup(vertices, faces), elements, self_intersections))
+    return _core.check(_soup(vertices, faces), elements, self_intersections)
 
 
 def repair(
@@ -273,7 +272,7 @@ def repair(
     soup = _soup(vertices, faces)
     native = _repair_options(options)
     v, f, report, vertex_origin, face_origin, corner_origin = _core.repair(soup, native, elements)
-    return RepairResult(v, f, json.loads(report), vertex_origin, face_origin, corner_origin)
+    return RepairResult(v, f, report, vertex_origin, face_origin, corner_origin)
 
 
 def _repair_options(options: Dict[str, Any]) -> "_core.RepairOptions":

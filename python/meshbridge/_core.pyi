@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Type stubs of the compiled module meshbridge._core (use the meshbridge package's functions)."""
 
-from typing import Any, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -89,13 +89,15 @@ def read(path: str) -> Soup: ...
 def write(
     path: str, soup: Soup, vertex_origin: Optional[npt.ArrayLike] = None
 ) -> Tuple[int, int, int, float]: ...
-def check(soup: Soup, elements: bool = False, self_intersections: bool = False) -> str: ...
+def check(
+    soup: Soup, elements: bool = False, self_intersections: bool = False
+) -> Dict[str, Any]: ...
 def repair(
     soup: Soup, options: RepairOptions, elements: bool = False
 ) -> Tuple[
     npt.NDArray[np.float64],
     _Faces,
-    str,
+    Dict[str, Any],
     npt.NDArray[np.int32],
     npt.NDArray[np.int32],
     npt.NDArray[np.int32],

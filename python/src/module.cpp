@@ -310,16 +310,21 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "check",
       [](const PySoup& soup, bool elements, bool self_intersections) {
-        py::gil_scoped_release release;
-        validate_soup(soup.soup);
-        DefectReport report = detect_defects(soup.soup);
-        if (!soup.path.empty())
-          count_records_without_corners(soup.info, report);
-        std::unique_ptr<SelfIntersectionReport> crossings;
-        if (self_intersections)
-          crossings = std::make_unique<SelfIntersectionReport>(find_self_intersections(soup.soup));
-        return check_json(soup.path, report, soup.path.empty() ? nullptr : &soup.info, elements,
-                          crossings.get());
+        std::optional<ReportTree> tree;
+        {
+          py::gil_scoped_release release;
+          validate_soup(soup.soup);
+          DefectReport report = detect_defects(soup.soup);
+          if (!soup.path.empty())
+            count_records_without_corners(soup.info, report);
+          std::unique_ptr<SelfIntersectionReport> crossings;
+          if (self_intersections)
+            crossings =
+                std::make_unique<SelfIntersectionReport>(find_self_intersections(soup.soup));
+          tree.emplace(check_tree(soup.path, report, soup.path.empty() ? nullptr : &soup.info,
+                                  elements, crossings.get()));
+        }
+        return to_dict(*tree);
       },
       py::arg("soup"), py::arg("elements") = false, py::arg("self_intersections") = false);
 
@@ -327,7 +332,7 @@ PYBIND11_MODULE(_core, m) {
       "repair",
       [](const PySoup& soup, const RepairOptions& options, bool elements) {
         std::unique_ptr<RepairResult> result;
-        std::string json;
+        std::optional<ReportTree> tree;
         {
           py::gil_scoped_release release;
           RepairOptions file_options = options;
@@ -335,10 +340,10 @@ PYBIND11_MODULE(_core, m) {
           result = std::make_unique<RepairResult>(repair(soup.soup, file_options));
           if (!soup.path.empty())
             count_records_without_corners(soup.info, result->report);
-          json = repair_json(soup.path, result->report, soup.path.empty() ? nullptr : &soup.info,
-                             elements);
+          tree.emplace(repair_tree(soup.path, result->report,
+                                   soup.path.empty() ? nullptr : &soup.info, elements));
         }
-        return repair_result_tuple(std::move(result), soup.soup, std::move(json));
+        return repair_result_tuple(std::move(result), soup.soup, *tree);
       },
       py::arg("soup"), py::arg("options"), py::arg("elements") = false);
 
