@@ -4,6 +4,7 @@
 #include "meshbridge/validate.h"
 
 #include "detection.h"
+#include "geometry/newell_normal.h"
 #include "parallel_parts.h"
 #include "pipeline/fans.h"
 #include "pipeline/orientation.h"

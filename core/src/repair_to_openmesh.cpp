@@ -3,6 +3,7 @@
 
 #include "meshbridge/validate.h"
 
+#include "geometry/signed_volume.h"
 #include "openmesh_streams.h"
 #include "union_find.h"
 #include "working_soup.h"
@@ -102,13 +103,7 @@ bool build_if_already_manifold(const Soup& soup, PolyMesh& mesh) {
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     const PolygonView polygon = soup.polygon(f);
     const Index c = component[polygon[0]];
-    const Point& p0 = soup.positions[polygon[0]];
-    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      const double term = OpenMesh::dot(
-          p0, OpenMesh::cross(soup.positions[polygon[i]], soup.positions[polygon[i + 1]]));
-      volume[c] += term;
-      magnitude[c] += std::abs(term);
-    }
+    detail::add_fan_volume(soup, polygon, Point(0, 0, 0), volume[c], magnitude[c]);
   }
   for (std::size_t c = 0; c < num_components; ++c) {
     if (volume[c] < -1e-9 * magnitude[c])

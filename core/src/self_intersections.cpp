@@ -6,7 +6,7 @@
 
 #include "meshbridge/validate.h"
 
-#include "io/triangulate.h"
+#include "geometry/triangulate.h"
 #include "parallel_parts.h"
 #include "triangle_pairs.h"
 #include "union_find.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/stl_round_trip.h"
 
-#include "io/triangulate.h"
+#include "geometry/triangulate.h"
 
 #include "meshbridge/close_gaps.h"
 #include "meshbridge/detect_defects.h"

@@ -3,7 +3,7 @@
 // attribute is lost without a word.
 
 #include "io/formats.h"
-#include "io/triangulate.h"
+#include "geometry/triangulate.h"
 #ifdef MESHBRIDGE_WITH_3MF
 #include "io/objects_3mf.h"
 #endif

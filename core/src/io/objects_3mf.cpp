@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/objects_3mf.h"
 
-#include "io/triangulate.h"
+#include "geometry/triangulate.h"
 #include "meshbridge/errors.h"
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 // STL has no shared vertices and only 32-bit floats in binary: a reader welds by position again.
 #include "io/formats.h"
 #include "io/text_output.h"
-#include "io/triangulate.h"
+#include "geometry/triangulate.h"
 
 #include "meshbridge/errors.h"
 

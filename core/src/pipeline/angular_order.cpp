@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "geometry/newell_normal.h"
 
 namespace meshbridge::detail {
 

@@ -35,21 +35,4 @@ std::vector<Index> boundary_sides(const EdgeBridges& bridges) {
   return sides;
 }
 
-Point newell_normal(const Soup& soup, std::size_t f) {
-  return newell_normal(soup, soup.polygon(f));
-}
-
-Point newell_normal(const Soup& soup, PolygonView polygon) {
-  Point n(0, 0, 0);
-  const std::size_t k = polygon.size();
-  for (std::size_t i = 0; i < k; ++i) {
-    const Point& p = soup.positions[polygon[i]];
-    const Point& q = soup.positions[polygon[(i + 1) % k]];
-    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-  }
-  return n;
-}
-
 }  // namespace meshbridge::detail

@@ -32,9 +32,4 @@ inline bool runs_along(const Soup& soup, const CornerFaces& corner_face, Index c
   return soup.corner_vertices[c] < soup.corner_vertices[soup.next_corner(c, corner_face[c])];
 }
 
-//! Newell normal (twice the vector area) of polygon f.
-Point newell_normal(const Soup& soup, std::size_t f);
-//! Newell normal of the polygon with the corners `polygon` (vertices of `soup`).
-Point newell_normal(const Soup& soup, PolygonView polygon);
-
 }  // namespace meshbridge::detail

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline/orientation.h"
 
+#include "geometry/newell_normal.h"
+#include "geometry/signed_volume.h"
 #include "pipeline/nesting.h"
 
 #include "union_find.h"
@@ -15,19 +17,6 @@ namespace {
 // Rounding-error scales are multiplied by this before a value is trusted over them: a few
 // thousand times the double precision epsilon, so far above any real accumulated error.
 constexpr double kRoundingMargin = 1e-12;
-
-// Sum of the magnitudes of the products newell_normal() adds up for face f: its rounding error
-// is at most a few epsilons of this.
-double newell_rounding_scale(const Soup& soup, Index f) {
-  const PolygonView polygon = soup.polygon(f);
-  double scale = 0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Point& p = soup.positions[polygon[i]];
-    const Point& q = soup.positions[polygon[(i + 1) % polygon.size()]];
-    scale += (p - q).norm() * (p + q).norm();
-  }
-  return scale;
-}
 
 // Two paired sides run the same way iff they start at the same vertex.
 bool same_way(const Soup& soup, Index c, Index m) {
@@ -89,15 +78,7 @@ class ComponentOrienter {
       const Index k = component_[f];
       const PolygonView polygon = soup_.polygon(f);
       double v = 0;
-      const Point a = soup_.positions[polygon[0]] - reference_[k];
-      for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-        const Point b = soup_.positions[polygon[i]] - reference_[k];
-        const Point c = soup_.positions[polygon[i + 1]] - reference_[k];
-        const double term = OpenMesh::dot(a, OpenMesh::cross(b, c));
-        v += term;
-        magnitude_[k] += std::abs(term);
-        noise_[k] += a.norm() * b.norm() * c.norm();
-      }
+      add_fan_volume(soup_, polygon, reference_[k], v, magnitude_[k], &noise_[k]);
       volume_[k] += flipped_[f] ? -v : v;
       for (Index c = soup_.face_begin[f]; c < soup_.face_begin[f + 1]; ++c) {
         if (mate_[c] == kNoIndex)

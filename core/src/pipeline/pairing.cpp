@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline/pairing.h"
 
+#include "geometry/newell_normal.h"
+#include "geometry/signed_volume.h"
 #include "parallel_parts.h"
 #include "pipeline/angular_order.h"
 #include "union_find.h"
@@ -117,13 +119,7 @@ std::vector<char> inside_out_faces(const Soup& soup, const GroupedSides& grouped
     const PolygonView p = soup.polygon(f);
     if (reference[r] == kNoIndex)
       reference[r] = p[0];
-    const Point o = soup.positions[reference[r]];
-    const Point a = soup.positions[p[0]] - o;
-    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-      const double term = (a | ((soup.positions[p[i]] - o) % (soup.positions[p[i + 1]] - o)));
-      volume[r] += term;
-      magnitude[r] += std::abs(term);
-    }
+    add_fan_volume(soup, p, soup.positions[reference[r]], volume[r], magnitude[r]);
   }
   std::vector<char> open(num_faces, 0);  // per root
   for (Index f : odd_edge_face)

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "io/triangulate.h"
+#include "geometry/triangulate.h"
 
 #include "meshbridge/polygon_triangles.h"
 
-#include "pipeline/grouping.h"
+#include "geometry/newell_normal.h"
 #include "working_soup.h"
 
 #include <algorithm>
