@@ -2,8 +2,8 @@
 // What a write leaves out of what the reader kept: the output format's limits, named so that no
 // attribute is lost without a word.
 
-#include "io/formats.h"
 #include "geometry/triangulate.h"
+#include "io/formats.h"
 #ifdef MESHBRIDGE_WITH_3MF
 #include "io/objects_3mf.h"
 #endif

@@ -2,9 +2,9 @@
 // The STL writer: binary (default) or ascii triangles; polygons are cut into triangles by ear
 // clipping (triangulate_polygon()), each facet gets its unit normal (0 0 0 for a zero-area one).
 // STL has no shared vertices and only 32-bit floats in binary: a reader welds by position again.
+#include "geometry/triangulate.h"
 #include "io/formats.h"
 #include "io/text_output.h"
-#include "geometry/triangulate.h"
 
 #include "meshbridge/errors.h"
 
