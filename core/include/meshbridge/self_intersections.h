@@ -24,7 +24,8 @@ struct FacePair {
 //! Options of find_self_intersections().
 struct SelfIntersectionOptions {
   //! Threads to use; 0 (default) = as many as MeshBridge may use (MESHBRIDGE_THREADS, else the
-  //! CPUs of this process, at most 8). The result is the same for every count.
+  //! CPUs of this process, at most 8), one per 65,536 triangles; > 0 = exactly this many, at
+  //! any size. The result (every list, in its order) is the same for every count.
   unsigned threads = 0;
 };
 
