@@ -168,6 +168,51 @@ TEST(SelfIntersections, coplanar_overlap) {
 // the plate) give that wall twice, with opposite winding: the two copies overlap over their
 // whole area, a coplanar overlap, so they count (face contact; edge and vertex contact do not).
 // Exactly those pairs and no other, before and after repair (which keeps every wall).
+// Where repair splits one pair's edge p-q at its midpoint m, the faces of that pair have m as a
+// corner and those of the other pair do not: a triangle (p, m, x) meets (p, q, r) along p-m, a
+// side from their one shared corner. Touching, not crossing: in space, or in one plane across
+// p-q; in one plane on the same side of p-q they overlap, and count. (Two planes through p-q
+// meet nowhere else, so no fold passes there.)
+TEST(SelfIntersections, touching_along_a_side_from_the_shared_corner) {
+  const auto contact = [](const Point& x, const Point& r) {
+    Soup soup;
+    for (const Point& v : {Point(0, 0, 0), Point(2, 0, 0), Point(1, 0, 0), x, r})
+      soup.add_vertex(v);
+    soup.add_polygon({0, 2, 3});  // (p, m, x) and (m, q, x): one pair's face, cut at m
+    soup.add_polygon({2, 1, 3});
+    soup.add_polygon({1, 0, 4});  // (q, p, r): the other pair's face, without m
+    return counts_over_orders(soup).pairs;
+  };
+  EXPECT_EQ(contact({1, 1, 0}, {1, 0, 1}), 0u);    // at right angles
+  EXPECT_EQ(contact({1, 1, 0}, {1, -1, 0}), 0u);   // in one plane, across p-q
+  EXPECT_EQ(contact({1, 1, 1}, {1, 1, -1}), 0u);   // at an acute angle
+  EXPECT_EQ(contact({1, 1, 0}, {1, 2, 0}), 2u);    // in one plane, on one side: they overlap
+  EXPECT_EQ(contact({1, 1, 0}, {0.5, 3, 0}), 2u);  // the same, the other wider
+  // Faces that share no corner still count at any contact (as CGAL counts them).
+  Soup apart;
+  for (const Point& v : {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0.5, 0, 0),
+                         Point(3, 0, 0), Point(1, 0, 1)})
+    apart.add_vertex(v);
+  apart.add_polygon({0, 1, 2});
+  apart.add_polygon({3, 4, 5});
+  EXPECT_EQ(counts_over_orders(apart).pairs, 1u);
+}
+
+//! The self-intersecting face pairs of a file, read as it is.
+std::size_t pairs_in(const std::string& path) {
+  return find_self_intersections(read_soup(path)).face_pairs.size();
+}
+
+// A real part whose repair splits 4 edges at their midpoint: the output holds the input's pairs
+// and no more (the midpoints touch the other pair's edges, touching is not crossing).
+TEST(SelfIntersections, repair_adds_none_where_it_splits_edges) {
+  const std::string in = std::string(MESHBRIDGE_REALWORLD_DIR) + "2/ur_ur20_forearm_collision.stl";
+  const RepairResult repaired = repair(read_soup(in));
+  ASSERT_EQ(repaired.report.edges_split_to_stay_manifold, 4u);
+  EXPECT_EQ(pairs_in(in), 790u);
+  EXPECT_EQ(find_self_intersections(repaired.mesh.soup).face_pairs.size(), 790u);
+}
+
 TEST(SelfIntersections, solids_sharing_a_wall_overlap_on_it) {
   struct Case {
     Soup soup;
