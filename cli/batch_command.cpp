@@ -188,11 +188,10 @@ void print_table_row(const Entry& e, bool crossings) {
 //! data per file, harmless kinds counted), in either mode.
 void print_entry(const Entry& e, const BatchArguments& arguments, BatchWarnings& warnings) {
   warnings.file(e.name, e.warnings);
-  if (arguments.json) {
+  if (arguments.json)
     std::cout << e.record << "\n";
-  } else {
+  else
     print_table_row(e, arguments.self_intersections);
-  }
 }
 
 int run_batch(const BatchArguments& arguments) {
@@ -411,11 +410,9 @@ int run_batch(const BatchArguments& arguments) {
     ++count[static_cast<int>(e.status)];
     crossing += e.row.crossing_pairs > 0 ? 1 : 0;
     // Skipped because up to date is fine; skipped because unreadable is not.
-    if (e.status == FileStatus::failed || !e.job) {
+    if (e.status == FileStatus::failed || !e.job ||
+        (e.status == FileStatus::skipped && !e.up_to_date))
       all_written = false;
-    } else if (e.status == FileStatus::skipped && !e.up_to_date) {
-      all_written = false;
-    }
   }
   std::ostringstream summary;
   summary << entries.size() << " file(s): " << count[int(FileStatus::clean)] << " clean, "
