@@ -45,7 +45,8 @@ struct BatchArguments {
   bool progress = false;
   bool in_place = false;
   bool resume = false;
-  bool print = false;  //!< as repair --print: the slicer preset, 3MF outputs
+  bool print = false;               //!< as repair --print: the slicer preset, 3MF outputs
+  bool self_intersections = false;  //!< count the crossing faces of each output
   bool weld_given = false, fill_holes_given = false;
   std::string log;                //!< "" = OUTDIR/.meshbridge-batch.jsonl
   std::string weld = "auto";      //!< as repair --weld
@@ -60,6 +61,7 @@ struct TableRow {
   std::size_t faces_in = 0, singular_edges = 0, singular_vertices = 0, faces_out = 0;
   std::size_t components_after = 0;
   bool watertight_after = false;
+  long long crossing_pairs = -1;  //!< self-intersecting face pairs of the output; -1: not sought
 };
 
 //! One line of the outcome: a job's result, or an unreadable entry found while listing.
@@ -86,14 +88,16 @@ void take_result(Entry& entry, const FileJobResult& result, const FileJob& job) 
   const DefectReport& after = result.reread ? *result.reread : p.after;
   entry.row = {p.faces_in,  p.before.singular_edges.size(), p.before.num_singular_vertices(),
                p.faces_out, after.num_components,           after.watertight};
+  if (result.crossings)
+    entry.row.crossing_pairs = static_cast<long long>(result.crossings->face_pairs.size());
 }
 
 // With --jobs > 1 every file is repaired in a child process of its own: a file that crashes its
 // child or runs it out of memory fails alone instead of ending the run, and each child's memory
 // goes back to the system when it ends.
 // The child sends its result over a pipe: "status faces_in singular_edges singular_vertices
-// faces_out components_after watertight reason_length warnings_length\n", the reason, the
-// warnings, then the record.
+// faces_out components_after watertight crossing_pairs reason_length warnings_length\n", the
+// reason, the warnings, then the record.
 
 void write_all(int fd, const std::string& data) {
   for (std::size_t done = 0; done < data.size();) {
@@ -119,8 +123,8 @@ void write_all(int fd, const std::string& data) {
   std::ostringstream head;
   head << static_cast<int>(entry.status) << ' ' << r.faces_in << ' ' << r.singular_edges << ' '
        << r.singular_vertices << ' ' << r.faces_out << ' ' << r.components_after << ' '
-       << (r.watertight_after ? 1 : 0) << ' ' << entry.reason.size() << ' ' << entry.warnings.size()
-       << '\n';
+       << (r.watertight_after ? 1 : 0) << ' ' << r.crossing_pairs << ' ' << entry.reason.size()
+       << ' ' << entry.warnings.size() << '\n';
   write_all(fd, head.str() + entry.reason + entry.warnings + entry.record);
   ::close(fd);
   ::_exit(0);
@@ -136,7 +140,7 @@ bool decode_child(const std::string& data, Entry& entry) {
   std::size_t reason_size = 0, reading_size = 0;
   TableRow& r = entry.row;
   if (!(head >> status >> r.faces_in >> r.singular_edges >> r.singular_vertices >> r.faces_out >>
-        r.components_after >> watertight >> reason_size >> reading_size) ||
+        r.components_after >> watertight >> r.crossing_pairs >> reason_size >> reading_size) ||
       status < 0 || status > 3 || data.size() < newline + 1 + reason_size + reading_size) {
     return false;
   }
@@ -164,27 +168,30 @@ void child_failed(Entry& entry, int wait_status) {
       batch_record_json(entry.name, entry.job->output_name, "failed", entry.reason, nullptr);
 }
 
-void print_table_row(const Entry& e) {
+//! A table row; with `crossings` (--self-intersections) a column of crossing face pairs.
+void print_table_row(const Entry& e, bool crossings) {
   std::cout << "| " << e.name << " | " << to_string(e.status) << " | ";
   if (e.status == FileStatus::clean || e.status == FileStatus::repaired) {
     const TableRow& r = e.row;
     std::cout << r.faces_in << " | " << r.singular_edges << " | " << r.singular_vertices << " | "
               << r.faces_out << " | " << r.components_after << " | "
-              << (r.watertight_after ? "yes" : "no") << " | |\n";
+              << (r.watertight_after ? "yes" : "no") << " | ";
+    if (crossings)
+      std::cout << r.crossing_pairs << " | ";
+    std::cout << "|\n";
   } else {  // failed or skipped: no counts, the reason in the last column
-    std::cout << "| | | | | | " << e.reason << " |\n";
+    std::cout << "| | | | | | " << (crossings ? "| " : "") << e.reason << " |\n";
   }
 }
 
 //! The entry's JSON record or table row on stdout; its warnings on stderr (BatchWarnings: lost
 //! data per file, harmless kinds counted), in either mode.
-void print_entry(const Entry& e, bool json, BatchWarnings& warnings) {
+void print_entry(const Entry& e, const BatchArguments& arguments, BatchWarnings& warnings) {
   warnings.file(e.name, e.warnings);
-  if (json) {
+  if (arguments.json)
     std::cout << e.record << "\n";
-  } else {
-    print_table_row(e);
-  }
+  else
+    print_table_row(e, arguments.self_intersections);
 }
 
 int run_batch(const BatchArguments& arguments) {
@@ -209,6 +216,7 @@ int run_batch(const BatchArguments& arguments) {
     options.print_keeps_weld = arguments.weld_given;
     options.print_keeps_fill_holes = arguments.fill_holes_given;
   }
+  options.self_intersections = arguments.self_intersections;
   BatchPlan plan;
   try {
     plan = plan_batch(arguments.in_dir, arguments.out_dir, options, arguments.in_place);
@@ -286,8 +294,10 @@ int run_batch(const BatchArguments& arguments) {
   BatchProgress progress(to_do, !arguments.quiet && (terminal || arguments.progress), terminal);
   if (!arguments.json) {
     std::cout << "| file | status | faces | singular edges | singular vertices | faces out | "
-                 "components after | watertight after | note |\n"
-                 "|---|---|---:|---:|---:|---:|---:|---|---|\n";
+                 "components after | watertight after | "
+              << (arguments.self_intersections ? "self-intersecting pairs | " : "")
+              << "note |\n|---|---|---:|---:|---:|---:|---:|---|"
+              << (arguments.self_intersections ? "---:|" : "") << "---|\n";
   }
   std::vector<char> done(entries.size(), 0);
   for (std::size_t i = 0; i < entries.size(); ++i)
@@ -300,12 +310,12 @@ int run_batch(const BatchArguments& arguments) {
     log_entry(entries[i]);
     progress.clear();
     for (; next_to_print < entries.size() && done[next_to_print]; ++next_to_print)
-      print_entry(entries[next_to_print], arguments.json, warnings);
+      print_entry(entries[next_to_print], arguments, warnings);
     std::cout.flush();
     progress.file_done(entries[i].name, ++files_done, failed_so_far);
   };
   for (; next_to_print < entries.size() && done[next_to_print]; ++next_to_print)
-    print_entry(entries[next_to_print], arguments.json, warnings);
+    print_entry(entries[next_to_print], arguments, warnings);
   std::cout.flush();
 
   if (arguments.jobs <= 1) {
@@ -394,20 +404,23 @@ int run_batch(const BatchArguments& arguments) {
   std::cout.flush();
   warnings.finish();
   std::size_t count[4] = {0, 0, 0, 0};
+  std::size_t crossing = 0;  // files whose output has self-intersections (sought and found)
   bool all_written = true;
   for (const Entry& e : entries) {
     ++count[static_cast<int>(e.status)];
+    crossing += e.row.crossing_pairs > 0 ? 1 : 0;
     // Skipped because up to date is fine; skipped because unreadable is not.
-    if (e.status == FileStatus::failed || !e.job) {
+    if (e.status == FileStatus::failed || !e.job ||
+        (e.status == FileStatus::skipped && !e.up_to_date))
       all_written = false;
-    } else if (e.status == FileStatus::skipped && !e.up_to_date) {
-      all_written = false;
-    }
   }
   std::ostringstream summary;
   summary << entries.size() << " file(s): " << count[int(FileStatus::clean)] << " clean, "
           << count[int(FileStatus::repaired)] << " repaired, " << count[int(FileStatus::failed)]
-          << " failed, " << count[int(FileStatus::skipped)] << " skipped\n";
+          << " failed, " << count[int(FileStatus::skipped)] << " skipped";
+  if (arguments.self_intersections)
+    summary << "; " << crossing << " with self-intersections";
+  summary << "\n";
   if (arguments.json) {
     if (!arguments.quiet)
       std::cerr << summary.str();
@@ -475,6 +488,10 @@ void add_batch_command(CLI::App& app, int& exit_code) {
                     "as PrusaSlicer's load-time repair (unless --weld), duplicate and zero-area "
                     "faces removed unless that opens the surface, holes of up to 32 edges filled "
                     "(unless --fill-holes), every output written as 3MF");
+  command->add_flag("--self-intersections", arguments->self_intersections,
+                    "also count the faces of each output that cross or overlap (as repair "
+                    "--self-intersections): a table column, the records' self_intersections, "
+                    "and the files with some in the summary");
   command->callback([arguments, command, &exit_code] {
     arguments->weld_given = command->count("--weld") > 0;
     arguments->fill_holes_given = command->count("--fill-holes") > 0;

@@ -62,6 +62,8 @@ std::string batch_options_text(const FileJobOptions& options) {
     text << " print=1 print_keeps_weld=" << options.print_keeps_weld
          << " print_keeps_fill_holes=" << options.print_keeps_fill_holes;
   }
+  if (options.self_intersections)  // (only when on, as print)
+    text << " self_intersections=1";
   return text.str();
 }
 

@@ -209,7 +209,8 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     result.record =
         batch_record_json(job.name, job.output_name, to_string(status), reason, report, read, json,
                           report != nullptr && result.reread ? &*result.reread : nullptr,
-                          report != nullptr ? &result.written : nullptr);
+                          report != nullptr ? &result.written : nullptr,
+                          report != nullptr && result.crossings ? &*result.crossings : nullptr);
     return result;
   };
 
@@ -236,11 +237,13 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     file_options.print = options.print;
     file_options.print_keeps_weld = options.print_keeps_weld;
     file_options.print_keeps_fill_holes = options.print_keeps_fill_holes;
+    file_options.self_intersections = options.self_intersections;
     repair_file(job.input, job.output, file_options, file);
     if (file.info.changed_anything())
       result.reading = describe_reading(file.info);
     result.written = std::move(file.written);
     result.reread = std::move(file.reread);
+    result.crossings = std::move(file.crossings);
     result.report = std::move(file.report);
     const RepairReport& r = result.report;
     // Clean: the mesh is written as read, every vertex and face in place.

@@ -334,7 +334,8 @@ std::string batch_record_json(const std::string& file, const std::string& output
                               const char* status, const std::string& reason,
                               const RepairReport* report, const ReadInfo* read,
                               const ReportJsonOptions& options, const DefectReport* reread,
-                              const WrittenOutput* written) {
+                              const WrittenOutput* written,
+                              const SelfIntersectionReport* self_intersections) {
   Json out = header("batch", file);
   if (!output.empty())
     out["output"] = output;
@@ -346,6 +347,8 @@ std::string batch_record_json(const std::string& file, const std::string& output
   if (report) {
     add_repair(out, *report, options.elements, reread);
     add_written(out, written);
+    if (self_intersections)
+      out["self_intersections"] = self_intersections_json(*self_intersections, options.elements);
   }
   return dump(out, options.indent);
 }

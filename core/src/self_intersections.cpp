@@ -108,11 +108,9 @@ Triangles cut_faces(const Soup& soup, const std::vector<Index>& id, std::size_t 
   return out;
 }
 
-//! The soup's triangles in face order, the faces cut in `threads` parts side by side.
-Triangles cut_into_triangles(const Soup& soup, const std::vector<Index>& id, unsigned threads) {
+//! The soup's triangles in face order, the faces cut in `parts` parts side by side.
+Triangles cut_into_triangles(const Soup& soup, const std::vector<Index>& id, unsigned parts) {
   const std::size_t faces = soup.num_faces();
-  const unsigned parts =
-      std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(faces / 65536 + 1)));
   std::vector<Triangles> part(parts);
   detail::run_parts(parts, [&](unsigned k) {
     part[k] = cut_faces(soup, id, detail::part_begin(faces, parts, k),
@@ -399,17 +397,21 @@ SelfIntersectionReport find_self_intersections(const Soup& soup,
         "was built without CGAL, whose exact predicates they need; Debian: libcgal-dev)");
   }
   SelfIntersectionReport report;
-  const unsigned threads =
-      std::max(1u, options.threads ? options.threads : detail::worker_threads());
+  // Threads for `items` elements: as asked, or by default one per 65,536 (small meshes on one
+  // thread: starting threads would cost more than it saves), at most worker_threads().
+  const auto share = [&options](std::size_t items) {
+    if (options.threads > 0)
+      return options.threads;
+    return std::max(
+        1u, std::min<unsigned>(detail::worker_threads(), static_cast<unsigned>(items / 65536 + 1)));
+  };
   const std::vector<Index> id = ids_by_position(soup);
-  Triangles triangles = cut_into_triangles(soup, id, threads);
+  Triangles triangles = cut_into_triangles(soup, id, share(soup.num_faces()));
   report.degenerate_triangles = triangles.degenerate;
   Grid grid(triangles.box);
-  // Small meshes on one thread: starting threads would cost more than it saves.
-  const unsigned share =
-      std::min<unsigned>(threads, static_cast<unsigned>(triangles.box.size() / 65536 + 1));
-  order_by_cell(triangles, grid, share);
-  report.face_pairs = intersecting_pairs(soup, triangles, grid, share);
+  const unsigned threads = share(triangles.box.size());
+  order_by_cell(triangles, grid, threads);
+  report.face_pairs = intersecting_pairs(soup, triangles, grid, threads);
 
   for (const FacePair& p : report.face_pairs) {
     report.faces.push_back(p.f0);

@@ -45,6 +45,32 @@ bool strictly_one_side(const P3& a, const P3& b, const P3& c, const P3& p, const
   return CGAL::orientation(a, b, c, q) == op && CGAL::orientation(a, b, c, r) == op;
 }
 
+//! True if triangles (p, a, b) and (p, c, d), which share only p, meet through side (a, b)
+//! only where they touch along a side from p: `a` lies on side p-c or p-d of the other triangle
+//! (so its side p-a runs along that side), and `b` is off the other's plane (side (a, b) meets
+//! it at `a` alone) or in it across that side (the two touch along p-a only). Repair leaves such
+//! contacts where it splits one pair's edge at its midpoint: the midpoint lies on the edge of
+//! the other pair's faces, which do not have it as a corner.
+bool touch_along_a_side(const P3& p, const P3& a, const P3& b, const P3& c, const P3& d) {
+  for (int k = 0; k < 2; ++k) {
+    const P3& e = k == 0 ? c : d;  // the side p-e that `a` may lie on, `f` the third corner
+    const P3& f = k == 0 ? d : c;
+    if (!CGAL::collinear(p, a, e) || !CGAL::collinear_are_ordered_along_line(p, a, e))
+      continue;
+    if (CGAL::orientation(p, c, d, b) != CGAL::COPLANAR)
+      return true;
+    return CGAL::coplanar_orientation(p, e, f, b) == CGAL::NEGATIVE;
+  }
+  return false;
+}
+
+//! True if side (a, b) of triangle (p, a, b) meets triangle (p, c, d) (sharing only p) other than
+//! by touching along a side from p (touch_along_a_side(), with either end of the side).
+bool side_folds_into(const P3& p, const P3& a, const P3& b, const P3& c, const P3& d) {
+  return segment_meets_triangle(a, b, p, c, d) && !touch_along_a_side(p, a, b, c, d) &&
+         !touch_along_a_side(p, b, a, c, d);
+}
+
 //! Rotates `t` so that its corner i comes first (the winding is kept).
 TriangleCorners rotated(const TriangleCorners& t, int i) {
   return {t[i], t[(i + 1) % 3], t[(i + 2) % 3]};
@@ -96,12 +122,13 @@ bool triangles_intersect(const Point* positions, const TriangleCorners& t,
     return CGAL::do_intersect(Kernel::Triangle_3(a, b, c), Kernel::Triangle_3(d, e, f));
   }
   if (shared == 1) {
-    // t = (p, a, b), u = (p, c, d): a fold if a side opposite p meets the other triangle.
+    // t = (p, a, b), u = (p, c, d): a fold if a side opposite p meets the other triangle
+    // (touching along a side from p is no fold).
     const TriangleCorners tr = rotated(t, ti[0]), ur = rotated(u, ui[0]);
     const P3 p = point(positions, tr[0]);
     const P3 a = point(positions, tr[1]), b = point(positions, tr[2]);
     const P3 c = point(positions, ur[1]), d = point(positions, ur[2]);
-    return segment_meets_triangle(a, b, p, c, d) || segment_meets_triangle(c, d, p, a, b);
+    return side_folds_into(p, a, b, c, d) || side_folds_into(p, c, d, a, b);
   }
   // shared == 2: t = (p, q, a), u = (., ., b) around the shared edge p-q; they meet off that
   // edge only when coplanar with a and b on the same side of it.

@@ -112,6 +112,7 @@ class FileJobOptions:
     print: bool
     print_keeps_weld: bool
     print_keeps_fill_holes: bool
+    self_intersections: bool
     def __init__(self) -> None: ...
 
 def plan_batch(

@@ -18,7 +18,8 @@ or options changed is redone. After a kill every file ends up done exactly once.
 gives one ``failed`` record and the run goes on; so does a file whose worker died on it.
 
 Options as ``meshbridge batch``: ``--format obj|off|ply|stl|3mf``, ``--weld TOL|auto``,
-``--fill-holes [MAX_EDGES]``, ``--pairing``; the same options give the same output files.
+``--fill-holes [MAX_EDGES]``, ``--pairing``, ``--print``, ``--self-intersections``; the same
+options give the same output files and records.
 
 Memory: tasks carry paths, not meshes; a worker reads its file itself, so a worker holds at most
 ``--threads-per-worker`` meshes (default 1), and the client keeps at most ``--in-flight`` tasks
@@ -57,6 +58,9 @@ class BatchSummary:
     done_now: int = 0  #: files finished by this run
     seconds: float = 0.0  #: wall time of this run, Dask's start included
     startup_seconds: float = 0.0  #: of which starting the LocalCluster or connecting to Dask
+    #: the outputs' self-intersections were sought (``self_intersections=True``): the table's
+    #: column and the summary's count of files with some
+    self_intersections: bool = False
 
     @property
     def ok(self) -> bool:
@@ -73,32 +77,45 @@ class BatchSummary:
 
     def table(self) -> str:
         """``meshbridge batch``'s stdout without --json: a Markdown table and the summary line."""
+        crossing = self.self_intersections
         rows = [
             "| file | status | faces | singular edges | singular vertices | faces out | "
-            "components after | watertight after | note |",
-            "|---|---|---:|---:|---:|---:|---:|---|---|",
+            "components after | watertight after | "
+            + ("self-intersecting pairs | " if crossing else "") + "note |",
+            "|---|---|---:|---:|---:|---:|---:|---|" + ("---:|" if crossing else "") + "---|",
         ]
         for line in self.sorted_records():
             r = json.loads(line)
             if r["status"] in ("clean", "repaired"):
                 # An STL output counts as it will be re-read ("reread"), as in the CLI.
                 after = r.get("reread", r["after"])
+                pairs = f"{r['self_intersections']['face_pairs']} | " if crossing else ""
                 rows.append(
                     f"| {r['file']} | {r['status']} | {r['faces_in']} | "
                     f"{r['before']['singular_edges']} | {r['before']['singular_vertices']} | "
                     f"{r['faces_out']} | {after['components']} | "
-                    f"{'yes' if after['watertight'] else 'no'} | |"
+                    f"{'yes' if after['watertight'] else 'no'} | {pairs}|"
                 )
             else:  # failed or skipped: no counts, the reason in the last column
-                rows.append(f"| {r['file']} | {r['status']} | | | | | | | {r.get('reason', '')} |")
+                rows.append(f"| {r['file']} | {r['status']} | | | | | | | "
+                            + ("| " if crossing else "") + f"{r.get('reason', '')} |")
         return "\n".join(rows) + "\n" + self.summary_line() + "\n"
 
     def summary_line(self) -> str:
-        """``N file(s): c clean, r repaired, f failed, s skipped``, as the CLI prints it."""
+        """``N file(s): c clean, r repaired, f failed, s skipped`` (with ``self_intersections``:
+        ``; k with self-intersections``), as the CLI prints it."""
         counts = ", ".join(
             f"{self.statuses.get(s, 0)} {s}" for s in ("clean", "repaired", "failed", "skipped")
         )
-        return f"{len(self.records)} file(s): {counts}"
+        line = f"{len(self.records)} file(s): {counts}"
+        if self.self_intersections:
+            line += f"; {self.files_with_self_intersections()} with self-intersections"
+        return line
+
+    def files_with_self_intersections(self) -> int:
+        """Files whose record counts at least one self-intersecting face pair in the output."""
+        return sum(1 for record in self.records.values()
+                   if json.loads(record).get("self_intersections", {}).get("face_pairs", 0) > 0)
 
 
 def _job_options(options: Dict[str, Any]) -> "_core.FileJobOptions":
@@ -113,6 +130,7 @@ def _job_options(options: Dict[str, Any]) -> "_core.FileJobOptions":
         native.print = True
         native.print_keeps_weld = "weld" in options.get("repair", {})
         native.print_keeps_fill_holes = "fill_holes" in options.get("repair", {})
+    native.self_intersections = bool(options.get("self_intersections", False))
     return native
 
 
@@ -164,6 +182,7 @@ def run_batch(
     in_place: bool = False,
     separate_stl_copies: bool = True,
     print_preset: bool = False,
+    self_intersections: bool = False,
     progress: Optional[Callable[[int, int, str, str], None]] = None,
     warnings: Optional[Callable[[str, str], None]] = None,
 ) -> BatchSummary:
@@ -179,7 +198,10 @@ def run_batch(
     as repaired (default True; False keeps positions exact, as ``meshbridge batch --separate 0``).
     ``repair``: options of :func:`meshbridge.repair`. ``print_preset``: the slicer route of
     ``meshbridge batch --print`` (outputs 3MF; gap closing and hole filling of the preset unless
-    ``repair`` names ``weld`` / ``fill_holes``). ``in_flight``: tasks submitted at once
+    ``repair`` names ``weld`` / ``fill_holes``). ``self_intersections``: as ``meshbridge batch
+    --self-intersections``, each record gains the ``self_intersections`` object of the output as
+    written (crossing face pairs, faces, component pairs); noted in the log, so a rerun without
+    it redoes every file. ``in_flight``: tasks submitted at once
     (default 4 per worker thread). ``progress(done, total, name, status)`` is called per file,
     ``warnings(name, lines)`` per file this run finished with warnings (lines as the CLI prints
     them; :class:`BatchWarnings` prints them as the CLI does).
@@ -194,7 +216,8 @@ def run_batch(
                              f"objects and no re-weld; got format {format!r}")
         format = "3mf"
     options = {"format": format, "elements": elements, "repair": dict(repair or {}),
-               "separate_stl_copies": separate_stl_copies, "print_preset": print_preset}
+               "separate_stl_copies": separate_stl_copies, "print_preset": print_preset,
+               "self_intersections": self_intersections}
     native = _job_options(options)
     jobs, unreadable = _core.plan_batch(in_dir, out_dir, native, in_place)
     log_path = log_path or os.path.join(out_dir, LOG_NAME)
@@ -206,7 +229,8 @@ def run_batch(
             if name in by_name and _core.is_done_in_log(line, by_name[name], native)[0]}
     _core.write_batch_log(log_path, list(kept.values()))
     summary = BatchSummary(records={name: _core.record_of_log_line(line)
-                                    for name, line in kept.items()})
+                                    for name, line in kept.items()},
+                           self_intersections=self_intersections)
     summary.done_before = len(summary.records)
     total = len(by_name) + len(unreadable)
 
@@ -387,6 +411,10 @@ def _parse(argv: Optional[List[str]]) -> argparse.Namespace:
                         help="the slicer route of `meshbridge batch --print`: the preset's gap "
                         "closing and hole filling (unless --weld / --fill-holes), duplicate and "
                         "zero-area faces removed unless that opens the surface, 3MF outputs")
+    parser.add_argument("--self-intersections", action="store_true",
+                        help="also count the faces of each output that cross or overlap (as "
+                        "`meshbridge batch --self-intersections`): a table column, the records' "
+                        "self_intersections, the files with some in the summary")
     parser.add_argument("--in-place", action="store_true",
                         help="allow OUTDIR to be INDIR or inside it (originals are replaced)")
     parser.add_argument("--json", action="store_true",
@@ -430,6 +458,7 @@ def main(argv: Optional[List[str]] = None) -> int:
             in_place=arguments.in_place,
             separate_stl_copies=arguments.separate == "auto",
             print_preset=arguments.print_preset,
+            self_intersections=arguments.self_intersections,
             repair=dict({"pairing": arguments.pairing, "nested_shells": arguments.nested_shells},
                         **{name: value for name, value in (("weld", arguments.weld),
                                                            ("fill_holes", arguments.fill_holes))

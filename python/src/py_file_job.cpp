@@ -25,7 +25,8 @@ void bind_file_job(py::module_& m) {
       .def_readwrite("separate_stl_copies", &FileJobOptions::separate_stl_copies)
       .def_readwrite("print", &FileJobOptions::print)
       .def_readwrite("print_keeps_weld", &FileJobOptions::print_keeps_weld)
-      .def_readwrite("print_keeps_fill_holes", &FileJobOptions::print_keeps_fill_holes);
+      .def_readwrite("print_keeps_fill_holes", &FileJobOptions::print_keeps_fill_holes)
+      .def_readwrite("self_intersections", &FileJobOptions::self_intersections);
 
   // (jobs, unreadable): jobs as (input, output, name, output_name) sorted by name, unreadable
   // entries as (name, reason). std::invalid_argument (bad folders, format) becomes ValueError.

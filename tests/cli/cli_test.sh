@@ -908,6 +908,58 @@ check_self_intersections)
   expect_in "$work/out" "shared"
   expect_in "$work/out" "Shown violet: \`snapshot --self-intersections\` and MeshLab's Detect."
   ;;
+batch_self_intersections)
+  # batch --self-intersections: each output's crossing faces as repair --self-intersections
+  # counts them, with any --jobs: the crossing cubes 6 pairs, two cubes on one edge 0.
+  mkdir -p "$work/in"
+  write_crossing_obj "$work/in/crossing.obj"
+  cp "$models/twocubes.obj" "$work/in/"
+  for jobs in 1 2; do
+    expect_exit 0 "$mb" batch "$work/in" "$work/res$jobs" --self-intersections --json --jobs "$jobs"
+    [ "$(json_lines "$work/out")" = 2 ] || fail "2 records"
+    [ "$(json_line_field "$work/out" 0 self_intersections.face_pairs)" = 6 ] || fail "crossing pairs"
+    [ "$(json_line_field "$work/out" 0 self_intersections.faces)" = 6 ] || fail "crossing faces"
+    [ "$(json_line_field "$work/out" 0 self_intersections.component_pairs)" = 1 ] || fail "shells"
+    [ "$(json_line_field "$work/out" 1 self_intersections.face_pairs)" = 0 ] || fail "twocubes"
+    expect_in "$work/err" "2 file(s): 1 clean, 1 repaired, 0 failed, 0 skipped; 1 with self-intersections"
+    cp "$work/out" "$work/jobs$jobs.jsonl"
+  done
+  cmp -s "$work/jobs1.jsonl" "$work/jobs2.jsonl" || fail "--jobs 2 differs from --jobs 1"
+  # The record's object is repair --self-intersections' for the same file.
+  expect_exit 0 "$mb" repair "$work/in/crossing.obj" "$work/one.obj" --self-intersections \
+    --report "$work/one.json"
+  /usr/bin/python3 -c 'import json, sys
+one = json.load(open(sys.argv[1]))["self_intersections"]
+batch = json.loads(open(sys.argv[2]).readline())["self_intersections"]
+sys.exit(one != batch)' "$work/one.json" "$work/jobs1.jsonl" || fail "batch and repair differ"
+  expect_exit 0 "$mb" batch "$work/in" "$work/res4" --self-intersections --json --elements
+  [ "$(json_line_field "$work/out" 0 'self_intersections.elements.face_pairs#')" = 6 ] || fail "6 pairs listed"
+  # The table: a column of the output's pairs; failed files leave it empty.
+  printf 'v 0 0 0\nf 1 2 3\n' >"$work/in/broken.obj"
+  expect_exit 2 "$mb" batch "$work/in" "$work/table" --self-intersections
+  expect_in "$work/out" "| components after | watertight after | self-intersecting pairs | note |"
+  expect_in "$work/out" "|---|---|---:|---:|---:|---:|---:|---|---:|---|"
+  expect_in "$work/out" "| crossing.obj | clean | 12 | 0 | 0 | 12 | 2 | yes | 6 | |"
+  expect_in "$work/out" "| twocubes.obj | repaired | 24 | 1 | 2 | 24 | 2 | yes | 0 | |"
+  expect_in "$work/out" "| broken.obj | failed | | | | | | | | "
+  expect_in "$work/out" "3 file(s): 1 clean, 1 repaired, 1 failed, 0 skipped; 1 with self-intersections"
+  rm "$work/in/broken.obj"
+  # Without the flag: no column, no key, the summary as before.
+  expect_exit 0 "$mb" batch "$work/in" "$work/plain"
+  grep -q "self-intersecting" "$work/out" && fail "a column without --self-intersections"
+  expect_in "$work/out" "2 file(s): 1 clean, 1 repaired, 0 failed, 0 skipped"
+  # STL outputs: the quads written as triangles, the split copies moved apart (still touching).
+  expect_exit 0 "$mb" batch "$work/in" "$work/stl" --self-intersections --json --format stl
+  [ "$(json_line_field "$work/out" 0 self_intersections.component_pairs)" = 1 ] || fail "STL shells"
+  [ "$(json_line_field "$work/out" 1 self_intersections.face_pairs)" = 0 ] || fail "STL twocubes"
+  # The log keeps the option: --resume with it skips, without it redoes both files.
+  grep -c " self_intersections=1" "$work/res1/.meshbridge-batch.jsonl" | grep -qx 2 || fail "log"
+  expect_exit 0 "$mb" batch "$work/in" "$work/res1" --self-intersections --resume
+  expect_in "$work/out" "2 file(s): 0 clean, 0 repaired, 0 failed, 2 skipped"
+  expect_exit 0 "$mb" batch "$work/in" "$work/res1" --resume --json
+  expect_in "$work/err" "2 file(s): 1 clean, 1 repaired, 0 failed, 0 skipped"
+  grep -q '"self_intersections"' "$work/out" && fail "self_intersections without the flag"
+  ;;
 snapshot_self_intersections)
   # snapshot --self-intersections: the 6 crossing faces violet, counted by the drawing and by
   # ImageMagick alike; none without the flag, none on cubes that only touch (twocubes).

@@ -271,6 +271,81 @@ def test_print_preset_as_repair_print_in_both_batches(tmp_path):
     assert cli_refused.returncode == 2 and "--print writes 3MF" in cli_refused.stderr
 
 
+# Two unit cubes as quads, the second moved by (0.5, 0.5, 0.5): its three low faces cross the
+# first one's three high faces, two each (as tests/cli/cli_test.sh writes it).
+CROSSING_CUBES = "".join(
+    [f"v {x + d} {y + d} {z + d}\n" for d in (0, 0.5) for z in (0, 1) for y in (0, 1) for x in (0, 1)]
+    + [f"f {' '.join(str(i + 8 * c) for i in face)}\n" for c in (0, 1) for face in (
+        (1, 3, 4, 2), (5, 6, 8, 7), (1, 2, 6, 5), (3, 7, 8, 4), (1, 5, 7, 3), (2, 4, 8, 6))])
+
+
+def test_self_intersections_counted_in_both_batches(tmp_path):
+    """--self-intersections in the Dask batch and in `meshbridge batch` (one and two jobs): the
+    same records and table, the crossing cubes' 6 face pairs (6 faces, 1 pair of shells), the
+    two cubes touching along an edge 0 (also as STL, whose split copies are moved apart), as
+    `repair --self-intersections` counts them; the log keeps the option, so a run without it
+    redoes every file."""
+    if not CLI:
+        pytest.skip("MESHBRIDGE_CLI not set")
+    indir = tmp_path / "in"
+    indir.mkdir()
+    (indir / "crossing.obj").write_text(CROSSING_CUBES)
+    shutil.copy(SOURCE / "resources" / "models" / "twocubes.obj", indir / "twocubes.obj")
+    shutil.copy(SOURCE / "resources" / "models" / "twocubes.off", indir / "twocubes.off")
+    ours = batch(indir, tmp_path / "dask", "--workers", "1", "--json", "--quiet",
+                 "--self-intersections")
+    assert ours.returncode == 0, ours.stderr
+    records = {json.loads(line)["file"]: json.loads(line) for line in ours.stdout.splitlines()}
+    crossing = records["crossing.obj"]["self_intersections"]
+    assert (crossing["face_pairs"], crossing["faces"], crossing["component_pairs"]) == (6, 6, 1)
+    for name in ("twocubes.obj", "twocubes.off"):
+        assert records[name]["status"] == "repaired"
+        assert records[name]["self_intersections"]["face_pairs"] == 0
+    for jobs in ("1", "2"):
+        theirs = subprocess.run([CLI, "batch", indir, tmp_path / f"cli{jobs}", "--json", "--quiet",
+                                 "--self-intersections", "--jobs", jobs],
+                                capture_output=True, text=True, timeout=600)
+        assert theirs.returncode == 0, theirs.stderr
+        assert ours.stdout == theirs.stdout
+    for name in records:
+        report = tmp_path / f"{name}.json"
+        single = subprocess.run([CLI, "repair", indir / name, tmp_path / name, "--report", report,
+                                 "--self-intersections"], capture_output=True, text=True, timeout=600)
+        assert single.returncode == 0, single.stderr
+        assert json.loads(report.read_text())["self_intersections"] == \
+            records[name]["self_intersections"]
+    # The table: a column, and the files with some in the summary.
+    table = batch(indir, tmp_path / "table", "--workers", "1", "--quiet", "--self-intersections")
+    cli_table = subprocess.run([CLI, "batch", indir, tmp_path / "cli_table", "--quiet",
+                                "--self-intersections"], capture_output=True, text=True, timeout=600)
+    assert table.stdout == cli_table.stdout
+    assert "| watertight after | self-intersecting pairs | note |" in table.stdout
+    assert "| crossing.obj | clean | 12 | 0 | 0 | 12 | 2 | yes | 6 | |" in table.stdout
+    assert "3 file(s): 1 clean, 2 repaired, 0 failed, 0 skipped; 1 with self-intersections" \
+        in table.stdout
+    # STL outputs: counted on the repaired polygons as written (as repair counts them), the
+    # touching copies moved apart by the separation: still 0.
+    stl = batch(indir, tmp_path / "stl", "--workers", "1", "--json", "--quiet", "--format", "stl",
+                "--self-intersections")
+    cli_stl = subprocess.run([CLI, "batch", indir, tmp_path / "cli_stl", "--json", "--quiet",
+                              "--format", "stl", "--self-intersections"],
+                             capture_output=True, text=True, timeout=600)
+    assert stl.stdout == cli_stl.stdout
+    as_stl = {json.loads(line)["file"]: json.loads(line) for line in stl.stdout.splitlines()}
+    assert as_stl["crossing.obj"]["self_intersections"]["face_pairs"] == 6
+    assert as_stl["crossing.obj"]["self_intersections"]["component_pairs"] == 1
+    assert as_stl["twocubes.obj"]["self_intersections"]["face_pairs"] == 0
+    # The log keeps the option: the same run again does nothing, one without it everything.
+    log = (tmp_path / "dask" / ".meshbridge-batch.jsonl").read_text()
+    assert log.count(" self_intersections=1") == 3
+    again = batch(indir, tmp_path / "dask", "--workers", "1", "--self-intersections")
+    assert "3 file(s) done before (in the log), 0 now" in again.stderr, again.stderr
+    assert "; 1 with self-intersections" in again.stdout  # (from the logged records)
+    plain = batch(indir, tmp_path / "dask", "--workers", "1", "--json")
+    assert "0 file(s) done before (in the log), 3 now" in plain.stderr, plain.stderr
+    assert '"self_intersections"' not in plain.stdout
+
+
 def edited_json(indir: Path, outdir: Path, options) -> str:
     """The Python batch's --json records of a run with nothing left to do (all from its log)."""
     result = batch(indir, outdir, "--workers", "1", "--json", *options)

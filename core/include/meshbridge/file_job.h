@@ -57,6 +57,9 @@ struct FileJobOptions {
   bool print = false;
   bool print_keeps_weld = false;
   bool print_keeps_fill_holes = false;
+  //! Also find the faces of each output as written that cross or overlap
+  //! (RepairFileOptions::self_intersections; default false): the record's `self_intersections`.
+  bool self_intersections = false;
 };
 
 //! What plan_batch found below a folder.
@@ -100,6 +103,9 @@ struct FileJobResult {
   //! STL output only: detection on the written file as read back (STL keeps no shared vertices,
   //! so split vertex copies weld again); the record's `reread`. Empty for other formats.
   std::optional<DefectReport> reread;
+  //! With `options.self_intersections`, clean or repaired: the output's crossing faces
+  //! (find_self_intersections() of the mesh as written); the record's `self_intersections`.
+  std::optional<SelfIntersectionReport> crossings;
 };
 
 //! Reads `job.input`, repairs it with `options.repair`, writes `job.output` atomically (creating

@@ -89,16 +89,19 @@ std::string compare_report_json(const std::string& file, std::size_t soup_vertic
 //! One line of `batch --json`: `{"schema_version":1,"kind":"batch","file":...,"output":...,
 //! "status":"clean"|"repaired"|"failed"|"skipped"[,"reason":...][,"read":{...}]
 //! [,<repair
-//! counts>,"gaps":{...},"before":{...},"after":{...}[,"reread":{...}][,"written":{...}]]}`. The
-//! repair counts, `gaps` and `before`/`after` are those of repair_report_json() and are present
-//! exactly when `report` is not null (`reread` and `written` when they are not null too); `reason`
-//! (why it failed or was skipped) exactly when it is not empty; `output` when not empty.
+//! counts>,"gaps":{...},"before":{...},"after":{...}[,"reread":{...}][,"written":{...}]
+//! [,"self_intersections":{...}]]}`. The repair counts, `gaps` and `before`/`after` are those of
+//! repair_report_json() and are present exactly when `report` is not null (`reread`, `written`
+//! and `self_intersections`, the object of check_report_json() for the output as written, when
+//! they are not null too); `reason` (why it failed or was skipped) exactly when it is not empty;
+//! `output` when not empty.
 std::string batch_record_json(const std::string& file, const std::string& output,
                               const char* status, const std::string& reason,
                               const RepairReport* report, const ReadInfo* read = nullptr,
                               const ReportJsonOptions& options = {},
                               const DefectReport* reread = nullptr,
-                              const WrittenOutput* written = nullptr);
+                              const WrittenOutput* written = nullptr,
+                              const SelfIntersectionReport* self_intersections = nullptr);
 
 //! Converts a string of bytes to valid UTF-8 as described above (U+FFFD per invalid byte).
 std::string to_valid_utf8(const std::string& bytes);

@@ -24,7 +24,8 @@ struct FacePair {
 //! Options of find_self_intersections().
 struct SelfIntersectionOptions {
   //! Threads to use; 0 (default) = as many as MeshBridge may use (MESHBRIDGE_THREADS, else the
-  //! CPUs of this process, at most 8). The result is the same for every count.
+  //! CPUs of this process, at most 8), one per 65,536 triangles; > 0 = exactly this many, at
+  //! any size. The result (every list, in its order) is the same for every count.
   unsigned threads = 0;
 };
 
@@ -56,7 +57,10 @@ bool self_intersections_available();
 //! - no vertex: any common point counts (crossing, touching, or overlapping when coplanar), as
 //!   CGAL's self_intersections counts it;
 //! - one vertex: they intersect if either one's side opposite that vertex meets the other
-//!   triangle (a fold through the shared corner); meeting at the shared vertex alone does not;
+//!   triangle (a fold through the shared corner); meeting at the shared vertex alone does not,
+//!   nor touching along a side from it (a corner of one on a side of the other that starts at
+//!   the shared vertex, the two off each other's plane or in one plane on either side of that
+//!   side: so meet the faces around an edge that repair split at its midpoint);
 //! - one edge (two vertices): they intersect only if they are coplanar and lie on the same side
 //!   of that edge (folded flat onto each other); meeting along the shared edge alone does not;
 //! - three vertices (the same triangle twice): they overlap, and count.
