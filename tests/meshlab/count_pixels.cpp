@@ -6,11 +6,21 @@
 // and 0.8 of B and at least G + 40 (magenta pinch markers have R = B; MeshLab's blue background
 // has R = G, and passes the rest where it is (50, 50, 100)). MeshLab's pink selection overlay, its
 // trackball lines and anti-aliased grey edges do not count.
+// For the real-file tests (gui_realworld.sh) it also counts: selection pixels, MeshLab's pink
+// overlay on the selected faces (the faces at the defects, which Detect selects): R >= G + 30, G
+// and B within 12 of each other, G > 60 (the dark rim of a red tube is not pink); MeshLab's
+// background, a blue gradient with R = G (within 2) and B >= 1.7 R, near black (every channel <= 8)
+// at the top, (113, 113, 226) at the bottom; grey pixels, the shaded model (channels within 12 of
+// each other, the brightest >= 40); and model pixels, all that is not background (grey surface,
+// defect colours, selection, the trackball's thin lines).
 //
 // Usage: meshbridge_count_pixels IMAGE.ppm [X Y W H]    (the rectangle defaults to the image)
-// Prints: width=, height=, pixels= (in the rectangle), red=, green=, violet=.
+// Prints: width=, height=, pixels= (in the rectangle), red=, green=, violet=, selection=,
+// background=, grey=, model=.
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
@@ -74,7 +84,7 @@ int main(int argc, char** argv) {
         throw std::invalid_argument("rectangle lies outside the " + std::to_string(width) + "x" +
                                     std::to_string(height) + " image");
     }
-    long red = 0, green = 0, violet = 0;
+    long red = 0, green = 0, violet = 0, selection = 0, background = 0, grey = 0;
     for (long y = y0; y < y0 + h; ++y) {
       for (long x = x0; x < x0 + w; ++x) {
         const unsigned char* p = &rgb[std::size_t((y * width + x) * 3)];
@@ -84,10 +94,18 @@ int main(int argc, char** argv) {
                    p[0] >= p[1] + 40)
                       ? 1
                       : 0;
+        const int lo = std::min({p[0], p[1], p[2]}), hi = std::max({p[0], p[1], p[2]});
+        const bool back =
+            std::abs(p[0] - p[1]) <= 2 && ((p[2] > p[0] && 10 * p[2] >= 17 * p[0]) || hi <= 8);
+        background += back ? 1 : 0;
+        selection += (p[0] >= p[1] + 30 && std::abs(p[1] - p[2]) <= 12 && p[1] > 60) ? 1 : 0;
+        grey += (hi - lo <= 12 && hi >= 40) ? 1 : 0;
       }
     }
     std::cout << "width=" << width << "\nheight=" << height << "\npixels=" << w * h
-              << "\nred=" << red << "\ngreen=" << green << "\nviolet=" << violet << '\n';
+              << "\nred=" << red << "\ngreen=" << green << "\nviolet=" << violet
+              << "\nselection=" << selection << "\nbackground=" << background << "\ngrey=" << grey
+              << "\nmodel=" << w * h - background << '\n';
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "meshbridge_count_pixels: " << e.what() << '\n';

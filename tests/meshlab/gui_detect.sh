@@ -20,7 +20,9 @@
 #   FILTER   the filter's menu name (default "Detect Singular Defects (Bridged Half-Edge)")
 # Environment: COUNT_PIXELS (meshbridge_count_pixels, required), SIZE (screen, default
 #   1400x1100: a 3D view about 1000 pixels square), DRAG (optional "DX DY": after the filter,
-#   drag the view by DX, DY pixels with the left button, i.e. turn the model as a user does).
+#   drag the view by DX, DY pixels with the left button, i.e. turn the model as a user does),
+#   ZOOM (optional N: then turn the mouse wheel N steps forward at the view's centre, i.e. zoom
+#   in towards it; MeshLab's info panel shows the new field of view).
 set -uo pipefail
 
 meshlab=${1:?meshlab binary}
@@ -137,6 +139,10 @@ session() {
     local cx=$((vx + vw / 2)) cy=$((vy + vh / 2))
     xdotool mousemove "$cx" "$cy" mousedown 1 mousemove $((cx + dx / 2)) $((cy + dy / 2)) \
       mousemove $((cx + dx)) $((cy + dy)) mouseup 1
+  fi
+  if [ -n "${ZOOM:-}" ]; then
+    xdotool mousemove $((vx + vw / 2)) $((vy + vh / 2))
+    for _ in $(seq 1 "$ZOOM"); do xdotool click 5; done
   fi
   # Park the pointer outside the view (the status bar), then wait for a stable picture.
   xdotool mousemove $((width - 5)) $((height - 5))
