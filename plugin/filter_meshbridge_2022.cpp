@@ -25,10 +25,11 @@ mbm::FilterId filter_id(MeshLabPlugin::ActionIDType filter) {
 //! The counts as pymeshlab converts them: int, bool (flags) or double (reals) QVariants.
 std::map<std::string, QVariant> result_map(const std::vector<mbm::FilterCount>& counts) {
   std::map<std::string, QVariant> result;
+  using Kind = mbm::FilterCount::Kind;
   for (const mbm::FilterCount& c : counts) {
-    if (c.is_flag) {
+    if (c.kind == Kind::flag) {
       result[c.name] = QVariant(c.value != 0);
-    } else if (c.is_real) {
+    } else if (c.kind == Kind::real) {
       result[c.name] = QVariant(c.real);
     } else {
       result[c.name] = QVariant(int(c.value));

@@ -43,7 +43,7 @@ class MeshDocumentHost final : public DocumentHost {
 #if __has_include(<common/ml_document/mesh_document.h>)
       md_.delMesh(m->id());  // MeshLab >= 2022
 #else
-      md_.delMesh(m);  // MeshLab 2020.09
+      md_.delMesh(m);             // MeshLab 2020.09
 #endif
     }
     if (current != nullptr && md_.mm() != current &&
@@ -56,6 +56,13 @@ class MeshDocumentHost final : public DocumentHost {
   }
   std::string file_name() const override {
     return mesh_.fullName().toStdString();
+  }
+  void update_box_and_normals(CMeshO&) override {
+#if __has_include(<common/ml_document/mesh_document.h>)
+    mesh_.updateBoxAndNormals();  // MeshLab >= 2022
+#else
+    mesh_.UpdateBoxAndNormals();  // MeshLab 2020.09
+#endif
   }
 
  private:
