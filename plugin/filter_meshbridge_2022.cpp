@@ -96,18 +96,7 @@ int FilterMeshBridgePlugin::getPreConditions(const QAction*) const {
 }
 
 int FilterMeshBridgePlugin::postCondition(const QAction* action) const {
-  switch (ID(action)) {
-    case FP_DETECT_SINGULAR_DEFECTS:
-      // MM_FACECOLOR only when faces were coloured (applyFilter): it switches the mesh's
-      // rendering to per-face colour.
-      return MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_FACEFLAGSELECT;
-    case FP_REPAIR_SINGULAR_DEFECTS:
-      // Topology and vertex count change; copies of split vertices bring their colour/quality.
-      return MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
-             MeshModel::MM_VERTQUALITY | MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY |
-             MeshModel::MM_WEDGTEXCOORD | MeshModel::MM_VERTTEXCOORD;
-  }
-  return MeshModel::MM_ALL;
+  return mbm::changed_data_mask(filter_id(ID(action)));
 }
 
 FilterPlugin::FilterArity FilterMeshBridgePlugin::filterArity(const QAction*) const {
