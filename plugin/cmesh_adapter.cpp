@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_set>
+#include <utility>
 
 namespace meshbridge::meshlab {
 namespace {
@@ -91,6 +92,11 @@ void write_added_face(CMeshO& m, CFaceO& f, const TrianglePlan& t,
     f.N() = vcg::TriangleNormal(f).Normalize();
 }
 
+//! A CMeshO position as the core's soups hold it.
+Point widened(const CMeshO::CoordType& p) {
+  return Point(double(p[0]), double(p[1]), double(p[2]));
+}
+
 }  // namespace
 
 CMeshSoup soup_from_cmesh(CMeshO& m) {
@@ -102,9 +108,7 @@ CMeshSoup soup_from_cmesh(CMeshO& m) {
   for (auto vi = m.vert.begin(); vi != m.vert.end(); ++vi) {
     if (vi->IsD())
       continue;
-    const auto& p = vi->cP();
-    index_of[std::size_t(vi - m.vert.begin())] =
-        out.soup.add_vertex(Point(double(p[0]), double(p[1]), double(p[2])));
+    index_of[std::size_t(vi - m.vert.begin())] = out.soup.add_vertex(widened(vi->cP()));
     out.vertices.push_back(&*vi);
   }
   for (auto fi = m.face.begin(); fi != m.face.end(); ++fi) {
@@ -268,6 +272,9 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
       (fi++)->ImportData(*f);
   }
 
+  Soup written;
+  if (options.keep_soup)
+    written.reserve(vertex_source.size(), plan.size(), 3 * plan.size());
   const vcg::Color4b mesh_colour = m.C();
   m.Clear();  // keeps enabled components, textures, transform and user attributes' handles
   m.C() = mesh_colour;
@@ -284,6 +291,8 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
         vi->ImportData(old.vert[src]);
       }
       vi->ClearB();
+      if (options.keep_soup)
+        written.add_vertex(widened(vi->cP()));
       ++vi;
     }
   }
@@ -294,6 +303,8 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
     std::vector<std::pair<const CFaceO*, int>> corner_at(vertex_source.size(), {nullptr, 0});
     for (const TrianglePlan& t : plan) {
       CFaceO& f = *fi++;
+      if (options.keep_soup)
+        written.add_polygon({t.vertex[0], t.vertex[1], t.vertex[2]});
       if (t.origin == kNoIndex) {
         write_added_face(m, f, t, corner_at, wedge_tex, options);
         continue;
@@ -328,6 +339,8 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
   }
   report.faces_out = std::size_t(m.fn);
   report.vertices_out = std::size_t(m.vn);
+  if (options.keep_soup)
+    report.soup = std::move(written);
   return report;
 }
 

@@ -19,6 +19,7 @@
 #include "meshbridge/soup.h"
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace meshbridge::meshlab {
@@ -42,6 +43,9 @@ struct WriteBackOptions {
   //! True: face normals are left for the caller to recompute. False: face normals are copied
   //! and negated on flipped faces (vertex normals are always copied from the original vertex).
   bool recompute_normals = true;
+  //! Also hand back the rebuilt mesh as a soup (WriteBackReport::soup), made while writing, so a
+  //! caller that checks the result needs no second soup_from_cmesh(). Default: off.
+  bool keep_soup = false;
 };
 
 //! What write_repaired() did besides copying the core's result.
@@ -57,6 +61,9 @@ struct WriteBackReport {
   std::size_t triangles_from_fans = 0;  //!< extra triangles those polygons made
   std::size_t faces_flipped = 0;        //!< triangles whose corner order was reversed
   std::size_t faces_added = 0;          //!< faces with no input face (hole filling), last
+  //! With WriteBackOptions::keep_soup: `m` after the write-back, exactly as
+  //! soup_from_cmesh(m).soup would give it (positions as `m` stores them, widened to double).
+  std::optional<Soup> soup;
 };
 
 //! Replaces the content of `m` with `repaired` (the result of repairing `input.soup`).

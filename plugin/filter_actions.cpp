@@ -16,8 +16,10 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include <cctype>
+#include <initializer_list>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace meshbridge::meshlab {
 namespace {
@@ -43,25 +45,16 @@ void refresh_selection_counts(CMeshO& mesh) {
   mesh.sfn = int(vcg::tri::UpdateSelection<CMeshO>::FaceCount(mesh));
 }
 
-FilterCount count(const char* name, std::size_t value) {
-  return {name, static_cast<long long>(value), false};
+//! Appends the filter's own counts (what it drew, selected and wrote back), none of a report.
+void add_counts(ReportCounts& counts,
+                std::initializer_list<std::pair<const char*, std::size_t>> values) {
+  for (const auto& [name, value] : values)
+    counts.push_back({name, static_cast<long long>(value)});
 }
 
-FilterCount real(const char* name, double value) {
-  FilterCount c{name, 0, false};
-  c.is_real = true;
-  c.real = value;
-  return c;
-}
-
-//! Gap closing's counts, keys as in docs/report-schema.md's `gaps`.
-void add_gap_counts(std::vector<FilterCount>& counts, const CloseGapsReport& g) {
-  counts.push_back(real("gaps.tolerance", g.tolerance));
-  counts.push_back(count("gaps.vertices_welded", g.vertices_welded));
-  counts.push_back(real("gaps.largest_weld_distance", g.largest_weld_distance));
-  counts.push_back(count("gaps.welds_refused", g.welds_refused));
-  counts.push_back(count("gaps.t_junctions_closed", g.t_junctions_closed));
-  counts.push_back(count("gaps.sides_split", g.sides_split));
+//! Sets the count `name` that append_counts() gave to `value`.
+void set_count(ReportCounts& counts, const char* name, std::size_t value) {
+  find_count(counts, name)->value = static_cast<long long>(value);
 }
 
 //! Detect's line on what Repair's gap closing would do (the CLI's `check` says the same).
@@ -95,16 +88,15 @@ void clear_selection(CMeshO& mesh) {
   refresh_selection_counts(mesh);
 }
 
-//! The self-intersection counts, keys as in docs/report-schema.md's `self_intersections`.
-void add_crossing_counts(std::vector<FilterCount>& counts, const SelfIntersectionReport& s,
-                         std::size_t violet_faces) {
-  counts.push_back(count("self_intersections.face_pairs", s.face_pairs.size()));
-  counts.push_back(count("self_intersections.faces", s.faces.size()));
-  counts.push_back(count("self_intersections.component_pairs", s.component_pairs.size()));
-  counts.push_back(count("violet_faces", violet_faces));
-}
-
 }  // namespace
+
+void DocumentHost::update_box_and_normals(CMeshO& mesh) {
+  vcg::tri::UpdateBounding<CMeshO>::Box(mesh);
+  if (mesh.fn > 0) {
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(mesh);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexAngleWeighted(mesh);
+  }
+}
 
 bool self_intersections_by_default(std::size_t faces) {
   return faces <= kSelfIntersectionsDefaultMaxFaces;
@@ -224,54 +216,33 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
                " self-intersecting faces are not drawn in an Edges layer";
   }
 
-  const DefectReport& r = out.report;
-  std::size_t contenders = 0;
-  for (const SingularEdge& e : r.singular_edges)
-    contenders += e.contenders;
-  out.counts = {
-      count("vertices", r.num_vertices),
-      count("faces", r.num_faces),
-      count("edges", r.num_edges),
-      count("singular_edges", r.singular_edges.size()),
-      count("singular_edge_contenders", contenders),
-      count("singular_vertices", r.num_singular_vertices()),
-      count("singular_edge_vertices", r.singular_edge_vertices.size()),
-      count("pinch_vertices", r.pinch_vertices.size()),
-      count("boundary_edges", r.boundary_edges.size()),
-      count("boundary_loops", r.num_boundary_loops),
-      count("isolated_vertices", r.isolated_vertices.size()),
-      count("degenerate_faces", r.degenerate_faces.size()),
-      count("faces_set_aside", r.excluded_faces.size()),
-      count("zero_area_faces", r.zero_area_faces.size()),
-      count("duplicate_faces", r.duplicate_faces.size()),
-      count("inconsistent_edges", r.inconsistent_edges.size()),
-      count("nonorientable_components", r.num_nonorientable_components),
-      count("components", r.num_components),
-      {"euler_characteristic", r.euler_characteristic, false},
-      {"watertight", r.watertight ? 1 : 0, true},
-      count("red_edges", out.drawn.singular_edges),
-      count("green_edges", out.drawn.boundary_edges),
-      count("singular_vertex_markers", out.drawn.singular_vertex_markers),
-      count("selected_faces", options.select_faces ? out.selection.faces : 0),
-      count("selected_vertices", options.select_faces ? out.selection.vertices : 0),
-      count("coloured_faces", options.colour_faces ? out.selection.faces : 0),
-  };
-  add_gap_counts(out.counts, out.gaps);
-  if (out.crossings)
-    add_crossing_counts(out.counts, *out.crossings, out.violet_faces);
+  append_counts(out.counts, out.report);
+  add_counts(out.counts, {{"red_edges", out.drawn.singular_edges},
+                          {"green_edges", out.drawn.boundary_edges},
+                          {"singular_vertex_markers", out.drawn.singular_vertex_markers},
+                          {"selected_faces", options.select_faces ? out.selection.faces : 0},
+                          {"selected_vertices", options.select_faces ? out.selection.vertices : 0},
+                          {"coloured_faces", options.colour_faces ? out.selection.faces : 0}});
+  append_counts(out.counts, out.gaps);
+  if (out.crossings) {
+    append_counts(out.counts, *out.crossings);
+    add_counts(out.counts, {{"violet_faces", out.violet_faces}});
+  }
   return out;
 }
 
 RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
                                       const RepairFilterOptions& options, DocumentHost& host) {
   require_faces(mesh, label, "Repair Singular Defects");
-  WriteBackOptions write_options;
-  write_options.keep_set_aside_faces = !options.core.remove_degenerate_faces;
-  write_options.recompute_normals = options.recompute_normals;
-
   RepairOutcome out;
   const CMeshSoup soup = soup_from_cmesh(mesh);
   RepairResult result = repair(soup.soup, options.core);
+  WriteBackOptions write_options;
+  write_options.keep_set_aside_faces = !options.core.remove_degenerate_faces;
+  write_options.recompute_normals = options.recompute_normals;
+  // STL keeps no shared vertices: what a save of this layer as STL reads back as, checked on the
+  // soup the write-back makes of the layer.
+  write_options.keep_soup = is_stl_file_name(host.file_name()) || result.report.vertices_split != 0;
   // Throws before touching the mesh if the result does not fit.
   out.written =
       write_repaired(mesh, soup, result.mesh, result.report.before.excluded_faces, write_options);
@@ -291,19 +262,20 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
     vcg::tri::UpdateFlags<CMeshO>::FaceBorderFromNone(mesh);
   }
   vcg::tri::UpdateFlags<CMeshO>::VertexBorderFromFaceBorder(mesh);
-  vcg::tri::UpdateBounding<CMeshO>::Box(mesh);
-  if (options.recompute_normals && mesh.fn > 0) {
-    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(mesh);
-    vcg::tri::UpdateNormal<CMeshO>::PerVertexAngleWeighted(mesh);
+  if (options.recompute_normals) {
+    host.update_box_and_normals(mesh);
+  } else {
+    vcg::tri::UpdateBounding<CMeshO>::Box(mesh);
   }
   refresh_selection_counts(mesh);
   // The defects Detect showed are gone: its layer and its selection would only mislead.
   out.defect_layers_removed = host.remove_layers(defect_layer_label(label));
   if (out.defect_layers_removed != 0)
     clear_selection(mesh);
-  // STL keeps no shared vertices: what a save of this layer as STL reads back as.
-  if (is_stl_file_name(host.file_name()) || out.report.vertices_split != 0)
-    out.reread = detect_defects(stl_round_trip(soup_from_cmesh(mesh).soup));
+  if (out.written.soup) {
+    out.reread = detect_defects(stl_round_trip(*out.written.soup));
+    out.written.soup.reset();
+  }
 
   const WriteBackReport& w = out.written;
   out.log = "MeshBridge repair of '" + label + "':\n";
@@ -333,50 +305,17 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
                " split vertex copies apart";
   }
 
-  const RepairReport& r = out.report;
-  out.counts = {
-      count("vertices_in", w.vertices_in),
-      count("vertices_out", std::size_t(mesh.vn)),
-      count("faces_in", w.faces_in),
-      count("faces_out", std::size_t(mesh.fn)),
-      count("vertices_split", r.vertices_split),
-      count("faces_flipped", r.faces_flipped),
-      count("sides_cut", r.sides_cut),
-      count("sides_cut_for_orientation", r.sides_cut_for_orientation),
-      count("sides_stitched", r.sides_stitched),
-      count("faces_split", r.faces_split),
-      count("faces_added_by_split", r.faces_added_by_split),
-      count("faces_set_aside", r.faces_set_aside),
-      count("duplicate_faces_removed", r.duplicate_faces_removed),
-      count("degenerate_faces_removed", r.degenerate_faces_removed),
-      count("isolated_vertices_removed", r.isolated_vertices_removed),
-      // Keys of docs/report-schema.md, flattened with dots (JSON `before.components`).
-      count("before.components", r.components_before),
-      count("after.components", r.components_after),
-      count("before.boundary_edges", r.boundary_edges_before),
-      count("after.boundary_edges", r.boundary_edges_after),
-      count("before.nonorientable_components", r.nonorientable_components),
-      count("before.singular_edges", r.before.singular_edges.size()),
-      count("before.singular_vertices", r.before.num_singular_vertices()),
-      count("after.singular_edges", r.after.singular_edges.size()),
-      count("after.singular_vertices", r.after.num_singular_vertices()),
-      {"after.watertight", r.after.watertight ? 1 : 0, true},
-      count("degenerate_faces_kept", w.set_aside_faces_kept),
-      count("polygons_triangulated", w.polygons_fanned),
-  };
-  add_gap_counts(out.counts, r.gaps);
-  out.counts.push_back(count("holes.max_edges", r.holes.max_edges));
-  out.counts.push_back(count("holes.holes_filled", r.holes.holes_filled));
-  out.counts.push_back(count("holes.faces_added", r.holes.faces_added));
-  out.counts.push_back(count("holes.holes_left", r.holes.holes_left));
-  out.counts.push_back(count("holes.patches_refused", r.holes.patches_refused));
-  if (out.reread) {
-    const DefectReport& again = *out.reread;
-    out.counts.push_back(count("reread.singular_edges", again.singular_edges.size()));
-    out.counts.push_back(count("reread.singular_vertices", again.num_singular_vertices()));
-    out.counts.push_back(count("reread.boundary_edges", again.boundary_edges.size()));
-    out.counts.push_back({"reread.watertight", again.watertight ? 1 : 0, true});
-  }
+  append_counts(out.counts, out.report);
+  // Where the layer's number differs from the core's under the same key: vertices and faces of
+  // the layer (triangles, degenerate faces kept), and (as before the report schema existed) the
+  // components orientation found non-orientable rather than detection's count.
+  set_count(out.counts, "vertices_out", w.vertices_out);
+  set_count(out.counts, "faces_out", w.faces_out);
+  set_count(out.counts, "before.nonorientable_components", out.report.nonorientable_components);
+  add_counts(out.counts, {{"degenerate_faces_kept", w.set_aside_faces_kept},
+                          {"polygons_triangulated", w.polygons_fanned}});
+  if (out.reread)
+    append_counts(out.counts, *out.reread, "reread.");
   return out;
 }
 

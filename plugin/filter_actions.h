@@ -13,6 +13,7 @@
 
 #include "meshbridge/defect_report.h"
 #include "meshbridge/repair.h"
+#include "meshbridge/report_counts.h"
 #include "meshbridge/self_intersections.h"
 
 #include <optional>
@@ -29,14 +30,9 @@ class FilterInputError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-//! One number a filter hands back (pymeshlab returns them as a dict).
-struct FilterCount {
-  std::string name;  //!< snake_case key, e.g. "singular_edges"
-  long long value = 0;
-  bool is_flag = false;  //!< a yes/no value (0 or 1), e.g. "watertight"
-  bool is_real = false;  //!< a real number (`real`, `value` unused), e.g. "gaps.tolerance"
-  double real = 0;
-};
+//! One number a filter hands back (pymeshlab returns them as a dict): the core's flattened
+//! report entry (report_counts.h), key e.g. "singular_edges" or "before.components".
+using FilterCount = ReportCount;
 
 // ---- detect ----------------------------------------------------------------------------------
 
@@ -99,6 +95,10 @@ class DocumentHost {
   virtual bool can_save_3mf() const = 0;
   //! The file the current layer was loaded from (MeshModel::fullName()); empty if none.
   virtual std::string file_name() const = 0;
+  //! Recomputes the bounding box and the face and vertex normals of `mesh`, the current layer's
+  //! mesh, after a change: MeshModel::UpdateBoxAndNormals(), as MeshLab's own filters call it.
+  //! The default makes the vcglib calls that function makes, for hosts without a MeshModel.
+  virtual void update_box_and_normals(CMeshO& mesh);
 };
 
 //! True if `file_name` ends with ".stl" (any case).
@@ -135,18 +135,12 @@ struct DetectOutcome {
   //! (self-intersecting) faces", or for an Edges layer by "; the F self-intersecting faces are
   //! not drawn in an Edges layer"). Pass it through html_log_lines() for MeshLab's log.
   std::string log;
-  //! The numbers, in this order: vertices, faces (triangles), edges, singular_edges,
-  //! singular_edge_contenders (sides on singular edges, summed), singular_vertices,
-  //! singular_edge_vertices, pinch_vertices, boundary_edges, boundary_loops, isolated_vertices,
-  //! degenerate_faces, faces_set_aside, zero_area_faces, duplicate_faces, inconsistent_edges,
-  //! nonorientable_components, components, euler_characteristic, watertight (flag); the defect
-  //! layer's red_edges, green_edges, singular_vertex_markers; selected_faces and
-  //! selected_vertices (0 unless `select_faces`), coloured_faces (0 unless `colour_faces`);
-  //! what gap closing would do: gaps.tolerance (real; 0 = off), gaps.vertices_welded,
-  //! gaps.largest_weld_distance (real), gaps.welds_refused, gaps.t_junctions_closed,
-  //! gaps.sides_split; with `crossings` only (keys of docs/report-schema.md's
-  //! `self_intersections`): self_intersections.face_pairs, self_intersections.faces,
-  //! self_intersections.component_pairs, and the layer's violet_faces.
+  //! The numbers, in this order: the report's (append_counts() of report_counts.h: the keys of
+  //! docs/report-schema.md's check object, `faces` in triangles); the defect layer's red_edges,
+  //! green_edges, singular_vertex_markers; selected_faces and selected_vertices (0 unless
+  //! `select_faces`), coloured_faces (0 unless `colour_faces`); what gap closing would do
+  //! (gaps.*, the schema's `gaps`); with `crossings` only, self_intersections.* (the schema's
+  //! `self_intersections`) and the layer's violet_faces.
   std::vector<FilterCount> counts;
 };
 
@@ -186,20 +180,13 @@ struct RepairOutcome {
   //! were split), and (when vertices were split) which formats keep the repair. Pass it through
   //! html_log_lines() for MeshLab's log.
   std::string log;
-  //! The numbers, in this order: vertices_in, vertices_out, faces_in, faces_out (the layer's,
-  //! faces in triangles); the core's vertices_split, faces_flipped, sides_cut,
-  //! sides_cut_for_orientation, sides_stitched, faces_split,
-  //! faces_added_by_split, faces_set_aside, duplicate_faces_removed, degenerate_faces_removed,
-  //! isolated_vertices_removed, before.components, after.components, before.boundary_edges,
-  //! after.boundary_edges, before.nonorientable_components, before.singular_edges,
-  //! before.singular_vertices, after.singular_edges, after.singular_vertices, after.watertight
-  //! (flag); the write-back's degenerate_faces_kept and polygons_triangulated; gap closing's
-  //! gaps.tolerance (real; 0 = off), gaps.vertices_welded, gaps.largest_weld_distance (real),
-  //! gaps.welds_refused, gaps.t_junctions_closed, gaps.sides_split; hole filling's
-  //! holes.max_edges (0 = off), holes.holes_filled, holes.faces_added, holes.holes_left; with
-  //! `reread` only,
-  //! reread.singular_edges, reread.singular_vertices, reread.boundary_edges, reread.watertight
-  //! (flag). Keys as in docs/report-schema.md, nested ones flattened with dots.
+  //! The numbers, in this order: the repair report's (append_counts() of report_counts.h: the
+  //! keys of docs/report-schema.md's repair object with gaps.*, holes.*, before.* and after.*
+  //! flattened with dots), except that vertices_out and faces_out are the layer's (faces in
+  //! triangles, degenerate faces kept included) and before.nonorientable_components is
+  //! RepairReport::nonorientable_components (what orientation met, as this key always gave);
+  //! then the write-back's degenerate_faces_kept and polygons_triangulated; with `reread` only,
+  //! reread.* (the check counts of `reread`).
   std::vector<FilterCount> counts;
 };
 

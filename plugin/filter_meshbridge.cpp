@@ -54,19 +54,7 @@ int FilterMeshBridgePlugin::getPreConditions(QAction*) const {
 }
 
 int FilterMeshBridgePlugin::postCondition(QAction* action) const {
-  switch (ID(action)) {
-    case FP_DETECT_SINGULAR_DEFECTS:
-      // Not MM_FACECOLOR: that would switch the mesh's rendering to per-face colour (a grey STL
-      // turns white). With "colour faces" the colour mask is turned on, and MeshLab's comparison
-      // of data masks before and after the filter updates the rendering.
-      return MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_FACEFLAGSELECT;
-    case FP_REPAIR_SINGULAR_DEFECTS:
-      // Topology and vertex count change; copies of split vertices bring their colour/quality.
-      return MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
-             MeshModel::MM_VERTQUALITY | MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY |
-             MeshModel::MM_WEDGTEXCOORD | MeshModel::MM_VERTTEXCOORD;
-  }
-  return MeshModel::MM_ALL;
+  return mbm::changed_data_mask(filter_id(ID(action)));
 }
 
 MeshFilterInterface::FILTER_ARITY FilterMeshBridgePlugin::filterArity(QAction*) const {

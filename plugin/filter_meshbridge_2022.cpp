@@ -25,10 +25,11 @@ mbm::FilterId filter_id(MeshLabPlugin::ActionIDType filter) {
 //! The counts as pymeshlab converts them: int, bool (flags) or double (reals) QVariants.
 std::map<std::string, QVariant> result_map(const std::vector<mbm::FilterCount>& counts) {
   std::map<std::string, QVariant> result;
+  using Kind = mbm::FilterCount::Kind;
   for (const mbm::FilterCount& c : counts) {
-    if (c.is_flag) {
+    if (c.kind == Kind::flag) {
       result[c.name] = QVariant(c.value != 0);
-    } else if (c.is_real) {
+    } else if (c.kind == Kind::real) {
       result[c.name] = QVariant(c.real);
     } else {
       result[c.name] = QVariant(int(c.value));
@@ -95,18 +96,7 @@ int FilterMeshBridgePlugin::getPreConditions(const QAction*) const {
 }
 
 int FilterMeshBridgePlugin::postCondition(const QAction* action) const {
-  switch (ID(action)) {
-    case FP_DETECT_SINGULAR_DEFECTS:
-      // MM_FACECOLOR only when faces were coloured (applyFilter): it switches the mesh's
-      // rendering to per-face colour.
-      return MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_FACEFLAGSELECT;
-    case FP_REPAIR_SINGULAR_DEFECTS:
-      // Topology and vertex count change; copies of split vertices bring their colour/quality.
-      return MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
-             MeshModel::MM_VERTQUALITY | MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY |
-             MeshModel::MM_WEDGTEXCOORD | MeshModel::MM_VERTTEXCOORD;
-  }
-  return MeshModel::MM_ALL;
+  return mbm::changed_data_mask(filter_id(ID(action)));
 }
 
 FilterPlugin::FilterArity FilterMeshBridgePlugin::filterArity(const QAction*) const {

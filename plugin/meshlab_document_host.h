@@ -6,12 +6,27 @@
 //! after its own SDK's headers (the two adapters are never compiled together).
 
 #include "filter_actions.h"
+#include "filter_catalog.h"
 
 #include <algorithm>
 #include <string>
 #include <vector>
 
 namespace meshbridge::meshlab {
+
+//! The data masks filter `id` changes (the adapters' postCondition()). Detect: the selection, and
+//! not MM_FACECOLOR, which would switch the mesh's rendering to per-face colour (a grey STL turns
+//! white); with "colour faces" the colour mask is turned on (2020.09 compares the data masks
+//! before and after the filter, the >= 2022 adapter adds MM_FACECOLOR to the mask it returns).
+//! Repair: topology and vertex count change; copies of split vertices bring their colour,
+//! quality and texture coordinates.
+inline int changed_data_mask(FilterId id) {
+  if (id == FilterId::detect)
+    return MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_FACEFLAGSELECT;
+  return MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
+         MeshModel::MM_VERTQUALITY | MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY |
+         MeshModel::MM_WEDGTEXCOORD | MeshModel::MM_VERTTEXCOORD;
+}
 
 class MeshDocumentHost final : public DocumentHost {
  public:
@@ -43,7 +58,7 @@ class MeshDocumentHost final : public DocumentHost {
 #if __has_include(<common/ml_document/mesh_document.h>)
       md_.delMesh(m->id());  // MeshLab >= 2022
 #else
-      md_.delMesh(m);  // MeshLab 2020.09
+      md_.delMesh(m);             // MeshLab 2020.09
 #endif
     }
     if (current != nullptr && md_.mm() != current &&
@@ -56,6 +71,13 @@ class MeshDocumentHost final : public DocumentHost {
   }
   std::string file_name() const override {
     return mesh_.fullName().toStdString();
+  }
+  void update_box_and_normals(CMeshO&) override {
+#if __has_include(<common/ml_document/mesh_document.h>)
+    mesh_.updateBoxAndNormals();  // MeshLab >= 2022
+#else
+    mesh_.UpdateBoxAndNormals();  // MeshLab 2020.09
+#endif
   }
 
  private:
