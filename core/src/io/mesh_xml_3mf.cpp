@@ -9,6 +9,7 @@
 // part, for lib3mf.
 #include "io/mesh_xml_3mf.h"
 
+#include "io/mesh_scan_3mf.h"
 #include "io/package_3mf.h"
 #include "parallel_parts.h"
 
@@ -17,6 +18,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <string_view>
 
@@ -210,18 +212,23 @@ Outcome read_list(bool triangles, const char* begin, const char* end, std::size_
   bounds.push_back(end);
   std::vector<MeshXml> parts(n);
   std::vector<Outcome> outcomes(n, Outcome::read);
+  const char* route = std::getenv("MESHBRIDGE_3MF_MESHES");
+  const bool scan = route == nullptr || std::strcmp(route, "pugixml") != 0;
   run_parts(n, [&](unsigned k) {
     Fragments fragments{prefixes, {}, {}};
     // Room for as many elements as the shortest can fill (<vertex x="0" y="0" z="0"/>: 27
     // bytes; a triangle's: 32): address space only, never touched beyond what is read, so no
     // vector grows by copying.
     const std::size_t bytes = std::size_t(bounds[k + 1] - bounds[k]);
+    // The direct scan first (mesh_scan_3mf.h); where it gives up, pugixml decides.
     if (triangles) {
       parts[k].corners.reserve(3 * (bytes / 32 + 1));
-      outcomes[k] = read_triangles(bounds[k], bounds[k + 1], fragments, vertex_count, parts[k]);
+      if (!scan || !scan_triangles(bounds[k], bounds[k + 1], vertex_count, parts[k].corners))
+        outcomes[k] = read_triangles(bounds[k], bounds[k + 1], fragments, vertex_count, parts[k]);
     } else {
       parts[k].positions.reserve(3 * (bytes / 27 + 1));
-      outcomes[k] = read_vertices(bounds[k], bounds[k + 1], fragments, parts[k]);
+      if (!scan || !scan_vertices(bounds[k], bounds[k + 1], parts[k].positions))
+        outcomes[k] = read_vertices(bounds[k], bounds[k + 1], fragments, parts[k]);
     }
   });
   for (const Outcome o : {Outcome::refused, Outcome::left_for_lib3mf}) {
