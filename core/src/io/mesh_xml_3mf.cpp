@@ -2,7 +2,8 @@
 // The model part is read in two steps. The text between <vertices> and </vertices> and between
 // <triangles> and </triangles> is cut out, and pugixml parses the rest (small: the structure,
 // build, metadata, materials), which tells which cut is the vertex or triangle list of which
-// object's mesh. Each list is then parsed by pugixml as a run of fragments of about 256 KiB
+// object's mesh. Each list is then read by the direct scan (mesh_scan_3mf.h) or, where it gives
+// up, parsed by pugixml as a run of fragments of about 256 KiB
 // (copied, so the part stays as written), one document reused for all, so that the tree of a
 // million elements is never held at once (it would take 200 bytes an element, and the page
 // faults cost more than the parse). A list of a mesh this reader does not take stays in the
