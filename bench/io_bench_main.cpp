@@ -24,9 +24,10 @@
 //                               2x of binary STL per face"): writes the clean 1M torus and the
 //                               1M checkerboard as .3mf and .stl into DIR (once), and each F's
 //                               triangles as DIR/F.stl; then reads every 3MF (its meshes read
-//                               apart, and by lib3mf alone) and STL RUNS (5) times in one
-//                               process, in a shuffled order every round; prints the best time
-//                               per face of each and the 3MF/STL ratios per model
+//                               apart by the scan, by pugixml alone, and by lib3mf alone) and
+//                               STL RUNS (5) times in one process, in a shuffled order every
+//                               round; prints the best wall and CPU time per face of each and
+//                               the 3MF/STL ratios per model
 //
 // Every command prints one line: what it did and a count, so a wrong run is visible.
 #include "meshbridge/detect_defects.h"
@@ -39,6 +40,7 @@
 
 #include <fcntl.h>
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <algorithm>
@@ -246,8 +248,8 @@ int split(const std::string& path, int runs) {
   return 0;
 }
 
-//! See the usage at the top: the best read time per face of 3MF (its meshes read apart, and by
-//! lib3mf alone) and of binary STL, side by side.
+//! See the usage at the top: the best read time per face of 3MF (its meshes read apart by the
+//! scan, by pugixml alone, and by lib3mf alone) and of binary STL, side by side; wall and CPU.
 int read_3mf(const std::string& dir, int runs, const std::vector<std::string>& given) {
   const std::vector<std::pair<std::string, std::function<Soup()>>> models = {
       {"torus_1m", [] { return models::torus_grid(1176, 448); }},
@@ -272,38 +274,51 @@ int read_3mf(const std::string& dir, int runs, const std::vector<std::string>& g
     write_mesh(stl, mesh);
     pairs.emplace_back(path, stl);
   }
-  // Each read: a file and whether lib3mf reads it alone (MESHBRIDGE_3MF_MESHES=lib3mf).
-  std::vector<std::pair<std::string, bool>> reads;
+  // Each read: a file and its MESHBRIDGE_3MF_MESHES route (nullptr: the default).
+  const char* routes[] = {nullptr, "pugixml", "lib3mf", nullptr};
+  constexpr std::size_t kReads = 4;  // scan, pugixml, lib3mf, STL
+  std::vector<std::pair<std::string, const char*>> reads;
   for (const auto& [three_mf, stl] : pairs) {
-    reads.emplace_back(three_mf, false);
-    reads.emplace_back(three_mf, true);
-    reads.emplace_back(stl, false);
+    for (std::size_t r = 0; r < kReads; ++r)
+      reads.emplace_back(r + 1 < kReads ? three_mf : stl, routes[r]);
   }
-  std::vector<double> best(reads.size(), 1e30);
+  std::vector<double> best(reads.size(), 1e30), best_cpu(reads.size(), 1e30);
   std::vector<std::size_t> faces(reads.size(), 0);
   std::vector<std::size_t> order(reads.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     order[i] = i;
   std::mt19937 random(7);
+  const auto cpu_now = [] {
+    struct rusage usage {};
+    getrusage(RUSAGE_SELF, &usage);
+    return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+           1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  };
   for (int r = 0; r < runs; ++r) {
     std::shuffle(order.begin(), order.end(), random);
     for (std::size_t i : order) {
-      if (reads[i].second)
-        setenv("MESHBRIDGE_3MF_MESHES", "lib3mf", 1);
+      if (reads[i].second != nullptr)
+        setenv("MESHBRIDGE_3MF_MESHES", reads[i].second, 1);
+      const double cpu = cpu_now();
       best[i] =
           std::min(best[i], seconds_of([&] { faces[i] = read_soup(reads[i].first).num_faces(); }));
+      best_cpu[i] = std::min(best_cpu[i], cpu_now() - cpu);
       unsetenv("MESHBRIDGE_3MF_MESHES");
     }
   }
-  const auto per_face = [&](std::size_t i) { return best[i] / double(faces[i]) * 1e6; };
-  for (std::size_t i = 0; i + 2 < reads.size(); i += 3) {
-    std::printf(
-        "read-3mf %s (%zu faces): 3MF %.4f s (%.3f us/face; lib3mf alone %.4f s, %.3f us/face), "
-        "binary STL %.4f s (%.3f us/face): 3MF/STL %.2fx (lib3mf alone %.2fx), best of %d, "
-        "shuffled\n",
-        reads[i].first.c_str(), faces[i], best[i], per_face(i), best[i + 1], per_face(i + 1),
-        best[i + 2], per_face(i + 2), per_face(i) / per_face(i + 2),
-        per_face(i + 1) / per_face(i + 2), runs);
+  const auto us = [&](const std::vector<double>& t, std::size_t i) {
+    return t[i] / double(faces[i]) * 1e6;
+  };
+  for (std::size_t i = 0; i + kReads - 1 < reads.size(); i += kReads) {
+    const std::size_t stl = i + kReads - 1;
+    std::printf("read-3mf %s (%zu faces), best of %d, shuffled; wall (CPU) per face:\n",
+                reads[i].first.c_str(), faces[i], runs);
+    const char* names[] = {"3MF scan", "3MF pugixml", "3MF lib3mf", "binary STL"};
+    for (std::size_t r = 0; r < kReads; ++r) {
+      std::printf("  %-11s %.4f s (CPU %.4f s): %.3f us/face (CPU %.3f), %.2fx STL (CPU %.2fx)\n",
+                  names[r], best[i + r], best_cpu[i + r], us(best, i + r), us(best_cpu, i + r),
+                  us(best, i + r) / us(best, stl), us(best_cpu, i + r) / us(best_cpu, stl));
+    }
   }
   return 0;
 }

@@ -181,5 +181,32 @@ TEST(StlRoundTrip, written_triangles_never_reuse_an_edge_as_a_diagonal) {
   }
 }
 
+TEST(StlRoundTrip, a_sheet_written_twice_and_split_at_a_midpoint_keeps_two_faces_an_edge) {
+  // Triangle 0 1 2 written on both sides (a closed hull written twice, as the DART RWP hull of
+  // tests/data/realworld2), each side split at the midpoint 3 of edge 0-1, as repair splits
+  // crowded pairs: quads 0 3 1 2 and 0 2 1 3. Corner 3 is flat, so each quad has one ear, whose
+  // diagonal is 3-2; taken by the first quad, the second takes 0-1 (a triangle of no area)
+  // rather than a fourth triangle on 3-2 (PrusaSlicer read that as 1 open edge).
+  Soup soup;
+  soup.positions = {{0, 0, 0}, {2, 0, 0}, {1, 2, 0}, {1, 0, 0}};
+  soup.add_polygon({0, 3, 1, 2});
+  soup.add_polygon({0, 2, 1, 3});
+  const Soup triangles = as_triangles(soup);
+  ASSERT_EQ(triangles.num_faces(), 4u);
+  const DefectReport report = detect_defects(triangles);
+  EXPECT_EQ(report.singular_edges.size(), 0u);
+  EXPECT_EQ(report.boundary_edges.size(), 0u);
+  // The first quad as before: 3-2 its diagonal; the second: 0-1.
+  const auto has = [&](std::size_t f, Index a, Index b, Index c) {
+    std::vector<Index> face(triangles.polygon(f).begin(), triangles.polygon(f).end());
+    std::vector<Index> want{a, b, c};
+    std::sort(face.begin(), face.end());
+    std::sort(want.begin(), want.end());
+    return face == want;
+  };
+  EXPECT_TRUE((has(0, 0, 3, 2) && has(1, 3, 1, 2)) || (has(0, 3, 1, 2) && has(1, 0, 3, 2)));
+  EXPECT_TRUE((has(2, 0, 2, 1) && has(3, 0, 1, 3)) || (has(2, 0, 1, 3) && has(3, 0, 2, 1)));
+}
+
 }  // namespace
 }  // namespace meshbridge

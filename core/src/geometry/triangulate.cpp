@@ -114,10 +114,34 @@ void triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t) {
     }
     return kNoIndex;
   };
+  // With 4 corners left and no free ear: the diagonal that is no edge yet, where neither of its
+  // two triangles is turned over (one may be flat). A quad split at an edge's midpoint on both
+  // sides of a sheet written twice has one ear only (the midpoint's corner is flat): taken by
+  // the first side, the second side's ear would put a fourth triangle on that diagonal (a
+  // singular edge; PrusaSlicer reads it as an open edge); the other diagonal gives a triangle
+  // of no area instead, and every edge keeps two.
+  const auto free_quad = [&](Index a) {
+    const Index b = t.next[a], c = t.next[b], d = t.next[c];
+    const auto not_turned = [&](Index x, Index y, Index z) {
+      const double turn = cross(t.u[x], t.v[x], t.u[y], t.v[y], t.u[z], t.v[z]);
+      const double xy = std::hypot(t.u[y] - t.u[x], t.v[y] - t.v[x]);
+      const double yz = std::hypot(t.u[z] - t.u[y], t.v[z] - t.v[y]);
+      return turn >= -1e-12 * xy * yz;
+    };
+    return t.taken.count(edge_key(p[a], p[c])) == 0 && not_turned(a, b, c) && not_turned(c, d, a);
+  };
   Index start = 0;
   std::size_t left = n;
   while (left > 3) {
     Index b = t.taken.empty() ? kNoIndex : find_ear(start, left, is_free_ear);
+    if (b == kNoIndex && left == 4 && !t.taken.empty()) {
+      const Index a = find_ear(start, 2, free_quad);
+      if (a != kNoIndex) {
+        t.taken.insert(edge_key(p[a], p[t.next[t.next[a]]]));
+        fan(a, 4);
+        return;
+      }
+    }
     if (b == kNoIndex)
       b = find_ear(start, left, is_ear);
     if (b == kNoIndex) {  // no ear: not a simple polygon in this plane

@@ -2,13 +2,15 @@
 // The model part is read in two steps. The text between <vertices> and </vertices> and between
 // <triangles> and </triangles> is cut out, and pugixml parses the rest (small: the structure,
 // build, metadata, materials), which tells which cut is the vertex or triangle list of which
-// object's mesh. Each list is then parsed by pugixml as a run of fragments of about 256 KiB
+// object's mesh. Each list is then read by the direct scan (mesh_scan_3mf.h) or, where it gives
+// up, parsed by pugixml as a run of fragments of about 256 KiB
 // (copied, so the part stays as written), one document reused for all, so that the tree of a
 // million elements is never held at once (it would take 200 bytes an element, and the page
 // faults cost more than the parse). A list of a mesh this reader does not take stays in the
 // part, for lib3mf.
 #include "io/mesh_xml_3mf.h"
 
+#include "io/mesh_scan_3mf.h"
 #include "io/package_3mf.h"
 #include "parallel_parts.h"
 
@@ -17,6 +19,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <string_view>
 
@@ -210,18 +213,23 @@ Outcome read_list(bool triangles, const char* begin, const char* end, std::size_
   bounds.push_back(end);
   std::vector<MeshXml> parts(n);
   std::vector<Outcome> outcomes(n, Outcome::read);
+  const char* route = std::getenv("MESHBRIDGE_3MF_MESHES");
+  const bool scan = route == nullptr || std::strcmp(route, "pugixml") != 0;
   run_parts(n, [&](unsigned k) {
     Fragments fragments{prefixes, {}, {}};
     // Room for as many elements as the shortest can fill (<vertex x="0" y="0" z="0"/>: 27
     // bytes; a triangle's: 32): address space only, never touched beyond what is read, so no
     // vector grows by copying.
     const std::size_t bytes = std::size_t(bounds[k + 1] - bounds[k]);
+    // The direct scan first (mesh_scan_3mf.h); where it gives up, pugixml decides.
     if (triangles) {
       parts[k].corners.reserve(3 * (bytes / 32 + 1));
-      outcomes[k] = read_triangles(bounds[k], bounds[k + 1], fragments, vertex_count, parts[k]);
+      if (!scan || !scan_triangles(bounds[k], bounds[k + 1], vertex_count, parts[k].corners))
+        outcomes[k] = read_triangles(bounds[k], bounds[k + 1], fragments, vertex_count, parts[k]);
     } else {
       parts[k].positions.reserve(3 * (bytes / 27 + 1));
-      outcomes[k] = read_vertices(bounds[k], bounds[k + 1], fragments, parts[k]);
+      if (!scan || !scan_vertices(bounds[k], bounds[k + 1], parts[k].positions))
+        outcomes[k] = read_vertices(bounds[k], bounds[k + 1], fragments, parts[k]);
     }
   });
   for (const Outcome o : {Outcome::refused, Outcome::left_for_lib3mf}) {

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The meshes of a 3MF model part (3MF Core Specification 1.2, section 4.1.1: <mesh>, <vertices>,
-// <triangles>) read with pugixml, and the model part without them, for lib3mf to read the rest
-// (build, components, transforms, types, metadata, materials). A 3MF of 1M triangles reads in
-// about a third of lib3mf 1.8's time (meshbridge-io-bench read-3mf: 0.27 s against 0.85 s for
-// the 1M torus, on one thread).
+// <triangles>) read apart (a direct scan, mesh_scan_3mf.h; pugixml where it gives up), and the
+// model part without them, for lib3mf to read the rest (build, components, transforms, types,
+// metadata, materials). A 3MF of 1M triangles reads in about a fifth of lib3mf 1.8's CPU time
+// (meshbridge-parse-bench read-3mf, 1M torus, one thread: 0.16 s against 0.87 s; pugixml alone
+// 0.25 s; bench/results.md section 15).
 
 #include <cstddef>
 #include <cstdint>

@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Why the scan reads what pugixml reads: pugixml, as mesh_xml_3mf.cpp calls it (parse_minimal:
+// no entity, no end-of-line or whitespace conversion), gives an attribute's value as the bytes
+// between its quotes and skips whitespace between elements; that route then takes a value only
+// when std::from_chars reads all of it. The scan takes only elements whose name is followed by
+// whitespace, attributes named exactly x, y, z (v1, v2, v3) each once, written name="value" or
+// name='value' and followed by whitespace or "/>", and values that a number takes whole: on
+// such text both routes see the same bytes, and the numbers are read the same way (below).
+#include "io/mesh_scan_3mf.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+namespace meshbridge::detail {
+
+namespace {
+
+inline bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
+inline bool is_digit(char c) {
+  return static_cast<unsigned char>(c - '0') < 10;
+}
+
+// The value of an attribute whose opening quote is at `p`: [value, past) without its quotes;
+// returns the byte after the closing quote, or nullptr where that is not whitespace or '/'.
+inline const char* quoted(const char* p, const char* end, const char*& value, const char*& past) {
+  if (p >= end || (*p != '"' && *p != '\''))
+    return nullptr;
+  value = p + 1;
+  past = value;  // a loop, not memchr: values are a few bytes, a call costs more
+  while (past < end && *past != *p)
+    ++past;
+  if (past + 1 >= end || !(is_space(past[1]) || past[1] == '/'))
+    return nullptr;
+  return past + 1;
+}
+
+// [text, past) whole as a double, as std::from_chars reads it (correctly rounded). Digits with at
+// most one '.' inside, 19 digits at most, whose whole number fits in 53 bits and at most 22 after
+// the point, are read as (digits as an integer) / 10^(digits after the point): both exact in a
+// double, so the one division rounds correctly too (Clinger's fast path), to the value
+// from_chars gives. Everything else goes to from_chars itself.
+inline bool read_double(const char* text, const char* past, double& value) {
+  static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  const char* p = text;
+  const bool negative = p < past && *p == '-';
+  p += negative;
+  std::uint64_t digits = 0;
+  const char* first = p;
+  while (p < past && is_digit(*p))
+    digits = digits * 10 + std::uint64_t(*p++ - '0');
+  std::size_t whole = std::size_t(p - first), after = 0;
+  if (whole > 0 && p + 1 < past && *p == '.' && is_digit(p[1])) {
+    const char* point = ++p;
+    while (p < past && is_digit(*p))
+      digits = digits * 10 + std::uint64_t(*p++ - '0');
+    after = std::size_t(p - point);
+  }
+  if (p == past && whole > 0 && whole + after <= 19 && digits <= (std::uint64_t(1) << 53) &&
+      after <= 22) {
+    const double d = double(digits) / kPowers[after];
+    value = negative ? -d : d;
+    return true;
+  }
+  const auto result = std::from_chars(text, past, value);
+  return result.ec == std::errc() && result.ptr == past;
+}
+
+// [text, past) whole as an unsigned 32-bit number (decimal digits only, as from_chars reads it).
+inline bool read_index(const char* text, const char* past, std::uint32_t& value) {
+  if (text == past || past - text > 10)
+    return false;
+  std::uint64_t n = 0;
+  for (const char* p = text; p < past; ++p) {
+    if (!is_digit(*p))
+      return false;
+    n = n * 10 + std::uint64_t(*p - '0');
+  }
+  if (n > 0xffffffffu)
+    return false;
+  value = static_cast<std::uint32_t>(n);
+  return true;
+}
+
+// Scans the list [begin, end) of elements named `name` (`length` bytes) whose attributes are
+// `first` followed by one character from `low` to `high` (first == 0: that character alone):
+// calls value(k, text, past) for attribute k, then element() when all three were given; stops
+// with false as soon as one of them does, or the text leaves the narrow form.
+template <class Value, class Element>
+bool scan(const char* begin, const char* end, const char* name, std::size_t length, char first,
+          char low, Value value, Element element) {
+  const char* p = begin;
+  const std::size_t skip = first != 0 ? 1 : 0;
+  for (;;) {
+    while (p < end && is_space(*p))
+      ++p;
+    if (p == end)
+      return true;
+    if (std::size_t(end - p) < length + 2 || p[0] != '<' || std::memcmp(p + 1, name, length) != 0 ||
+        !is_space(p[length + 1])) {
+      return false;
+    }
+    p += length + 2;
+    int given = 0;
+    for (;;) {
+      while (p < end && is_space(*p))
+        ++p;
+      if (p + 1 >= end)
+        return false;
+      if (*p == '/') {
+        if (p[1] != '>')
+          return false;
+        p += 2;
+        break;
+      }
+      if (skip != 0 && *p != first)
+        return false;
+      const int k = p[skip] - low;
+      if (k < 0 || k > 2 || p + skip + 1 >= end || p[skip + 1] != '=' || (given >> k & 1) != 0)
+        return false;
+      const char *text = nullptr, *past = nullptr;
+      p = quoted(p + skip + 2, end, text, past);
+      if (p == nullptr || !value(k, text, past))
+        return false;
+      given |= 1 << k;
+    }
+    if (given != 7 || !element())
+      return false;
+  }
+}
+
+}  // namespace
+
+bool scan_vertices(const char* begin, const char* end, std::vector<float>& positions) {
+  const std::size_t before = positions.size();
+  double xyz[3];
+  const bool read = scan(
+      begin, end, "vertex", 6, 0, 'x',
+      [&](int k, const char* text, const char* past) { return read_double(text, past, xyz[k]); },
+      [&] {
+        for (const double c : xyz) {
+          const float f = static_cast<float>(c);
+          if (!std::isfinite(f) || std::abs(f) > 1e9f)
+            return false;  // lib3mf's limit: the pugixml route refuses it
+          positions.push_back(f);
+        }
+        return true;
+      });
+  if (!read)
+    positions.resize(before);
+  return read;
+}
+
+bool scan_triangles(const char* begin, const char* end, std::size_t vertex_count,
+                    std::vector<std::uint32_t>& corners) {
+  const std::size_t before = corners.size();
+  std::uint32_t v[3];
+  const bool read = scan(
+      begin, end, "triangle", 8, 'v', '1',
+      [&](int k, const char* text, const char* past) { return read_index(text, past, v[k]); },
+      [&] {
+        if (v[0] >= vertex_count || v[1] >= vertex_count || v[2] >= vertex_count || v[0] == v[1] ||
+            v[1] == v[2] || v[0] == v[2]) {
+          return false;
+        }
+        corners.insert(corners.end(), v, v + 3);
+        return true;
+      });
+  if (!read)
+    corners.resize(before);
+  return read;
+}
+
+}  // namespace meshbridge::detail

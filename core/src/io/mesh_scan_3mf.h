@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// A direct scan of a 3MF mesh's vertex and triangle lists (3MF Core Specification 1.2, section
+// 4.1.1) as writers put them: <vertex x="1.5" y="-2" z="0"/> and <triangle v1="0" v2="1"
+// v3="2"/>, separated by whitespace only. It reads what pugixml would read from such a list, to
+// the bit, about three times as fast (no copy of the text, no tree), and gives up at the first
+// byte outside that narrow form: a comment, an entity, another attribute, a space around '=',
+// a number it does not take whole, a value that the pugixml route refuses. The caller then reads
+// the same text with pugixml (mesh_xml_3mf.cpp), which decides.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace meshbridge::detail {
+
+//! Appends x, y, z (each read as a double, rounded to a float, as lib3mf does) of every vertex
+//! of the list text [begin, end) to `positions`; false (and `positions` as it was) where the text
+//! leaves that narrow form.
+bool scan_vertices(const char* begin, const char* end, std::vector<float>& positions);
+
+//! Appends v1, v2, v3 of every triangle of the list text [begin, end) to `corners`, each below
+//! `vertex_count` and no two the same; false (and `corners` as it was) where the text leaves that
+//! narrow form or a triangle breaks those rules.
+bool scan_triangles(const char* begin, const char* end, std::size_t vertex_count,
+                    std::vector<std::uint32_t>& corners);
+
+}  // namespace meshbridge::detail
