@@ -2,6 +2,7 @@
 #include "meshbridge/close_gaps.h"
 
 #include "close_gaps_detail.h"
+#include "geometry/point_tree.h"
 #include "hash_mix.h"
 
 #include <algorithm>
@@ -24,106 +25,12 @@ std::int64_t cell_coordinate(double x, double cell) {
 }
 
 using detail::mix;
+using detail::PointTree;
 
 std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
   return mix(static_cast<std::uint64_t>(x) ^
              mix(static_cast<std::uint64_t>(y) ^ mix(static_cast<std::uint64_t>(z))));
 }
-
-// A static kd-tree over a set of points (leaves of up to 8), for "points near a segment"
-// queries whose cost follows the number of boxes the segment passes near, not the side lengths.
-class PointTree {
- public:
-  PointTree(const std::vector<Point>& positions, std::vector<Index> points)
-      : positions_(positions), points_(std::move(points)) {
-    if (!points_.empty()) {
-      nodes_.reserve(points_.size() / 2 + 1);
-      nodes_.resize(1);
-      build(0, 0, points_.size());
-    }
-  }
-
-  // Calls visit(v) for every point whose node box, grown by r, the segment a-b meets (a superset
-  // of the points within r of the segment; callers check distances exactly).
-  template <class Visit>
-  void for_each_near_segment(const Point& a, const Point& b, double r, Visit&& visit) const {
-    if (nodes_.empty())
-      return;
-    std::vector<std::size_t> stack{0};
-    while (!stack.empty()) {
-      const Node& node = nodes_[stack.back()];
-      stack.pop_back();
-      if (!segment_meets_box(a, b, node.lo - Point(r, r, r), node.hi + Point(r, r, r)))
-        continue;
-      if (node.left == 0) {
-        for (std::size_t i = node.first; i < node.last; ++i)
-          visit(points_[i]);
-      } else {
-        stack.push_back(node.left);
-        stack.push_back(node.left + 1);
-      }
-    }
-  }
-
- private:
-  struct Node {
-    Point lo, hi;
-    std::size_t first = 0, last = 0;
-    std::size_t left = 0;  // children left and left + 1; 0 for a leaf
-  };
-
-  // Fills node `slot` (already allocated) for points_[first, last) and its subtree.
-  void build(std::size_t slot, std::size_t first, std::size_t last) {
-    Point lo = positions_[points_[first]], hi = lo;
-    for (std::size_t i = first; i < last; ++i) {
-      lo.minimize(positions_[points_[i]]);
-      hi.maximize(positions_[points_[i]]);
-    }
-    nodes_[slot].lo = lo;
-    nodes_[slot].hi = hi;
-    nodes_[slot].first = first;
-    nodes_[slot].last = last;
-    if (last - first <= 8)
-      return;
-    const Point extent = hi - lo;
-    const int axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0
-                     : extent[1] >= extent[2]                         ? 1
-                                                                      : 2;
-    const std::size_t middle = first + (last - first) / 2;
-    std::nth_element(points_.begin() + first, points_.begin() + middle, points_.begin() + last,
-                     [&](Index x, Index y) { return positions_[x][axis] < positions_[y][axis]; });
-    const std::size_t children = nodes_.size();
-    nodes_.resize(children + 2);
-    nodes_[slot].left = children;
-    build(children, first, middle);
-    build(children + 1, middle, last);
-  }
-
-  // Slab test: does the segment a-b meet the box [lo, hi]?
-  static bool segment_meets_box(const Point& a, const Point& b, const Point& lo, const Point& hi) {
-    double t0 = 0, t1 = 1;
-    for (int axis = 0; axis < 3; ++axis) {
-      const double d = b[axis] - a[axis];
-      if (d == 0) {
-        if (a[axis] < lo[axis] || a[axis] > hi[axis])
-          return false;
-        continue;
-      }
-      double u0 = (lo[axis] - a[axis]) / d, u1 = (hi[axis] - a[axis]) / d;
-      if (u0 > u1)
-        std::swap(u0, u1);
-      t0 = std::max(t0, u0);
-      t1 = std::min(t1, u1);
-      if (t0 > t1)
-        return false;
-    }
-    return true;
-  }
-
-  const std::vector<Point>& positions_;
-  std::vector<Index> points_;
-  std::vector<Node> nodes_;
-};
 
 // Polygons around each vertex (CSR).
 struct VertexFaces {
