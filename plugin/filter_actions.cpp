@@ -245,7 +245,7 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
   write_options.keep_soup = is_stl_file_name(host.file_name()) || result.report.vertices_split != 0;
   // Throws before touching the mesh if the result does not fit.
   out.written =
-      write_repaired(mesh, soup, result.mesh, result.report.before.excluded_faces, write_options);
+      write_repaired(mesh, soup, result.mesh, result.report.before.faces_set_aside, write_options);
   out.report = std::move(result.report);
 
   // What MeshLab's own cleaning filters do after changing the mesh: adjacency that was in use is

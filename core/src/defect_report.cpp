@@ -8,7 +8,7 @@ namespace meshbridge {
 bool DefectReport::has_defects() const {
   // Isolated vertices and zero-area faces are listed, not defects (see the header).
   return !singular_edges.empty() || num_singular_vertices() > 0 || !boundary_edges.empty() ||
-         !degenerate_faces.empty() || !excluded_faces.empty() || !duplicate_faces.empty() ||
+         !degenerate_faces.empty() || !faces_set_aside.empty() || !duplicate_faces.empty() ||
          !inconsistent_edges.empty() || num_nonorientable_components > 0 ||
          records_without_corners > 0;
 }
@@ -52,7 +52,7 @@ std::string to_text(const DefectReport& r, std::size_t max_listed) {
   out << "  non-orientable components: " << r.num_nonorientable_components << "\n";
   list(out, "isolated vertices", r.isolated_vertices, max_listed, index);
   list(out, "degenerate faces (repeated vertex)", r.degenerate_faces, max_listed, index);
-  list(out, "faces set aside (< 3 distinct vertices)", r.excluded_faces, max_listed, index);
+  list(out, "faces set aside (< 3 distinct vertices)", r.faces_set_aside, max_listed, index);
   if (r.slits_set_aside > 0) {
     out << "  keyhole slits (a polygon running a-b and later b-a; set aside by repair, their "
            "edges counted): "

@@ -119,7 +119,7 @@ struct EdgeTally {
     report.num_vertices = working.input().num_vertices();
     report.num_faces = working.input().num_faces();
     report.degenerate_faces = working.degenerate_faces();
-    report.excluded_faces = working.excluded_faces();
+    report.faces_set_aside = working.faces_set_aside();
     for (const WorkingSoup::Slit& s : working.slits())
       slit_pairs.push_back({std::min(s.a, s.b), std::max(s.a, s.b)});
     std::sort(slit_pairs.begin(), slit_pairs.end());

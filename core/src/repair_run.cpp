@@ -211,9 +211,9 @@ void RepairRun::count() {
   report.vertices_in = input_.num_vertices();
   report.faces_out = mesh.soup.num_faces();
   // With remove_degenerate_faces, degenerate polygons left with < 3 corners count as removed.
-  report.faces_set_aside = options_.remove_degenerate_faces ? 0 : simple_->excluded_faces().size();
+  report.faces_set_aside = options_.remove_degenerate_faces ? 0 : simple_->faces_set_aside().size();
   if (options_.remove_degenerate_faces)
-    report.degenerate_faces_removed += simple_->excluded_faces().size();
+    report.degenerate_faces_removed += simple_->faces_set_aside().size();
   report.faces_split = simple_->faces_split();
   report.faces_added_by_split = simple_->faces_added_by_split();
   report.slits_set_aside = simple_->slits().size();

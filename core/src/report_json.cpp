@@ -108,7 +108,7 @@ void add_defects(Json& out, const DefectReport& r, bool elements) {
                          {"inconsistent_edges", pair_list(r.inconsistent_edges)},
                          {"isolated_vertices", r.isolated_vertices},
                          {"degenerate_faces", r.degenerate_faces},
-                         {"faces_set_aside", r.excluded_faces},
+                         {"faces_set_aside", r.faces_set_aside},
                          {"zero_area_faces", r.zero_area_faces},
                          {"duplicate_faces", r.duplicate_faces}};
 }

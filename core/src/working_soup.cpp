@@ -52,7 +52,7 @@ WorkingSoup::WorkingSoup(const Soup& input) : input_(input) {
         }
       }
       if (loops.empty()) {
-        excluded_.push_back(static_cast<Index>(f));
+        set_aside_.push_back(static_cast<Index>(f));
         continue;
       }
       if (loops.size() > 1) {

@@ -13,7 +13,7 @@ namespace meshbridge::detail {
 //! Input polygons made simple. A polygon with a repeated vertex index is *degenerate*: its
 //! consecutive repeats are collapsed, and one that still revisits a vertex (pinched) is split into
 //! simple loops. Loops with fewer than 3 corners cannot exist in a half-edge mesh: a face left with
-//! none is *excluded* (set aside, listed). When no polygon is degenerate the input is used as is.
+//! none is *set aside* (listed). When no polygon is degenerate the input is used as is.
 class WorkingSoup {
  public:
   explicit WorkingSoup(const Soup& input);
@@ -26,7 +26,7 @@ class WorkingSoup {
   Index corner_origin(Index c) const { return identity_ ? c : corner_origin_[c]; }
 
   const std::vector<Index>& degenerate_faces() const { return degenerate_; }
-  const std::vector<Index>& excluded_faces() const { return excluded_; }
+  const std::vector<Index>& faces_set_aside() const { return set_aside_; }
   std::size_t faces_split() const { return faces_split_; }
   std::size_t faces_added_by_split() const { return faces_added_by_split_; }
   //! Keyhole slits set aside: two-corner loops of pinched polygons (the polygon runs a -> b and
@@ -45,7 +45,7 @@ class WorkingSoup {
   std::vector<Index> face_origin_;
   std::vector<Index> corner_origin_;
   std::vector<Index> degenerate_;
-  std::vector<Index> excluded_;
+  std::vector<Index> set_aside_;
   std::size_t faces_split_ = 0;
   std::size_t faces_added_by_split_ = 0;
   std::vector<Slit> slits_;

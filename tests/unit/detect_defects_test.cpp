@@ -111,7 +111,7 @@ TEST(DetectDefects, degenerate_zero_area_duplicate_and_isolated_elements) {
   EXPECT_EQ(r.duplicate_faces, std::vector<Index>{1});
   EXPECT_EQ(r.zero_area_faces, (std::vector<Index>{2, 3}));
   EXPECT_EQ(r.degenerate_faces, (std::vector<Index>{3, 4}));
-  EXPECT_EQ(r.excluded_faces, std::vector<Index>{3});
+  EXPECT_EQ(r.faces_set_aside, std::vector<Index>{3});
   EXPECT_EQ(r.isolated_vertices, (std::vector<Index>{3, 6}));
   EXPECT_TRUE(r.has_defects());
 }

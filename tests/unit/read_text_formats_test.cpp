@@ -250,7 +250,7 @@ TEST_F(TextFormats, every_record_is_kept_split_or_set_aside_and_check_agrees) {
   // set-aside ones, and has_defects is true (check exits 1).
   const DefectReport report = detect_defects(sa);
   EXPECT_EQ(report.num_faces, 5u);
-  EXPECT_EQ(report.excluded_faces, (std::vector<Index>{3, 4}));
+  EXPECT_EQ(report.faces_set_aside, (std::vector<Index>{3, 4}));
   EXPECT_TRUE(report.has_defects());
   // After repair (degenerate faces removed) every record of the written file is kept as is.
   RepairOptions options;
@@ -264,7 +264,7 @@ TEST_F(TextFormats, every_record_is_kept_split_or_set_aside_and_check_agrees) {
   EXPECT_FALSE(again.changed_anything());
   const DefectReport after = detect_defects(back);
   EXPECT_TRUE(after.degenerate_faces.empty());
-  EXPECT_TRUE(after.excluded_faces.empty());
+  EXPECT_TRUE(after.faces_set_aside.empty());
 }
 
 // --- round trips --------------------------------------------------------------------------------

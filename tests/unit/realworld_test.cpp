@@ -41,7 +41,7 @@ struct Expected {
   std::map<Index, std::size_t> contenders;  //!< contenders per singular edge -> edges
   std::size_t singular_edge_vertices, pinch_vertices;
   std::size_t boundary_edges, boundary_loops;
-  std::size_t isolated, degenerate, excluded, zero_area, duplicates, inconsistent;
+  std::size_t isolated, degenerate, set_aside, zero_area, duplicates, inconsistent;
   std::size_t nonorientable, components;
   long long euler;
   bool watertight;
@@ -196,7 +196,7 @@ TEST_P(RealWorld, detection_counts_are_exact) {
   EXPECT_EQ(r.num_boundary_loops, e.boundary_loops);
   EXPECT_EQ(r.isolated_vertices.size(), e.isolated);
   EXPECT_EQ(r.degenerate_faces.size(), e.degenerate);
-  EXPECT_EQ(r.excluded_faces.size(), e.excluded);
+  EXPECT_EQ(r.faces_set_aside.size(), e.set_aside);
   EXPECT_EQ(r.zero_area_faces.size(), e.zero_area);
   EXPECT_EQ(r.duplicate_faces.size(), e.duplicates);
   EXPECT_EQ(r.inconsistent_edges.size(), e.inconsistent);

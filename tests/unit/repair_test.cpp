@@ -243,7 +243,7 @@ TEST(Repair, degenerate_polygons_are_collapsed_split_or_set_aside_and_counted) {
   EXPECT_EQ(r.report.faces_added_by_split, 1u);
   EXPECT_EQ(r.report.faces_out, 4u);
   EXPECT_EQ(r.mesh.face_origin, (std::vector<Index>{0, 1, 2, 2}));
-  EXPECT_EQ(r.report.before.excluded_faces, std::vector<Index>{3});
+  EXPECT_EQ(r.report.before.faces_set_aside, std::vector<Index>{3});
 }
 
 TEST(Repair, cleanup_options_remove_and_count) {

@@ -80,7 +80,7 @@ TEST(ValidateSoup, repeated_vertex_is_accepted_and_reported) {
   EXPECT_NO_THROW(validate_soup(soup));
   const DefectReport report = detect_defects(soup);
   EXPECT_EQ(report.degenerate_faces, std::vector<Index>{1});
-  EXPECT_EQ(report.excluded_faces, std::vector<Index>{1});
+  EXPECT_EQ(report.faces_set_aside, std::vector<Index>{1});
 }
 
 TEST(ValidateSoup, every_entry_point_checks) {

@@ -42,7 +42,7 @@ struct DefectReport {
   std::size_t num_boundary_loops = 0;         //!< holes: connected chains of boundary edges
   std::vector<Index> isolated_vertices;       //!< vertices used by no polygon
   std::vector<Index> degenerate_faces;        //!< polygons with a repeated vertex index
-  std::vector<Index> excluded_faces;          //!< degenerate ones with < 3 distinct corners
+  std::vector<Index> faces_set_aside;         //!< degenerate ones with < 3 distinct corners
   //! Keyhole slits: two-corner pieces of pinched polygons (the polygon runs a -> b and later
   //! b -> a). No face can hold one, so repair sets them aside (counted here and in
   //! RepairReport::slits_set_aside); their edge counts in num_edges and joins the polygon's loops
@@ -68,7 +68,7 @@ struct DefectReport {
   std::size_t num_faces_of_file() const { return num_faces + records_without_corners; }
   //! Faces set aside (< 3 distinct corners), the records without corners included.
   std::size_t num_faces_set_aside() const {
-    return excluded_faces.size() + records_without_corners;
+    return faces_set_aside.size() + records_without_corners;
   }
 
   std::size_t num_singular_vertices() const {

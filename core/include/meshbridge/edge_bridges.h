@@ -13,7 +13,7 @@
 //! - *fan* ~ umbrella (one connected ring or wedge of faces around a vertex); a vertex with
 //!   several fans is a non-manifold (complex) vertex, *pinch* if its edges are all manifold;
 //! - *stitched* ~ glued / zipped: unpaired sides paired again after orientation;
-//! - *set aside* (a polygon with fewer than 3 distinct corners; listed as `excluded_faces`
+//! - *set aside* (a polygon with fewer than 3 distinct corners; listed as `faces_set_aside`
 //!   in reports) ~ a degenerate face dropped by other readers;
 //! - *sheet* ~ a face with the same side of space (material or void) on both sides.
 
