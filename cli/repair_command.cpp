@@ -205,9 +205,9 @@ int run_repair(RepairArguments& arguments) {
     summary << open_edges_hint(report);
   if (file.crossings)
     summary << "self-intersections of the result:\n" << to_text(*file.crossings);
-  if (written.polygons_fanned != 0) {
+  if (written.polygons_triangulated != 0) {
     summary << "written as " << written.triangles
-            << " triangles: " << counted(written.polygons_fanned, "polygon")
+            << " triangles: " << counted(written.polygons_triangulated, "polygon")
             << " cut into triangles (the format holds triangles only)\n";
   }
   if (reread) {

@@ -54,7 +54,7 @@ struct TrianglePlan {
   Index vertex[3] = {0, 0, 0};       //!< output vertices
   signed char local[3] = {0, 1, 2};  //!< input corner (0..2 within the input triangle) per corner;
                                      //!< -1: no input corner (no wedge origin)
-  bool fan_inner[3] = {false, false, false};  //!< edge k is a diagonal of a cut polygon
+  bool diagonal[3] = {false, false, false};  //!< edge k is a diagonal of a cut polygon
 };
 
 //! The input edge (0..2) that output edge (la -> lb) lies on, or -1 if none.
@@ -78,7 +78,7 @@ void write_added_face(CMeshO& m, CFaceO& f, const TrianglePlan& t,
   f.Flags() = 0;
   for (int k = 0; k < 3; ++k) {
     f.V(k) = &m.vert[t.vertex[k]];
-    if (t.fan_inner[k])
+    if (t.diagonal[k])
       f.SetF(k);
     const auto& [source, corner] = corner_at[t.vertex[k]];
     if (wedge_tex && source != nullptr)
@@ -238,8 +238,8 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
       ++report.faces_added;
     const PolygonView poly = out.polygon(f);
     if (arity > 3) {
-      ++report.polygons_fanned;
-      report.triangles_from_fans += arity - 3;
+      ++report.polygons_triangulated;
+      report.triangles_added_by_triangulation += arity - 3;
     }
     // The core's triangles (as the STL and 3MF writers cut the polygon): an edge between two
     // corners that are not neighbours in the polygon is a diagonal, marked faux for MeshLab.
@@ -253,7 +253,7 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
       }
       for (int j = 0; j < 3; ++j) {
         const std::size_t a = idx[j], b = idx[(j + 1) % 3];
-        t.fan_inner[j] = (a + 1) % arity != b && (b + 1) % arity != a;
+        t.diagonal[j] = (a + 1) % arity != b && (b + 1) % arity != a;
       }
       plan.push_back(t);
     }
@@ -327,7 +327,7 @@ WriteBackReport write_repaired(CMeshO& m, const CMeshSoup& input, const IndexedM
         if (wedge_tex && t.local[k] >= 0)
           f.WT(k) = src.cWT(t.local[k]);
         const int e = input_edge(t.local[k], t.local[(k + 1) % 3]);
-        if (t.fan_inner[k] || (e >= 0 && src.IsF(e)))
+        if (t.diagonal[k] || (e >= 0 && src.IsF(e)))
           f.SetF(k);
       }
       if (flipped) {

@@ -57,10 +57,10 @@ struct WriteBackReport {
   std::size_t set_aside_faces_kept = 0;  //!< faces the core set aside, put back unchanged
   //! output polygons with more than 3 corners, cut into triangles as the STL and 3MF writers cut
   //! them (triangles_as_written(): ear clipping, no diagonal on an existing edge)
-  std::size_t polygons_fanned = 0;
-  std::size_t triangles_from_fans = 0;  //!< extra triangles those polygons made
-  std::size_t faces_flipped = 0;        //!< triangles whose corner order was reversed
-  std::size_t faces_added = 0;          //!< faces with no input face (hole filling), last
+  std::size_t polygons_triangulated = 0;
+  std::size_t triangles_added_by_triangulation = 0;  //!< extra triangles those polygons made
+  std::size_t faces_flipped = 0;                     //!< triangles whose corner order was reversed
+  std::size_t faces_added = 0;  //!< faces with no input face (hole filling), last
   //! With WriteBackOptions::keep_soup: `m` after the write-back, exactly as
   //! soup_from_cmesh(m).soup would give it (positions as `m` stores them, widened to double).
   std::optional<Soup> soup;

@@ -288,9 +288,9 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
                " degenerate faces unchanged (they repeat a vertex and cannot be manifold; "
                "'Remove degenerate faces' drops them)";
   }
-  if (w.polygons_fanned != 0) {
-    out.log += "\nTriangulated " + std::to_string(w.polygons_fanned) + " polygons (" +
-               std::to_string(w.triangles_from_fans) + " extra triangles)";
+  if (w.polygons_triangulated != 0) {
+    out.log += "\nTriangulated " + std::to_string(w.polygons_triangulated) + " polygons (" +
+               std::to_string(w.triangles_added_by_triangulation) + " extra triangles)";
   }
   if (out.defect_layers_removed != 0) {
     out.log += "\nRemoved the defect layer '" + defect_layer_label(label) +
@@ -313,7 +313,7 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
   set_count(out.counts, "faces_out", w.faces_out);
   set_count(out.counts, "before.nonorientable_components", out.report.nonorientable_components);
   add_counts(out.counts, {{"degenerate_faces_kept", w.set_aside_faces_kept},
-                          {"polygons_triangulated", w.polygons_fanned}});
+                          {"polygons_triangulated", w.polygons_triangulated}});
   if (out.reread)
     append_counts(out.counts, *out.reread, "reread.");
   return out;

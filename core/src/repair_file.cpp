@@ -119,7 +119,7 @@ void repair_file(const std::string& in, const std::string& out, const RepairFile
       result.mesh = IndexedMesh();
       file.reread = detect_defects(read_soup(out));
     }
-  } else if (mesh_format(out) == MeshFormat::threemf && file.written.polygons_fanned > 0) {
+  } else if (mesh_format(out) == MeshFormat::threemf && file.written.polygons_triangulated > 0) {
     // The file holds triangles: detection on them, as any reader of the 3MF gets them.
     file.reread = detect_defects(as_triangles(result.mesh.soup));
   }

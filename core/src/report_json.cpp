@@ -42,7 +42,7 @@ void add_written(Json& out, const WrittenOutput* written) {
   if (written == nullptr)
     return;
   out["written"] = Json{{"triangles", written->triangles},
-                        {"polygons_fanned", written->polygons_fanned},
+                        {"polygons_triangulated", written->polygons_triangulated},
                         {"left_out", written->left_out},
                         {"copies_moved", written->copies_moved},
                         {"separation", written->separation}};

@@ -167,7 +167,7 @@ check_json)
   [ "$(json_field "$work/out" faces)" = 120 ] || fail "prisms24 faces"
   [ "$(json_field "$work/out" duplicate_faces)" = 30 ] || fail "prisms24 duplicate faces"
   [ "$(json_field "$work/out" file)" = "$models/prisms24.obj" ] || fail "prisms24 file"
-  [ "$(json_field "$work/out" schema_version)" = 2 ] || fail "schema_version"
+  [ "$(json_field "$work/out" schema_version)" = 3 ] || fail "schema_version"
   [ "$(json_field "$work/out" kind)" = check ] || fail "kind"
   [ "$(json_field "$work/out" read.declared_faces)" = 120 ] || fail "read.declared_faces"
   [ "$(json_field "$work/out" read.faces_kept)" = 120 ] || fail "read.faces_kept"
@@ -285,13 +285,13 @@ repair_formats)
     expect_in "$work/out" "faces: 7 in, 7 out"
     expect_in "$work/out" "written as 16 triangles: 7 polygons cut into triangles (the format holds triangles only)"
     [ "$(json_field "$work/box.json" written.triangles)" = 16 ] || fail "$ext: written.triangles"
-    [ "$(json_field "$work/box.json" written.polygons_fanned)" = 7 ] || fail "$ext: written.polygons_fanned"
+    [ "$(json_field "$work/box.json" written.polygons_triangulated)" = 7 ] || fail "$ext: written.polygons_triangulated"
     expect_exit 0 "$mb" check "$work/box.$ext" --json
     [ "$(json_field "$work/out" faces)" = 16 ] || fail "$ext: check reads 16 triangles"
   done
   expect_exit 0 "$mb" repair "$work/box.off" "$work/box.ply" --report "$work/box.json"
   grep -q "written as" "$work/out" && fail "PLY keeps polygons: no 'written as' line"
-  [ "$(json_field "$work/box.json" written.polygons_fanned)" = 0 ] || fail "PLY: written.polygons_fanned"
+  [ "$(json_field "$work/box.json" written.polygons_triangulated)" = 0 ] || fail "PLY: written.polygons_triangulated"
   # What the output format cannot hold is named on stderr and in the report, never dropped
   # without a word; OBJ to OBJ keeps mtllib, groups and the vertices' own colours.
   printf 'mtllib m.mtl\nv 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvn 0 0 1\nvn 1 0 0\nusemtl red\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$work/tex.obj"
@@ -418,7 +418,7 @@ print_preset)
       fail "$hull as 3MF triangles: $(cat "$work/$hull.json")"
     expect_exit 0 "$mb" check "$work/$hull.3mf"
   done
-  [ "$(json_field "$work/RWP.json" written.polygons_fanned)" = 38 ] || fail "RWP polygons cut: $(cat "$work/RWP.json")"
+  [ "$(json_field "$work/RWP.json" written.polygons_triangulated)" = 38 ] || fail "RWP polygons cut: $(cat "$work/RWP.json")"
   # Without --print, an open result gets a hint of what would close it.
   expect_exit 0 "$mb" repair "$models/cube_with_hole.obj" "$work/h.obj"
   expect_in "$work/out" "hint: 4 open edges in 1 boundary loop left; --fill-holes closes holes of up to 32 edges"

@@ -60,7 +60,7 @@ def test_repair_canonical_models_exact_counts(name, v_in, f_in, v_out, component
     assert report["after"]["components"] == components
     assert report["after"]["boundary_edges"] == boundary
     assert report["after"]["singular_edges"] == report["after"]["singular_vertices"] == 0
-    assert report["schema_version"] == 2 and report["kind"] == "repair"
+    assert report["schema_version"] == 3 and report["kind"] == "repair"
     assert report["file"] == str(MODELS / f"{name}.obj")
     assert report["read"] == soup.read_info
     assert len(result.vertices) == v_out

@@ -295,7 +295,7 @@ struct WrittenOutput {
   std::size_t triangles = 0;
   //! Polygons of more than 3 corners cut into triangles there (ear clipping in their plane, so
   //! a non-convex polygon stays covered by its own area; 0 for the other formats).
-  std::size_t polygons_fanned = 0;
+  std::size_t polygons_triangulated = 0;
   //! What the format left out of what was read, one phrase each (describe_unwritten()).
   std::vector<std::string> left_out;
   //! STL: copies of split vertices moved apart before writing (separate_copies_for_stl()), so

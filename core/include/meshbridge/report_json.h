@@ -27,7 +27,7 @@
 namespace meshbridge {
 
 //! Version of the report schema; raised whenever a key is renamed, removed or changes meaning.
-constexpr int kReportSchemaVersion = 2;
+constexpr int kReportSchemaVersion = 3;
 
 //! How a report is written.
 struct ReportJsonOptions {
@@ -57,12 +57,13 @@ std::string check_failed_json(const std::string& file, const std::string& reason
 
 //! `{"schema_version":1,"kind":"repair","file":...,"output":...,"read":{...},<repair counts>,
 //! "gaps":{<gap closing counts>},"before":{<check counts>},"after":{<check counts>}
-//! [,"reread":{<check counts>}][,"written":{"triangles":N,"polygons_fanned":N,"left_out":[...]}]}`;
-//! with `options.elements` the `before`, `after` (and `reread`) objects carry their `elements`.
-//! `output` is left out when empty, `read` when null. `reread` (the written file as a reader
-//! gets it back: STL welds split vertex copies by position) is written exactly when `reread` is
-//! not null, `written` exactly when `written` is not null; `self_intersections` (those of the
-//! repaired mesh as written, the object of check_report_json()) exactly when it is not null.
+//! [,"reread":{<check counts>}]
+//! [,"written":{"triangles":N,"polygons_triangulated":N,"left_out":[...]}]}`; with
+//! `options.elements` the `before`, `after` (and `reread`) objects carry their `elements`. `output`
+//! is left out when empty, `read` when null. `reread` (the written file as a reader gets it back:
+//! STL welds split vertex copies by position) is written exactly when `reread` is not null,
+//! `written` exactly when `written` is not null; `self_intersections` (those of the repaired mesh
+//! as written, the object of check_report_json()) exactly when it is not null.
 std::string repair_report_json(const std::string& file, const std::string& output,
                                const RepairReport& report, const ReadInfo* read = nullptr,
                                const ReportJsonOptions& options = {},
