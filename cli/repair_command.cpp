@@ -291,8 +291,9 @@ void add_repair_command(CLI::App& app, int& exit_code) {
   command
       ->add_option("--weld", arguments->weld,
                    "TOL|auto: before pairing, weld boundary vertices closer than TOL (model units) "
-                   "and split boundary sides at T-junction cracks; auto = 2^-21 x the largest "
-                   "coordinate; 0 = off")
+                   "and split boundary sides at T-junction cracks; auto = per vertex 2^-21 x the "
+                   "extent of its part (never the file's largest coordinate), at most a quarter "
+                   "of the shortest edge at it; 0 = off")
       ->capture_default_str()
       ->check(distance_or_auto());
   CLI::Option* separate =

@@ -93,7 +93,8 @@ void add_snapshot_command(CLI::App& app, int& exit_code) {
       "Draw FILE with its defects into a PNG (no display needed): the surface shaded grey,\n"
       "boundary edges green, singular edges and vertices red, with --self-intersections the\n"
       "faces that cross violet. Exit codes as check.");
-  command->add_option("FILE", arguments->file, "mesh to draw (.obj, .off, .ply, .stl)")->required();
+  command->add_option("FILE", arguments->file, "mesh to draw (.obj, .off, .ply, .stl, .3mf)")
+      ->required();
   command->add_option("OUT.png", arguments->out, "PNG to write; replaced atomically")->required();
   command->add_option("--size", arguments->options.size, "width and height in pixels")
       ->check(CLI::Range(SnapshotOptions::kMinSize, SnapshotOptions::kMaxSize));

@@ -151,7 +151,8 @@ def read(path: Union[str, "os.PathLike[str]"]) -> Soup:
     A Soup holds positions and polygons only. What else the file holds (colours, OBJ groups and
     materials, texture coordinates, normals, other PLY properties) is listed in
     ``soup.not_held`` and named in a :class:`UserWarning`, because :func:`write` cannot write it
-    back; :func:`meshbridge.batch.run_batch` and the CLI carry colours and groups to the output.
+    back; :func:`meshbridge.batch.run_batch` and the CLI carry colours and groups to the output,
+    and OBJ texture coordinates and normals to an OBJ output.
 
     Raises :class:`ReadError` (missing, unreadable, empty or malformed file, a vertex index out
     of range, named by line where the format has lines) or :class:`InvalidMeshError` (a
@@ -164,7 +165,8 @@ def read(path: Union[str, "os.PathLike[str]"]) -> Soup:
         warnings.warn(
             f"{soup.path}: a Soup holds positions and polygons only; not held: "
             + "; ".join(soup.not_held)
-            + " (meshbridge.batch and the CLI carry colours and groups to their output)",
+            + " (meshbridge.batch and the CLI carry colours and groups to their output, and OBJ"
+            + " texture coordinates and normals to an OBJ output)",
             UserWarning,
             stacklevel=2,
         )

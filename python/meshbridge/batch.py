@@ -113,7 +113,7 @@ class BatchSummary:
         return line
 
     def files_with_self_intersections(self) -> int:
-        """Files whose record counts at least one self-intersecting face pair in the output."""
+        """How many files' records count at least one self-intersecting face pair in the output."""
         return sum(1 for record in self.records.values()
                    if json.loads(record).get("self_intersections", {}).get("face_pairs", 0) > 0)
 
