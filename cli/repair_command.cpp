@@ -53,16 +53,18 @@ struct RepairArguments {
   std::string fill_holes;     //!< MAX_EDGES of --fill-holes ("" or "0" = off)
 };
 
-int run_repair(RepairArguments& arguments) {
+//! A report on standard output ('-', /dev/stdout or the file stdout goes to) is printed there,
+//! and the summary moves to standard error, so that stdout holds the JSON alone.
+bool report_to_stdout(const RepairArguments& arguments) {
+  return arguments.report == "-" || is_standard_output(arguments.report);
+}
+
+//! The usage errors that can be told before anything is read: an unknown or unwritable OUT,
+//! OUT = IN without --in-place, --print without a .3mf, a --report that names a mesh, picture
+//! options without --before-after. \throws UsageError
+void check_arguments(const RepairArguments& arguments) {
   const std::string& in = arguments.in;
   const std::string& out = arguments.out;
-  RepairOptions options = arguments.options;
-  options.pairing = arguments.pairing == "combinatorial" ? PairingPolicy::combinatorial
-                                                         : PairingPolicy::geometric;
-  options.orient = !arguments.no_orient;
-  options.stitch = !arguments.no_stitch;
-  options.close_gaps = parse_weld(arguments.weld);
-  options.fill_holes.max_edges = parse_fill_holes(arguments.fill_holes);
   std::error_code folder_error;
   if (std::filesystem::is_directory(out, folder_error))
     check_writable_file(out);  // "OUT: cannot write: it is a folder", not "unknown format"
@@ -82,10 +84,7 @@ int run_repair(RepairArguments& arguments) {
                      "to allow that, or name another output)");
   }
   check_writable_file(out);
-  // A report on standard output ('-', /dev/stdout or the file stdout goes to) is printed there,
-  // and the summary moves to standard error, so that stdout holds the JSON alone.
-  const bool report_to_stdout = arguments.report == "-" || is_standard_output(arguments.report);
-  if (!arguments.report.empty() && !report_to_stdout) {
+  if (!arguments.report.empty() && !report_to_stdout(arguments)) {
     // The report must not replace the mesh read or the mesh written.
     for (const std::string* mesh : {&in, &out}) {
       std::error_code same;
@@ -107,7 +106,17 @@ int run_repair(RepairArguments& arguments) {
     check_writable_file(arguments.before_after);
     find_pictures_module();  // a missing module is told now, not after the repair
   }
+}
 
+//! The options of repair_file() from the command line.
+RepairFileOptions file_options_of(const RepairArguments& arguments) {
+  RepairOptions options = arguments.options;
+  options.pairing = arguments.pairing == "combinatorial" ? PairingPolicy::combinatorial
+                                                         : PairingPolicy::geometric;
+  options.orient = !arguments.no_orient;
+  options.stitch = !arguments.no_stitch;
+  options.close_gaps = parse_weld(arguments.weld);
+  options.fill_holes.max_edges = parse_fill_holes(arguments.fill_holes);
   RepairFileOptions file_options;
   file_options.repair = options;
   file_options.print = arguments.print;
@@ -117,84 +126,89 @@ int run_repair(RepairArguments& arguments) {
   file_options.self_intersections = arguments.self_intersections;
   file_options.keep_meshes = !arguments.before_after.empty();  // only the picture reads them
   file_options.repaired = release_free_memory;  // the repair's working arrays, before writing
-  RepairedFile file;
-  {
-    ProgressDisplay progress(in, progress_wanted(arguments.progress), progress_wanted(false),
-                             repair_plan());
-    file_options.repair.progress = progress.callback();
-    try {
-      file = repair_file(in, out, file_options);
-    } catch (const std::invalid_argument& error) {  // --separate too small: nothing written
-      throw UsageError(error.what());
-    }
-  }
+  return file_options;
+}
+
+//! The JSON report (--report) on stdout or written atomically to its file.
+//! \throws WriteError naming the report (OUT is written by then)
+void write_report(const RepairArguments& arguments, const RepairedFile& file, bool to_stdout) {
+  const std::string& in = arguments.in;
+  const std::string& out = arguments.out;
   const RepairReport& report = file.report;
   const DefectReport* reread = file.reread ? &*file.reread : nullptr;
-  if (!arguments.report.empty()) {
-    ReportJsonOptions json;
-    json.elements = arguments.elements;
-    const std::string text =
-        repair_report_json(in, out, report, &file.info, json, reread, &file.written,
-                           file.crossings ? &*file.crossings : nullptr) +
-        "\n";
-    if (report_to_stdout) {
-      std::cout << text << std::flush;
-    } else {
-      try {
-        write_text_atomically(arguments.report, text);
-      } catch (const WriteError& error) {
-        // Name what failed: the report, after OUT was written.
-        std::string why = error.what();
-        const std::string prefix = arguments.report + ": ";
-        if (why.compare(0, prefix.size(), prefix) == 0)
-          why.erase(0, prefix.size());
-        throw WriteError(arguments.report + ": cannot write the report (" + why + "); " + out +
-                         " is written");
-      }
+  ReportJsonOptions json;
+  json.elements = arguments.elements;
+  const std::string text =
+      repair_report_json(in, out, report, &file.info, json, reread, &file.written,
+                         file.crossings ? &*file.crossings : nullptr) +
+      "\n";
+  if (to_stdout) {
+    std::cout << text << std::flush;
+  } else {
+    try {
+      write_text_atomically(arguments.report, text);
+    } catch (const WriteError& error) {
+      // Name what failed: the report, after OUT was written.
+      std::string why = error.what();
+      const std::string prefix = arguments.report + ": ";
+      if (why.compare(0, prefix.size(), prefix) == 0)
+        why.erase(0, prefix.size());
+      throw WriteError(arguments.report + ": cannot write the report (" + why + "); " + out +
+                       " is written");
     }
   }
-  std::string picture_view;  // drawn along, for the summary
-  if (!arguments.before_after.empty()) {
-    // The result framed as the input, so the two pictures line up; the file as a reader gets
-    // it back where that differs (STL).
-    const bool reread_soup = !file.written_soup.positions.empty();
-    Picture before, after;
-    before.soup = &file.input;
-    before.report = &report.before;
-    before.options.title = "before: " + file_name_of(in);
-    after.soup = reread_soup ? &file.written_soup : &file.mesh.soup;
-    after.report = reread_soup ? reread : &report.after;
-    after.options.title = "after: " + file_name_of(out);
-    after.frame_soup = &file.input;
-    after.frame_report = &report.before;
-    // With --self-intersections the crossing faces are violet on both sides: the input's found
-    // here, the result's are those of the mesh written, or found again on the STL read back.
-    std::optional<SelfIntersectionReport> crossings_before, crossings_reread;
-    if (arguments.self_intersections) {
-      crossings_before = find_self_intersections(file.input);
-      before.crossings = &*crossings_before;
-      if (reread_soup) {
-        crossings_reread = find_self_intersections(file.written_soup);
-        after.crossings = &*crossings_reread;
-      } else if (file.crossings) {
-        after.crossings = &*file.crossings;
-      }
-    }
-    for (Picture* picture : {&before, &after}) {
-      picture->options.view = parse_snapshot_view(arguments.view.empty() ? "auto" : arguments.view);
-      picture->options.focus =
-          parse_snapshot_focus(arguments.focus.empty() ? "auto" : arguments.focus);
-      picture->options.y_up = arguments.up == "y";
-    }
-    const PicturesDrawn drawn = write_pictures_png(arguments.before_after, {before, after});
-    picture_view = (before.options.view.automatic ? "auto -> " : "") + to_string(drawn.view);
-  }
-  warn_about_reader(in, file.info);
-  const WrittenOutput& written = file.written;
-  for (const std::string& what : written.left_out)
-    std::cerr << "meshbridge: warning: " << in << ": output " << out << ": " << what << "\n";
+}
 
-  std::ostream& summary = report_to_stdout ? std::cerr : std::cout;
+//! The --before-after picture; returns the view drawn ("auto -> NAME" when chosen).
+std::string draw_before_after(const RepairArguments& arguments, const RepairedFile& file) {
+  const std::string& in = arguments.in;
+  const std::string& out = arguments.out;
+  const RepairReport& report = file.report;
+  const DefectReport* reread = file.reread ? &*file.reread : nullptr;
+  // The result framed as the input, so the two pictures line up; the file as a reader gets
+  // it back where that differs (STL).
+  const bool reread_soup = !file.written_soup.positions.empty();
+  Picture before, after;
+  before.soup = &file.input;
+  before.report = &report.before;
+  before.options.title = "before: " + file_name_of(in);
+  after.soup = reread_soup ? &file.written_soup : &file.mesh.soup;
+  after.report = reread_soup ? reread : &report.after;
+  after.options.title = "after: " + file_name_of(out);
+  after.frame_soup = &file.input;
+  after.frame_report = &report.before;
+  // With --self-intersections the crossing faces are violet on both sides: the input's found
+  // here, the result's are those of the mesh written, or found again on the STL read back.
+  std::optional<SelfIntersectionReport> crossings_before, crossings_reread;
+  if (arguments.self_intersections) {
+    crossings_before = find_self_intersections(file.input);
+    before.crossings = &*crossings_before;
+    if (reread_soup) {
+      crossings_reread = find_self_intersections(file.written_soup);
+      after.crossings = &*crossings_reread;
+    } else if (file.crossings) {
+      after.crossings = &*file.crossings;
+    }
+  }
+  for (Picture* picture : {&before, &after}) {
+    picture->options.view = parse_snapshot_view(arguments.view.empty() ? "auto" : arguments.view);
+    picture->options.focus =
+        parse_snapshot_focus(arguments.focus.empty() ? "auto" : arguments.focus);
+    picture->options.y_up = arguments.up == "y";
+  }
+  const PicturesDrawn drawn = write_pictures_png(arguments.before_after, {before, after});
+  return (before.options.view.automatic ? "auto -> " : "") + to_string(drawn.view);
+}
+
+//! The text summary: the report, STL separation, the preset's or the open edges' note,
+//! self-intersections, triangulation, what a reader gets back, the picture's view.
+void print_repair_summary(const RepairArguments& arguments, const RepairedFile& file,
+                          const std::string& picture_view, std::ostream& summary) {
+  const std::string& in = arguments.in;
+  const std::string& out = arguments.out;
+  const RepairReport& report = file.report;
+  const DefectReport* reread = file.reread ? &*file.reread : nullptr;
+  const WrittenOutput& written = file.written;
   summary << in << " -> " << out << "\n"
           << to_text(report)
           << separation_summary(file.separated, report.vertices_split, arguments.separate,
@@ -236,6 +250,33 @@ int run_repair(RepairArguments& arguments) {
   if (!picture_view.empty())
     summary << "before/after picture " << arguments.before_after << ": view " << picture_view
             << "\n";
+}
+
+int run_repair(RepairArguments& arguments) {
+  check_arguments(arguments);
+  RepairFileOptions file_options = file_options_of(arguments);
+  RepairedFile file;
+  {
+    ProgressDisplay progress(arguments.in, progress_wanted(arguments.progress),
+                             progress_wanted(false), repair_plan());
+    file_options.repair.progress = progress.callback();
+    try {
+      file = repair_file(arguments.in, arguments.out, file_options);
+    } catch (const std::invalid_argument& error) {  // --separate too small: nothing written
+      throw UsageError(error.what());
+    }
+  }
+  const bool to_stdout = report_to_stdout(arguments);
+  if (!arguments.report.empty())
+    write_report(arguments, file, to_stdout);
+  const std::string picture_view =
+      arguments.before_after.empty() ? std::string() : draw_before_after(arguments, file);
+  warn_about_reader(arguments.in, file.info);
+  for (const std::string& what : file.written.left_out) {
+    std::cerr << "meshbridge: warning: " << arguments.in << ": output " << arguments.out << ": "
+              << what << "\n";
+  }
+  print_repair_summary(arguments, file, picture_view, to_stdout ? std::cerr : std::cout);
   return kOk;
 }
 

@@ -35,6 +35,11 @@ struct CMeshSoup {
 //! Deleted elements are skipped; nothing in `m` changes.
 CMeshSoup soup_from_cmesh(CMeshO& m);
 
+//! A CMeshO position as the core's soups hold it (float widened to double).
+inline Point widened(const CMeshO::CoordType& p) {
+  return Point(double(p[0]), double(p[1]), double(p[2]));
+}
+
 //! How write_repaired() treats what the core did not hand back.
 struct WriteBackOptions {
   //! Put back the faces the core set aside (fewer than 3 distinct corners), unchanged, at their
@@ -117,7 +122,7 @@ struct DefectSelection {
 //! those faces also get `singular_edge` (red) or `pinch` (orange) colour; the caller enables
 //! per-face colour first.
 DefectSelection select_defect_faces(CMeshSoup& input, const DefectReport& report, bool select,
-                                    bool colour_faces,
+                                    bool color_faces,
                                     vcg::Color4b singular_edge = vcg::Color4b::Red,
                                     vcg::Color4b pinch = vcg::Color4b(255, 128, 0, 255));
 

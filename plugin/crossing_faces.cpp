@@ -11,7 +11,7 @@
 namespace meshbridge::meshlab {
 
 std::size_t add_crossing_faces(const CMeshSoup& input, const SelfIntersectionReport& crossings,
-                               CMeshO& layer, vcg::Color4b colour) {
+                               CMeshO& layer, vcg::Color4b color) {
   const Soup& soup = input.soup;
   for (Index f : crossings.faces) {
     if (f >= soup.num_faces())
@@ -53,12 +53,12 @@ std::size_t add_crossing_faces(const CMeshSoup& input, const SelfIntersectionRep
   const std::size_t first = layer.vert.size();
   auto vi = Alloc::AddVertices(layer, 6 * triangles.size());
   auto fi = Alloc::AddFaces(layer, 2 * triangles.size());
-  const bool face_colour = layer.face.IsColorEnabled();
+  const bool face_color = layer.face.IsColorEnabled();
   std::size_t next = first;
   const auto vertex = [&](const Point& p) {
     vi->P() = CMeshO::CoordType(CMeshO::ScalarType(p[0]), CMeshO::ScalarType(p[1]),
                                 CMeshO::ScalarType(p[2]));
-    vi->C() = colour;
+    vi->C() = color;
     vi->Q() = 0.0f;
     ++vi;
     return &layer.vert[next++];
@@ -67,8 +67,8 @@ std::size_t add_crossing_faces(const CMeshSoup& input, const SelfIntersectionRep
     fi->V(0) = vertex(a);
     fi->V(1) = vertex(b);
     fi->V(2) = vertex(c);
-    if (face_colour)
-      fi->C() = colour;
+    if (face_color)
+      fi->C() = color;
     ++fi;
   };
   for (const Triangle& t : triangles) {

@@ -22,7 +22,7 @@
 namespace meshbridge::meshlab {
 
 //! The colour of faces that cross or overlap another face (also `snapshot`'s, cli/).
-inline const vcg::Color4b kCrossingFaceColour(140, 0, 255, 255);
+inline const vcg::Color4b kCrossingFaceColor(140, 0, 255, 255);
 
 //! How far each copy lies off its face, as a fraction of the inspected mesh's bounding-box
 //! diagonal (0.001: a quarter of the defect tubes' default radius, far beyond depth-buffer
@@ -37,6 +37,6 @@ inline constexpr double kCrossingFaceLift = 0.001;
 //! bounding box. Returns how many faces of `input` it covered (faces of zero area are skipped).
 //! \throw std::invalid_argument if `crossings` names a face `input` does not have (nothing added)
 std::size_t add_crossing_faces(const CMeshSoup& input, const SelfIntersectionReport& crossings,
-                               CMeshO& layer, vcg::Color4b colour = kCrossingFaceColour);
+                               CMeshO& layer, vcg::Color4b color = kCrossingFaceColor);
 
 }  // namespace meshbridge::meshlab

@@ -35,9 +35,9 @@ class TubeWriter {
       : layer_(layer),
         vi_(vcg::tri::Allocator<CMeshO>::AddVertices(layer, vertices)),
         fi_(vcg::tri::Allocator<CMeshO>::AddFaces(layer, faces)),
-        face_colour_(layer.face.IsColorEnabled()) {}
+        face_color_(layer.face.IsColorEnabled()) {}
 
-  void tube(Vec a, Vec b, double radius, int sides, vcg::Color4b colour, float quality) {
+  void tube(Vec a, Vec b, double radius, int sides, vcg::Color4b color, float quality) {
     Vec axis = b - a;
     const double length = axis.Norm();
     axis = length > 0 ? axis / length : Vec(0, 0, 1);
@@ -49,52 +49,52 @@ class TubeWriter {
     for (int end = 0; end < 2; ++end) {
       for (int k = 0; k < sides; ++k) {
         const double t = 2.0 * M_PI * k / sides;
-        vertex((end == 0 ? a : b) + (u * std::cos(t) + w * std::sin(t)) * radius, colour, quality);
+        vertex((end == 0 ? a : b) + (u * std::cos(t) + w * std::sin(t)) * radius, color, quality);
       }
     }
     for (int k = 0; k < sides; ++k) {
       const std::size_t a0 = first + std::size_t(k), a1 = first + std::size_t((k + 1) % sides);
       const std::size_t b0 = a0 + std::size_t(sides), b1 = a1 + std::size_t(sides);
-      face(a0, a1, b1, colour);  // outward: counter-clockwise seen from outside
-      face(a0, b1, b0, colour);
+      face(a0, a1, b1, color);  // outward: counter-clockwise seen from outside
+      face(a0, b1, b0, color);
     }
   }
 
-  void marker(Vec c, double radius, vcg::Color4b colour) {
+  void marker(Vec c, double radius, vcg::Color4b color) {
     const std::size_t first = index();
     const Vec dirs[6] = {Vec(1, 0, 0),  Vec(-1, 0, 0), Vec(0, 1, 0),
                          Vec(0, -1, 0), Vec(0, 0, 1),  Vec(0, 0, -1)};
     for (const Vec& d : dirs)
-      vertex(c + d * radius, colour, 0.0f);
+      vertex(c + d * radius, color, 0.0f);
     // Octahedron: +x=0 -x=1 +y=2 -y=3 +z=4 -z=5, counter-clockwise seen from outside.
     static const int tris[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
     for (const auto& t : tris)
-      face(first + std::size_t(t[0]), first + std::size_t(t[1]), first + std::size_t(t[2]), colour);
+      face(first + std::size_t(t[0]), first + std::size_t(t[1]), first + std::size_t(t[2]), color);
   }
 
  private:
   std::size_t index() const { return std::size_t(vi_ - layer_.vert.begin()); }
-  void vertex(const Vec& p, vcg::Color4b colour, float quality) {
+  void vertex(const Vec& p, vcg::Color4b color, float quality) {
     vi_->P() = CMeshO::CoordType(CMeshO::ScalarType(p[0]), CMeshO::ScalarType(p[1]),
                                  CMeshO::ScalarType(p[2]));
-    vi_->C() = colour;
+    vi_->C() = color;
     vi_->Q() = quality;
     ++vi_;
   }
-  void face(std::size_t a, std::size_t b, std::size_t c, vcg::Color4b colour) {
+  void face(std::size_t a, std::size_t b, std::size_t c, vcg::Color4b color) {
     fi_->V(0) = &layer_.vert[a];
     fi_->V(1) = &layer_.vert[b];
     fi_->V(2) = &layer_.vert[c];
-    if (face_colour_)
-      fi_->C() = colour;
+    if (face_color_)
+      fi_->C() = color;
     ++fi_;
   }
 
   CMeshO& layer_;
   CMeshO::VertexIterator vi_;
   CMeshO::FaceIterator fi_;
-  bool face_colour_;
+  bool face_color_;
 };
 
 }  // namespace

@@ -170,9 +170,9 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
     out.crossings = find_self_intersections(soup.soup);
 
   // Nothing has changed so far; from here on only the selection, face colours and a new layer.
-  if (options.colour_faces)
-    host.enable_face_colour();
-  out.selection = select_defect_faces(soup, out.report, options.select_faces, options.colour_faces);
+  if (options.color_faces)
+    host.enable_face_color();
+  out.selection = select_defect_faces(soup, out.report, options.select_faces, options.color_faces);
   if (options.select_faces)
     refresh_selection_counts(mesh);
 
@@ -199,7 +199,7 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
                    ? "\nself-intersections: not searched (this build has no CGAL)"
                    : "\nself-intersections: not searched (turn on 'Find self-intersections')";
   }
-  if (options.select_faces || options.colour_faces) {
+  if (options.select_faces || options.color_faces) {
     out.log += "\n" + std::string(options.select_faces ? "Selected " : "Coloured ") +
                std::to_string(out.selection.faces) + " faces at singular edges/vertices";
     if (options.select_faces)
@@ -222,7 +222,7 @@ DetectOutcome detect_singular_defects(CMeshO& mesh, const std::string& label,
                           {"singular_vertex_markers", out.drawn.singular_vertex_markers},
                           {"selected_faces", options.select_faces ? out.selection.faces : 0},
                           {"selected_vertices", options.select_faces ? out.selection.vertices : 0},
-                          {"coloured_faces", options.colour_faces ? out.selection.faces : 0}});
+                          {"colored_faces", options.color_faces ? out.selection.faces : 0}});
   append_counts(out.counts, out.gaps);
   if (out.crossings) {
     append_counts(out.counts, *out.crossings);
@@ -307,11 +307,9 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
 
   append_counts(out.counts, out.report);
   // Where the layer's number differs from the core's under the same key: vertices and faces of
-  // the layer (triangles, degenerate faces kept), and (as before the report schema existed) the
-  // components orientation found non-orientable rather than detection's count.
+  // the layer (triangles, degenerate faces kept).
   set_count(out.counts, "vertices_out", w.vertices_out);
   set_count(out.counts, "faces_out", w.faces_out);
-  set_count(out.counts, "before.nonorientable_components", out.report.nonorientable_components);
   add_counts(out.counts, {{"degenerate_faces_kept", w.set_aside_faces_kept},
                           {"polygons_triangulated", w.polygons_triangulated}});
   if (out.reread)

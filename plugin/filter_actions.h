@@ -54,7 +54,7 @@ struct DetectOptions {
   bool select_faces = true;
   //! Paint those faces: red at singular edges, orange at pinch vertices (per-face colour is
   //! turned on through DocumentHost::enable_face_colour()). Default: off.
-  bool colour_faces = false;
+  bool color_faces = false;
   //! What the defect layer holds. Default: tubes.
   DefectLayerForm layer_form = DefectLayerForm::tubes;
   //! Detect reports what Repair's gap closing would weld and close with these options (it
@@ -83,12 +83,12 @@ class DocumentHost {
  public:
   virtual ~DocumentHost() = default;
   //! Turns on per-face colour of the current layer (called only with `colour_faces`).
-  virtual void enable_face_colour() = 0;
+  virtual void enable_face_color() = 0;
   //! Removes every layer labelled `label` other than the current one, then appends a layer
   //! labelled `label`, with per-vertex colour and quality (and per-face colour if
   //! `face_colour`), behind the current one (the current layer stays current); returns its mesh.
   //! Called once, after detection succeeded.
-  virtual CMeshO& add_defect_layer(const std::string& label, bool face_colour) = 0;
+  virtual CMeshO& add_defect_layer(const std::string& label, bool face_color) = 0;
   //! Removes every layer labelled `label` other than the current one; returns how many.
   virtual std::size_t remove_layers(const std::string& label) = 0;
   //! True if this MeshLab can save 3MF files (an exporter for it is loaded).
@@ -138,7 +138,7 @@ struct DetectOutcome {
   //! The numbers, in this order: the report's (append_counts() of report_counts.h: the keys of
   //! docs/report-schema.md's check object, `faces` in triangles); the defect layer's red_edges,
   //! green_edges, singular_vertex_markers; selected_faces and selected_vertices (0 unless
-  //! `select_faces`), coloured_faces (0 unless `colour_faces`); what gap closing would do
+  //! `select_faces`), colored_faces (0 unless `color_faces`); what gap closing would do
   //! (gaps.*, the schema's `gaps`); with `crossings` only, self_intersections.* (the schema's
   //! `self_intersections`) and the layer's violet_faces.
   std::vector<FilterCount> counts;
@@ -183,8 +183,7 @@ struct RepairOutcome {
   //! The numbers, in this order: the repair report's (append_counts() of report_counts.h: the
   //! keys of docs/report-schema.md's repair object with gaps.*, holes.*, before.* and after.*
   //! flattened with dots), except that vertices_out and faces_out are the layer's (faces in
-  //! triangles, degenerate faces kept included) and before.nonorientable_components is
-  //! RepairReport::nonorientable_components (what orientation met, as this key always gave);
+  //! triangles, degenerate faces kept included);
   //! then the write-back's degenerate_faces_kept and polygons_triangulated; with `reread` only,
   //! reread.* (the check counts of `reread`).
   std::vector<FilterCount> counts;

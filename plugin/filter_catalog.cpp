@@ -110,7 +110,7 @@ std::vector<ParameterSpec> make_detect_parameters() {
               "Replace the current selection by the faces that have a side on a singular edge or "
               "a corner at a pinch vertex, and by the singular vertices, so that MeshLab's "
               "selection filters can work on them next."),
-      boolean(parameter::colour_faces, defaults.colour_faces,
+      boolean(parameter::color_faces, defaults.color_faces,
               "Colour faces at singular edges and vertices",
               "Paint those faces: red at singular edges, orange at pinch vertices. Turns on "
               "per-face colour for the layer and overwrites the colour of those faces."),

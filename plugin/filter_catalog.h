@@ -38,7 +38,7 @@ const FilterText& filter_text(FilterId id);
 //! Parameter names (also their python names).
 namespace parameter {
 inline constexpr const char* select_faces = "select_faces";
-inline constexpr const char* colour_faces = "color_faces";
+inline constexpr const char* color_faces = "color_faces";
 inline constexpr const char* defect_layer = "defect_layer";
 inline constexpr const char* pairing = "pairing";
 inline constexpr const char* orient = "orient";
@@ -129,7 +129,7 @@ template <class ParameterList>
 DetectOptions detect_options(const ParameterList& params, std::size_t faces) {
   DetectOptions options;
   options.select_faces = params.getBool(parameter::select_faces);
-  options.colour_faces = params.getBool(parameter::colour_faces);
+  options.color_faces = params.getBool(parameter::color_faces);
   if (params.hasParameter(parameter::defect_layer)) {
     options.layer_form = params.getEnum(parameter::defect_layer) == 1 ? DefectLayerForm::edges
                                                                       : DefectLayerForm::tubes;

@@ -131,7 +131,7 @@ std::map<std::string, QVariant> FilterMeshBridgePlugin::applyFilter(const QActio
         const mbm::DetectOutcome out = mbm::detect_singular_defects(m.cm, label, options, host);
         log_lines(out.log);
         postConditionMask = postCondition(action);
-        if (options.colour_faces)
+        if (options.color_faces)
           postConditionMask |= MeshModel::MM_FACECOLOR;
         return result_map(out.counts);
       }

@@ -33,12 +33,12 @@ class MeshDocumentHost final : public DocumentHost {
   //! `can_save_3mf`: whether the running MeshLab has a 3MF exporter (the adapter asks its API).
   MeshDocumentHost(MeshDocument& md, bool can_save_3mf)
       : md_(md), mesh_(*md.mm()), can_save_3mf_(can_save_3mf) {}
-  void enable_face_colour() override { mesh_.updateDataMask(MeshModel::MM_FACECOLOR); }
-  CMeshO& add_defect_layer(const std::string& label, bool face_colour) override {
+  void enable_face_color() override { mesh_.updateDataMask(MeshModel::MM_FACECOLOR); }
+  CMeshO& add_defect_layer(const std::string& label, bool face_color) override {
     remove_layers(label);
     MeshModel* layer = md_.addNewMesh("", QString::fromStdString(label), false);
     int mask = MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTQUALITY;
-    if (face_colour)
+    if (face_color)
       mask |= MeshModel::MM_FACECOLOR;
     layer->updateDataMask(mask);
     return layer->cm;

@@ -4,10 +4,13 @@ vertices and polygons, the three origin maps, and the report (counts and element
 refactoring that must keep outputs bit-identical (issue 32) prints the same digest before and
 after.
 
-usage: PYTHONPATH=<build>/python python3 scripts/repair_digest.py [-v] FILE_OR_FOLDER...
+usage: PYTHONPATH=<build>/python python3 scripts/repair_digest.py [-v] [--drop-key KEY]...
+       FILE_OR_FOLDER...
 
 Folders are searched for .obj .off .ply .stl .3mf files (sorted). Each file is read once and
 repaired under every option set of OPTION_SETS; -v prints one digest per file and option set.
+--drop-key KEY leaves the report's top-level KEY out of the digest (to compare builds across a
+change that only adds a report key; the meshes and origin maps still count whole).
 """
 
 import hashlib
@@ -44,8 +47,9 @@ def inputs(arguments):
             yield path
 
 
-def digest_of(result):
+def digest_of(result, dropped=()):
     vertices, faces, report = result
+    report = {k: v for k, v in report.items() if k not in dropped}
     h = hashlib.sha256()
     h.update(np.ascontiguousarray(vertices, dtype=np.float64).tobytes())
     if isinstance(faces, list):
@@ -60,9 +64,12 @@ def digest_of(result):
 
 def main(argv):
     verbose = "-v" in argv
+    dropped = {argv[i + 1] for i, a in enumerate(argv[:-1]) if a == "--drop-key"}
+    paths = [a for i, a in enumerate(argv)
+             if a not in ("-v", "--drop-key") and (i == 0 or argv[i - 1] != "--drop-key")]
     total = hashlib.sha256()
     runs = 0
-    for path in inputs(a for a in argv if a != "-v"):
+    for path in inputs(paths):
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             try:
@@ -72,7 +79,7 @@ def main(argv):
                 continue
         for options in OPTION_SETS:
             try:
-                d = digest_of(meshbridge.repair(soup, elements=True, **options))
+                d = digest_of(meshbridge.repair(soup, elements=True, **options), dropped)
             except meshbridge.InvalidMeshError as error:
                 d = hashlib.sha256(str(error).encode()).hexdigest()
             total.update(d.encode())

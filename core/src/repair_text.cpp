@@ -63,7 +63,8 @@ std::string to_text(const RepairReport& r) {
   }
   out << "components: " << r.components_before << " -> " << r.components_after
       << "; boundary edges: " << r.boundary_edges_before << " -> " << r.boundary_edges_after
-      << "; non-orientable components met by orientation: " << r.nonorientable_components << "\n";
+      << "; non-orientable components met by orientation: " << r.nonorientable_after_pairing
+      << "\n";
   if (r.ambiguous_nested_shells != 0) {
     out << "nested shells: " << r.ambiguous_nested_shells
         << " wound like the shell around them (an insert, or a cavity wound the wrong way): "

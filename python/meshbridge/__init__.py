@@ -244,6 +244,7 @@ def repair(
     faces: Optional[Faces] = None,
     *,
     elements: bool = False,
+    self_intersections: bool = False,
     **options: Any,
 ) -> RepairResult:
     """Lossless manifold repair: every face kept, every output edge manifold.
@@ -263,6 +264,8 @@ def repair(
     ``nested_shells`` ('material', the default, or 'cavity': what a closed shell inside another
     and wound the same way becomes; as ``--nested-shells``).
     Faces added by hole filling come last, with ``face_origin`` and ``corner_origin`` -1.
+    With ``self_intersections=True`` (off by default, as ``repair --self-intersections``) the
+    report also holds ``self_intersections``: the faces of the result that cross (as check's).
 
     Returns a :class:`RepairResult`: ``(vertices (n', 3) float64, faces (m', k) int32 or
     polygons, report dict)`` with ``vertex_origin (n',)``, ``face_origin (m',)`` and
@@ -273,7 +276,9 @@ def repair(
     """
     soup = _soup(vertices, faces)
     native = _repair_options(options)
-    v, f, report, vertex_origin, face_origin, corner_origin = _core.repair(soup, native, elements)
+    v, f, report, vertex_origin, face_origin, corner_origin = _core.repair(
+        soup, native, elements, self_intersections
+    )
     return RepairResult(v, f, report, vertex_origin, face_origin, corner_origin)
 
 

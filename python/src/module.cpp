@@ -7,6 +7,7 @@
 #include "numpy_soup.h"
 #include "py_file_job.h"
 #include "py_results.h"
+#include "py_soup.h"
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/errors.h"
@@ -35,15 +36,6 @@ using namespace meshbridge::python;
 
 namespace {
 
-//! A soup read from a file or built from arrays, with what its file declared.
-struct PySoup {
-  Soup soup;
-  std::string path;  //!< the file it was read from; empty when built from arrays
-  ReadInfo info;
-  //! What the file held that the soup does not (describe_not_held()); empty from arrays.
-  std::vector<std::string> not_held;
-};
-
 PyObject* new_exception(py::module_& m, const char* name, py::handle base1, py::handle base2,
                         const char* doc) {
   const std::string qualified = std::string("meshbridge.") + name;
@@ -55,11 +47,9 @@ PyObject* new_exception(py::module_& m, const char* name, py::handle base1, py::
   return type;
 }
 
-}  // namespace
-
-PYBIND11_MODULE(_core, m) {
-  m.doc() = "Compiled core of meshbridge (use the functions of the meshbridge package).";
-
+//! Adds Error and its subclasses InvalidMeshError (also a ValueError), ReadError and WriteError
+//! (also OSErrors), and translates the core's exceptions into them.
+void bind_errors(py::module_& m) {
   // Exceptions: every message names the offending file, face, corner or vertex.
   PyObject* base = PyErr_NewExceptionWithDoc(
       "meshbridge.Error", "Base class of MeshBridge's errors.", PyExc_Exception, nullptr);
@@ -87,7 +77,11 @@ PYBIND11_MODULE(_core, m) {
       PyErr_SetString(write_error, e.what());
     }
   });
+}
 
+//! Adds PairingPolicy, AmbiguousNesting, RepairOptions (gap closing and hole filling flattened
+//! into it) and the constants AUTO_WELD_TOLERANCE, DEFAULT_FILL_HOLES_MAX_EDGES, HAS_HOLE_FILLING.
+void bind_repair_options(py::module_& m) {
   py::enum_<PairingPolicy>(m, "PairingPolicy")
       .value("geometric", PairingPolicy::geometric)
       .value("combinatorial", PairingPolicy::combinatorial);
@@ -123,127 +117,54 @@ PYBIND11_MODULE(_core, m) {
   m.attr("AUTO_WELD_TOLERANCE") = kAutoWeldTolerance;
   m.attr("DEFAULT_FILL_HOLES_MAX_EDGES") = kDefaultFillHolesMaxEdges;
   m.attr("HAS_HOLE_FILLING") = has_hole_filling();
+}
 
-  py::class_<PySoup, std::shared_ptr<PySoup>>(m, "Soup")
-      .def(py::init([](py::handle vertices, py::handle faces) {
-             auto soup = std::make_shared<PySoup>();
-             soup->soup = soup_from_python(vertices, faces);
-             return soup;
-           }),
-           py::arg("vertices"), py::arg("faces"))
-      .def_property_readonly("vertices",
-                             [](py::object self) {
-                               return positions_array(self.cast<PySoup&>().soup.positions, self,
-                                                      false);
-                             })
-      .def_property_readonly(
-          "faces",
-          [](py::object self) { return faces_object(self.cast<PySoup&>().soup, self, false); })
-      .def_property_readonly("corner_vertices",
-                             [](py::object self) {
-                               const Soup& s = self.cast<PySoup&>().soup;
-                               return index_array(s.corner_vertices, s.num_vertices(), self, false);
-                             })
-      .def_property_readonly("face_begin",
-                             [](py::object self) {
-                               const Soup& s = self.cast<PySoup&>().soup;
-                               return index_array(s.face_begin, s.num_corners() + 1, self, false);
-                             })
-      .def_property_readonly("num_vertices", [](const PySoup& s) { return s.soup.num_vertices(); })
-      .def_property_readonly("num_faces", [](const PySoup& s) { return s.soup.num_faces(); })
-      .def_property_readonly("path",
-                             [](const PySoup& s) -> py::object {
-                               return s.path.empty() ? py::object(py::none())
-                                                     : py::object(py::str(s.path));
-                             })
-      .def_property_readonly(
-          "reading",
-          [](const PySoup& s) -> py::object {
-            if (s.path.empty() || !s.info.changed_anything())
-              return py::none();
-            return py::str(describe_reading(s.info));
-          },
-          "What the reader did not keep as it was (describe_reading(), as the CLI warns), or None")
-      .def_property_readonly(
-          "not_held", [](const PySoup& s) { return s.not_held; },
-          "What the file holds besides positions and polygons, which a Soup does not "
-          "(describe_not_held()): one phrase per kind, empty when none or built from arrays")
-      .def_property_readonly(
-          "read_info",
-          [](const PySoup& s) -> py::object {
-            if (s.path.empty())
-              return py::none();
-            py::dict info;  // the keys of the reports' "read" object (report_json.h)
-            info["declared_vertices"] = s.info.declared_vertices;
-            info["declared_faces"] = s.info.declared_faces;
-            info["faces_kept"] = s.info.faces_kept;
-            info["faces_split"] = s.info.faces_split;
-            info["faces_set_aside"] = s.info.faces_set_aside;
-            info["dangling_edges"] = s.info.dangling_edges;
-            info["lone_points"] = s.info.lone_points;
-            info["strip_joins"] = s.info.strip_joins;
-            info["unknown_records"] = s.info.unknown_records;
-            info["empty_records"] = s.info.empty_records;
-            info["trailing_bytes"] = s.info.trailing_bytes;
-            info["color_map_indices"] = s.info.color_map_indices;
-            info["vertices_welded_by_position"] = s.info.vertices_welded_by_position;
-            return std::move(info);
-          })
-      .def("__repr__",
-           [](const PySoup& s) {
-             return "<meshbridge.Soup: " + std::to_string(s.soup.num_vertices()) + " vertices, " +
-                    std::to_string(s.soup.num_faces()) + " faces" +
-                    (s.path.empty() ? std::string() : " from " + s.path) + ">";
-           })
-      // Pickling (Dask sends soups between processes): the arrays as raw bytes, exactly.
-      .def(py::pickle(
-          [](const PySoup& s) {
-            const ReadInfo& i = s.info;
-            return py::make_tuple(
-                py::bytes(reinterpret_cast<const char*>(s.soup.positions.data()),
-                          s.soup.positions.size() * sizeof(Point)),
-                py::bytes(reinterpret_cast<const char*>(s.soup.corner_vertices.data()),
-                          s.soup.corner_vertices.size() * sizeof(Index)),
-                py::bytes(reinterpret_cast<const char*>(s.soup.face_begin.data()),
-                          s.soup.face_begin.size() * sizeof(Index)),
-                s.path,
-                py::make_tuple(i.declared_vertices, i.declared_faces, i.faces_kept, i.faces_split,
-                               i.faces_set_aside, i.dangling_edges, i.lone_points, i.strip_joins,
-                               i.unknown_records, i.color_map_indices, i.empty_records,
-                               i.trailing_bytes),
-                s.not_held);
-          },
-          [](const py::tuple& state) {
-            if (state.size() != 5 && state.size() != 6)
-              throw InvalidSoupError("Soup: bad pickle state");
-            auto soup = std::make_shared<PySoup>();
-            const auto unpack = [&state](std::size_t item, auto& vector) {
-              const std::string bytes = state[item].cast<std::string>();
-              using T = typename std::decay_t<decltype(vector)>::value_type;
-              if (bytes.size() % sizeof(T) != 0)
-                throw InvalidSoupError("Soup: bad pickle state");
-              vector.resize(bytes.size() / sizeof(T));
-              std::memcpy(static_cast<void*>(vector.data()), bytes.data(), bytes.size());
-            };
-            unpack(0, soup->soup.positions);
-            unpack(1, soup->soup.corner_vertices);
-            unpack(2, soup->soup.face_begin);
-            soup->path = state[3].cast<std::string>();
-            const auto i = state[4].cast<std::vector<std::size_t>>();
-            if (i.size() != 12)
-              throw InvalidSoupError("Soup: bad pickle state");
-            ReadInfo& info = soup->info;
-            info.declared_vertices = i[0], info.declared_faces = i[1];
-            info.faces_kept = i[2], info.faces_split = i[3], info.faces_set_aside = i[4];
-            info.dangling_edges = i[5], info.lone_points = i[6], info.strip_joins = i[7];
-            info.unknown_records = i[8], info.color_map_indices = i[9], info.empty_records = i[10];
-            info.trailing_bytes = i[11];
-            if (state.size() == 6)
-              soup->not_held = state[5].cast<std::vector<std::string>>();
-            validate_soup(soup->soup);
-            return soup;
-          }));
+//! Writes `soup` to `path` (meshbridge.write): see the docstring bound below. Returns (singular
+//! edges, singular vertices) of the file as an STL reader gets it back, vertices moved apart and
+//! the distance. \throws std::invalid_argument for a `vertex_origin` of the wrong shape or size
+std::tuple<std::size_t, std::size_t, std::size_t, double> write_soup(const std::string& path,
+                                                                     const PySoup& soup,
+                                                                     py::object vertex_origin) {
+  std::tuple<std::size_t, std::size_t, std::size_t, double> written{0, 0, 0, 0.0};
+  std::optional<std::vector<Index>> origins;
+  if (!vertex_origin.is_none()) {  // -1 (an added vertex) becomes kNoIndex
+    const auto array = py::array_t<std::int64_t, py::array::forcecast>::ensure(vertex_origin);
+    if (!array || array.ndim() != 1)
+      throw std::invalid_argument("write: vertex_origin must be a 1-D array of integers");
+    origins.emplace(static_cast<std::size_t>(array.size()));
+    const auto values = array.unchecked<1>();
+    for (py::ssize_t i = 0; i < array.size(); ++i)
+      (*origins)[i] = values(i) < 0 ? kNoIndex : static_cast<Index>(values(i));
+  }
+  {
+    py::gil_scoped_release release;
+    IndexedMesh mesh;
+    mesh.soup = soup.soup;
+    const bool stl = mesh_format(path) == MeshFormat::stl;
+    if (stl && origins) {  // a repair result: its split vertex copies moved apart
+      if (origins->size() != mesh.soup.num_vertices()) {
+        throw std::invalid_argument("write: vertex_origin has " + std::to_string(origins->size()) +
+                                    " entries for " + std::to_string(mesh.soup.num_vertices()) +
+                                    " vertices");
+      }
+      mesh.vertex_origin = std::move(*origins);
+      const StlSeparation separated = separate_copies_for_stl(mesh);
+      std::get<2>(written) = separated.vertices_moved;
+      std::get<3>(written) = separated.distance;
+    }
+    write_mesh(path, mesh);
+    if (stl) {
+      // What every STL reader gets back: positions welded, split copies merged again.
+      const DefectReport again = detect_defects(stl_round_trip(mesh.soup));
+      std::get<0>(written) = again.singular_edges.size();
+      std::get<1>(written) = again.num_singular_vertices();
+    }
+  }
+  return written;
+}
 
+//! Adds read, write, check, repair and _repair_seconds: the calls on a Soup (GIL released).
+void bind_soup_calls(py::module_& m) {
   m.def(
       "read",
       [](const std::string& path) {
@@ -260,46 +181,7 @@ PYBIND11_MODULE(_core, m) {
       py::arg("path"));
 
   m.def(
-      "write",
-      [](const std::string& path, const PySoup& soup, py::object vertex_origin) {
-        std::tuple<std::size_t, std::size_t, std::size_t, double> written{0, 0, 0, 0.0};
-        std::optional<std::vector<Index>> origins;
-        if (!vertex_origin.is_none()) {  // -1 (an added vertex) becomes kNoIndex
-          const auto array = py::array_t<std::int64_t, py::array::forcecast>::ensure(vertex_origin);
-          if (!array || array.ndim() != 1)
-            throw std::invalid_argument("write: vertex_origin must be a 1-D array of integers");
-          origins.emplace(static_cast<std::size_t>(array.size()));
-          const auto values = array.unchecked<1>();
-          for (py::ssize_t i = 0; i < array.size(); ++i)
-            (*origins)[i] = values(i) < 0 ? kNoIndex : static_cast<Index>(values(i));
-        }
-        {
-          py::gil_scoped_release release;
-          IndexedMesh mesh;
-          mesh.soup = soup.soup;
-          const bool stl = mesh_format(path) == MeshFormat::stl;
-          if (stl && origins) {  // a repair result: its split vertex copies moved apart
-            if (origins->size() != mesh.soup.num_vertices()) {
-              throw std::invalid_argument("write: vertex_origin has " +
-                                          std::to_string(origins->size()) + " entries for " +
-                                          std::to_string(mesh.soup.num_vertices()) + " vertices");
-            }
-            mesh.vertex_origin = std::move(*origins);
-            const StlSeparation separated = separate_copies_for_stl(mesh);
-            std::get<2>(written) = separated.vertices_moved;
-            std::get<3>(written) = separated.distance;
-          }
-          write_mesh(path, mesh);
-          if (stl) {
-            // What every STL reader gets back: positions welded, split copies merged again.
-            const DefectReport again = detect_defects(stl_round_trip(mesh.soup));
-            std::get<0>(written) = again.singular_edges.size();
-            std::get<1>(written) = again.num_singular_vertices();
-          }
-        }
-        return written;
-      },
-      py::arg("path"), py::arg("soup"), py::arg("vertex_origin") = py::none(),
+      "write", &write_soup, py::arg("path"), py::arg("soup"), py::arg("vertex_origin") = py::none(),
       "Writes `soup` (positions and polygons only: a Soup holds no colours, groups or texture "
       "coordinates, so a file read and written back this way loses them; meshbridge.batch and the "
       "CLI carry them). For STL with `vertex_origin` (a repair's, one input vertex per vertex, "
@@ -330,7 +212,7 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "repair",
-      [](const PySoup& soup, const RepairOptions& options, bool elements) {
+      [](const PySoup& soup, const RepairOptions& options, bool elements, bool self_intersections) {
         std::unique_ptr<RepairResult> result;
         std::optional<ReportTree> tree;
         {
@@ -340,12 +222,19 @@ PYBIND11_MODULE(_core, m) {
           result = std::make_unique<RepairResult>(repair(soup.soup, file_options));
           if (!soup.path.empty())
             count_records_without_corners(soup.info, result->report);
+          std::unique_ptr<SelfIntersectionReport> crossings;  // of the result, as the CLI's
+          if (self_intersections) {
+            crossings = std::make_unique<SelfIntersectionReport>(
+                find_self_intersections(result->mesh.soup));
+          }
           tree.emplace(repair_tree(soup.path, result->report,
-                                   soup.path.empty() ? nullptr : &soup.info, elements));
+                                   soup.path.empty() ? nullptr : &soup.info, elements,
+                                   crossings.get()));
         }
         return repair_result_tuple(std::move(result), soup.soup, *tree);
       },
-      py::arg("soup"), py::arg("options"), py::arg("elements") = false);
+      py::arg("soup"), py::arg("options"), py::arg("elements") = false,
+      py::arg("self_intersections") = false);
 
   // For python/bench/call_overhead.py: the C++ repair alone, timed in C++ (no conversion, no
   // report JSON), to set the Python call's total against.
@@ -359,6 +248,15 @@ PYBIND11_MODULE(_core, m) {
         return std::chrono::duration<double>(stop - start).count();
       },
       py::arg("soup"), py::arg("options"));
+}
 
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "Compiled core of meshbridge (use the functions of the meshbridge package).";
+  bind_errors(m);
+  bind_repair_options(m);
+  bind_soup(m);
+  bind_soup_calls(m);
   bind_file_job(m);
 }

@@ -60,10 +60,10 @@ ReportTree check_tree(const std::string& file, const DefectReport& report, const
 }
 
 ReportTree repair_tree(const std::string& file, const RepairReport& report, const ReadInfo* read,
-                       bool elements) {
+                       bool elements, const SelfIntersectionReport* self_intersections) {
   ReportJsonOptions options;
   options.elements = elements;
-  return repair_report_tree(file, "", report, read, options);
+  return repair_report_tree(file, "", report, read, options, nullptr, nullptr, self_intersections);
 }
 
 py::dict to_dict(const ReportTree& tree) {

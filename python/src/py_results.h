@@ -26,9 +26,10 @@ namespace py = pybind11;
 ReportTree check_tree(const std::string& file, const DefectReport& report, const ReadInfo* read,
                       bool elements, const SelfIntersectionReport* self_intersections = nullptr);
 
-//! The repair report of `meshbridge repair --report`, same conventions as check_tree.
+//! The repair report of `meshbridge repair --report`, same conventions as check_tree; with
+//! `self_intersections` (those of the result) its `self_intersections` object.
 ReportTree repair_tree(const std::string& file, const RepairReport& report, const ReadInfo* read,
-                       bool elements);
+                       bool elements, const SelfIntersectionReport* self_intersections = nullptr);
 
 //! `tree` as Python values: objects as dicts (keys in the JSON's order), arrays as lists, counts
 //! as ints, strings as str; equal to json.loads() of its text. Needs the GIL.

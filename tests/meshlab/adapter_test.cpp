@@ -78,7 +78,7 @@ void open_box(CMeshO& m) {
   }
 }
 
-std::size_t faces_of_colour(const CMeshO& m, vcg::Color4b c) {
+std::size_t faces_of_color(const CMeshO& m, vcg::Color4b c) {
   std::size_t n = 0;
   for (const CFaceO& f : m.face)
     n += (!f.IsD() && f.cC() == c) ? 1 : 0;
@@ -148,8 +148,8 @@ TEST(DefectTubes, one_tube_per_defect_edge_one_marker_per_singular_vertex) {
   EXPECT_EQ(tube, 12u);
   EXPECT_EQ(std::size_t(layer.fn), tube * (1 + boundary) + mbm::kTrianglesPerMarker * markers);
   EXPECT_EQ(std::size_t(layer.vn), 12 * (1 + boundary) + 6 * markers);
-  EXPECT_EQ(faces_of_colour(layer, vcg::Color4b::Red), tube + 8 * markers);
-  EXPECT_EQ(faces_of_colour(layer, vcg::Color4b::Green), tube * boundary);
+  EXPECT_EQ(faces_of_color(layer, vcg::Color4b::Red), tube + 8 * markers);
+  EXPECT_EQ(faces_of_color(layer, vcg::Color4b::Green), tube * boundary);
   EXPECT_EQ(layer.en, 0);
   // Thin: markers reach 1.4% of the diagonal past a vertex, so the box grows by at most
   // 2 * 0.014 * sqrt(3) of the diagonal.

@@ -42,7 +42,7 @@ void two_cubes(CMeshO& m, const vcg::Point3f& shift) {
   }
 }
 
-std::size_t faces_of_colour(const CMeshO& m, vcg::Color4b c) {
+std::size_t faces_of_color(const CMeshO& m, vcg::Color4b c) {
   std::size_t n = 0;
   for (const CFaceO& f : m.face)
     n += (!f.IsD() && f.cC() == c) ? 1 : 0;
@@ -91,9 +91,9 @@ TEST(CrossingFaces, crossing_cubes_are_violet_counted_and_returned) {
   EXPECT_EQ(out.violet_faces, 12u);
   // Two lifted copies per face, violet per face and per vertex; nothing else in the layer.
   EXPECT_EQ(host.layer().fn, 24);
-  EXPECT_EQ(faces_of_colour(host.layer(), mbm::kCrossingFaceColour), 24u);
+  EXPECT_EQ(faces_of_color(host.layer(), mbm::kCrossingFaceColor), 24u);
   for (const CVertexO& v : host.layer().vert)
-    EXPECT_EQ(v.cC(), mbm::kCrossingFaceColour);
+    EXPECT_EQ(v.cC(), mbm::kCrossingFaceColor);
   const auto counts = count_map(out);
   EXPECT_EQ(counts.at("self_intersections.face_pairs"), 18);
   EXPECT_EQ(counts.at("self_intersections.faces"), 12);

@@ -12,10 +12,10 @@
 class FakeHost final : public meshbridge::meshlab::DocumentHost {
  public:
   explicit FakeHost(std::string file_name) : file_name_(std::move(file_name)) {}
-  void enable_face_colour() override {}
-  CMeshO& add_defect_layer(const std::string&, bool face_colour) override {
+  void enable_face_color() override {}
+  CMeshO& add_defect_layer(const std::string&, bool face_color) override {
     layer_.Clear();
-    if (face_colour && !layer_.face.IsColorEnabled())
+    if (face_color && !layer_.face.IsColorEnabled())
       layer_.face.EnableColor();
     return layer_;
   }

@@ -52,10 +52,10 @@ struct FileMesh {
   std::vector<std::array<double, 3>> positions;
   std::vector<std::vector<Index>> faces;
   std::vector<std::array<Index, 2>> edges;
-  std::vector<std::array<double, 4>> vertex_colour;  //!< 0..1, empty if none
+  std::vector<std::array<double, 4>> vertex_color;  //!< 0..1, empty if none
   std::vector<double> vertex_quality;
   std::vector<int> vertex_flags;
-  std::vector<std::array<double, 4>> face_colour;
+  std::vector<std::array<double, 4>> face_color;
   std::vector<double> face_quality;
   std::vector<int> face_flags;
   std::vector<std::vector<double>> face_texcoord;  //!< u0 v0 u1 v1 ... per face
@@ -153,7 +153,7 @@ FileMesh read_ply(const std::string& path) {
   }
 
   FileMesh m;
-  auto colour = [](const std::vector<std::vector<double>>& row, int r, int g, int b, int a) {
+  auto color = [](const std::vector<std::vector<double>>& row, int r, int g, int b, int a) {
     return std::array<double, 4>{row[r][0] / 255.0, row[g][0] / 255.0, row[b][0] / 255.0,
                                  a >= 0 ? row[a][0] / 255.0 : 1.0};
   };
@@ -172,7 +172,7 @@ FileMesh read_ply(const std::string& path) {
         if (q >= 0)
           m.vertex_quality.push_back(row[q][0]);
         if (r >= 0 && g >= 0 && b >= 0)
-          m.vertex_colour.push_back(colour(row, r, g, b, a));
+          m.vertex_color.push_back(color(row, r, g, b, a));
       }
     } else if (e.name == "face") {
       int vi = e.index_of("vertex_indices");
@@ -195,7 +195,7 @@ FileMesh read_ply(const std::string& path) {
         if (t >= 0)
           m.face_texcoord.push_back(row[t]);
         if (r >= 0 && g >= 0 && b >= 0)
-          m.face_colour.push_back(colour(row, r, g, b, a));
+          m.face_color.push_back(color(row, r, g, b, a));
       }
     } else if (e.name == "edge") {
       const int v1 = e.index_of("vertex1"), v2 = e.index_of("vertex2");
@@ -231,7 +231,7 @@ FileMesh read_obj(const std::string& path) {
       m.positions.push_back(p);
       double r, g, b;
       if (ls >> r >> g >> b)
-        m.vertex_colour.push_back({r, g, b, 1.0});
+        m.vertex_color.push_back({r, g, b, 1.0});
     } else if (tag == "f" || tag == "l") {
       std::vector<Index> poly;
       std::string token;
@@ -245,7 +245,7 @@ FileMesh read_obj(const std::string& path) {
       }
     }
   }
-  if (!m.vertex_colour.empty() && m.vertex_colour.size() != m.positions.size()) {
+  if (!m.vertex_color.empty() && m.vertex_color.size() != m.positions.size()) {
     fail(path + ": some vertices have a colour, some not");
   }
   return m;
@@ -367,7 +367,7 @@ int make_attributed(const std::string& in_path, const std::string& out_path) {
   return out ? 0 : 1;
 }
 
-bool is_colour(const std::array<double, 4>& c, double r, double g, double b) {
+bool is_color(const std::array<double, 4>& c, double r, double g, double b) {
   return std::abs(c[0] - r) < 0.01 && std::abs(c[1] - g) < 0.01 && std::abs(c[2] - b) < 0.01;
 }
 
@@ -412,14 +412,14 @@ int report(const std::string& path) {
                                [](int f) { return (f & kSelected) != 0; })
               << '\n';
   }
-  if (!m.face_colour.empty()) {
+  if (!m.face_color.empty()) {
     std::size_t red = 0, orange = 0, green = 0, magenta = 0, violet = 0;
-    for (const auto& c : m.face_colour) {
-      red += is_colour(c, 1, 0, 0) ? 1 : 0;
-      orange += is_colour(c, 1, 128.0 / 255, 0) ? 1 : 0;
-      green += is_colour(c, 0, 1, 0) ? 1 : 0;
-      magenta += is_colour(c, 1, 0, 1) ? 1 : 0;
-      violet += is_colour(c, 140.0 / 255, 0, 1) ? 1 : 0;  // self-intersecting faces
+    for (const auto& c : m.face_color) {
+      red += is_color(c, 1, 0, 0) ? 1 : 0;
+      orange += is_color(c, 1, 128.0 / 255, 0) ? 1 : 0;
+      green += is_color(c, 0, 1, 0) ? 1 : 0;
+      magenta += is_color(c, 1, 0, 1) ? 1 : 0;
+      violet += is_color(c, 140.0 / 255, 0, 1) ? 1 : 0;  // self-intersecting faces
     }
     std::cout << "red_faces=" << red << "\norange_faces=" << orange << "\ngreen_faces=" << green
               << "\nmagenta_faces=" << magenta << "\nviolet_faces=" << violet << '\n';
@@ -431,15 +431,15 @@ int report(const std::string& path) {
       if (e[0] >= m.positions.size() || e[1] >= m.positions.size())
         fail(path + ": bad edge");
       on_edge[e[0]] = on_edge[e[1]] = 1;
-      if (m.vertex_colour.empty()) {
+      if (m.vertex_color.empty()) {
         ++other;
         continue;
       }
-      const auto& a = m.vertex_colour[e[0]];
-      const auto& b = m.vertex_colour[e[1]];
-      if (is_colour(a, 1, 0, 0) && is_colour(b, 1, 0, 0)) {
+      const auto& a = m.vertex_color[e[0]];
+      const auto& b = m.vertex_color[e[1]];
+      if (is_color(a, 1, 0, 0) && is_color(b, 1, 0, 0)) {
         ++red;
-      } else if (is_colour(a, 0, 1, 0) && is_colour(b, 0, 1, 0)) {
+      } else if (is_color(a, 0, 1, 0) && is_color(b, 0, 1, 0)) {
         ++green;
       } else {
         ++other;
@@ -460,8 +460,8 @@ std::vector<Corner> corners_of(const FileMesh& m, std::size_t f) {
   for (std::size_t k = 0; k < face.size(); ++k) {
     const Index v = face[k];
     Corner c(m.positions[v].begin(), m.positions[v].end());
-    if (!m.vertex_colour.empty())
-      c.insert(c.end(), m.vertex_colour[v].begin(), m.vertex_colour[v].end());
+    if (!m.vertex_color.empty())
+      c.insert(c.end(), m.vertex_color[v].begin(), m.vertex_color[v].end());
     if (!m.vertex_quality.empty())
       c.push_back(m.vertex_quality[v]);
     if (!m.face_texcoord.empty() && m.face_texcoord[f].size() == 2 * face.size()) {
@@ -496,11 +496,11 @@ int same_attributes(const std::string& in_path, const std::string& out_path) {
              std::to_string(b.faces.size()));
     return 1;
   }
-  if (a.vertex_colour.empty() != b.vertex_colour.empty())
+  if (a.vertex_color.empty() != b.vertex_color.empty())
     complain("vertex colour presence");
   if (a.vertex_quality.empty() != b.vertex_quality.empty())
     complain("vertex quality presence");
-  if (a.face_colour.empty() != b.face_colour.empty())
+  if (a.face_color.empty() != b.face_color.empty())
     complain("face colour presence");
   if (a.face_quality.empty() != b.face_quality.empty())
     complain("face quality presence");
@@ -510,8 +510,8 @@ int same_attributes(const std::string& in_path, const std::string& out_path) {
     return 1;
   for (std::size_t f = 0; f < a.faces.size(); ++f) {
     const std::string at = "face " + std::to_string(f);
-    if (!a.face_colour.empty() && !near({a.face_colour[f].begin(), a.face_colour[f].end()},
-                                        {b.face_colour[f].begin(), b.face_colour[f].end()}))
+    if (!a.face_color.empty() && !near({a.face_color[f].begin(), a.face_color[f].end()},
+                                       {b.face_color[f].begin(), b.face_color[f].end()}))
       complain(at + " colour");
     if (!a.face_quality.empty() && !near({a.face_quality[f]}, {b.face_quality[f]}))
       complain(at + " quality");

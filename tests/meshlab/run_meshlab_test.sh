@@ -161,7 +161,7 @@ case "$mode" in
     # orange at pinch vertices), and the mesh itself is still unchanged.
     status=0
     server colour.log -i in.off -o coloured.ply -l 0 -m vf ff fc sa \
-      -s "$SOURCE_DIR/tests/meshlab/detect_colour.mlx" || status=$?
+      -s "$SOURCE_DIR/tests/meshlab/detect_color.mlx" || status=$?
     expect_eq "meshlabserver status (colour faces)" "$status" 0
     "$MLCHECK" report coloured.ply >coloured.txt
     expect_eq "coloured faces == selected faces" \

@@ -200,7 +200,7 @@ case "$mode" in
     "$MLCHECK" report coloured.ply >coloured.txt
     expect_eq "coloured faces == selected faces" \
       "$(( $(value red_faces coloured.txt) + $(value orange_faces coloured.txt) ))" "$(value selected_faces coloured.txt)"
-    expect_eq "result coloured_faces" "$(result "$detect_filter" coloured_faces colour.log)" "$(value selected_faces coloured.txt)"
+    expect_eq "result colored_faces" "$(result "$detect_filter" colored_faces colour.log)" "$(value selected_faces coloured.txt)"
     expect_eq "coloured mesh faces unchanged" "$(value faces coloured.txt)" "$(value triangles input.txt)"
     # The default layer: tubes and markers, coloured per face (and per vertex). A second Detect
     # replaces it: still one defect layer (layer 1) and no third layer.

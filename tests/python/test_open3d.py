@@ -56,7 +56,7 @@ def test_open3d_checkerboard_every_cube_separate():
     assert np.asarray(sizes).tolist() == [12] * (len(faces) // 12)
 
 
-def test_open3d_reads_the_obj_colours_meshbridge_writes(tmp_path):
+def test_open3d_reads_the_obj_colors_meshbridge_writes(tmp_path):
     """OBJ vertex colours are written as "v x y z r g b" unless some alpha carries information:
     Open3D 0.16 reads "v x y z r g b a" as 0 points."""
     import os

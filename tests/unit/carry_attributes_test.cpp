@@ -15,20 +15,20 @@ using namespace meshbridge;
 
 namespace {
 
-Rgba colour_of(std::size_t i) {
+Rgba color_of(std::size_t i) {
   return {static_cast<std::uint8_t>(10 + i), static_cast<std::uint8_t>(200 - i),
           static_cast<std::uint8_t>(3 * i), 255};
 }
 
 }  // namespace
 
-TEST(CarryAttributes, split_vertices_and_faces_keep_their_colours_through_a_ply_file) {
+TEST(CarryAttributes, split_vertices_and_faces_keep_their_colors_through_a_ply_file) {
   const Soup soup = models::two_cubes_sharing_edge();
   MeshAttributes attributes;
   for (std::size_t v = 0; v < soup.num_vertices(); ++v)
-    attributes.vertex_colors.push_back(colour_of(v));
+    attributes.vertex_colors.push_back(color_of(v));
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
-    attributes.face_colors.push_back(colour_of(50 + f));
+    attributes.face_colors.push_back(color_of(50 + f));
 
   const RepairResult result = repair(soup);
   ASSERT_EQ(result.mesh.soup.num_vertices(), 16u);  // the two shared vertices split
@@ -47,10 +47,10 @@ TEST(CarryAttributes, split_vertices_and_faces_keep_their_colours_through_a_ply_
   ASSERT_EQ(reread.num_vertices(), 16u);
   ASSERT_EQ(back.vertex_colors.size(), 16u);
   for (std::size_t v = 0; v < 16; ++v)
-    EXPECT_EQ(back.vertex_colors[v], colour_of(result.mesh.vertex_origin[v])) << "vertex " << v;
+    EXPECT_EQ(back.vertex_colors[v], color_of(result.mesh.vertex_origin[v])) << "vertex " << v;
   ASSERT_EQ(back.face_colors.size(), reread.num_faces());
   for (std::size_t f = 0; f < reread.num_faces(); ++f)
-    EXPECT_EQ(back.face_colors[f], colour_of(50 + result.mesh.face_origin[f])) << "face " << f;
+    EXPECT_EQ(back.face_colors[f], color_of(50 + result.mesh.face_origin[f])) << "face " << f;
 }
 
 TEST(CarryAttributes, groups_move_with_their_faces_and_emptied_ones_give_way) {
@@ -70,7 +70,7 @@ TEST(CarryAttributes, groups_move_with_their_faces_and_emptied_ones_give_way) {
 
 // write_mesh maps the input's colours through the origins once: a set-aside face shifts every
 // origin by one, and handing it carry_attributes' output (already mapped) broke this.
-TEST(CarryAttributes, write_mesh_maps_input_colours_once_past_a_set_aside_face) {
+TEST(CarryAttributes, write_mesh_maps_input_colors_once_past_a_set_aside_face) {
   Soup soup;
   for (const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)})
     soup.add_vertex(p);
@@ -79,7 +79,7 @@ TEST(CarryAttributes, write_mesh_maps_input_colours_once_past_a_set_aside_face) 
   soup.add_polygon({0, 3, 1});
   MeshAttributes attributes;
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
-    attributes.face_colors.push_back(colour_of(f));
+    attributes.face_colors.push_back(color_of(f));
   const RepairResult result = repair(soup);
   ASSERT_EQ(result.mesh.face_origin, (std::vector<Index>{1, 2}));
 
@@ -92,6 +92,6 @@ TEST(CarryAttributes, write_mesh_maps_input_colours_once_past_a_set_aside_face) 
   read_soup(name, nullptr, &back);
   std::remove(name);
   ASSERT_EQ(back.face_colors.size(), 2u);
-  EXPECT_EQ(back.face_colors[0], colour_of(1));
-  EXPECT_EQ(back.face_colors[1], colour_of(2));
+  EXPECT_EQ(back.face_colors[0], color_of(1));
+  EXPECT_EQ(back.face_colors[1], color_of(2));
 }

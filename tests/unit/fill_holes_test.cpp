@@ -250,7 +250,7 @@ TEST(FillHoles, preconditions_name_the_offending_element) {
   EXPECT_EQ(fill_holes(book, {0}).holes_left, 0u);
 }
 
-TEST(FillHoles, added_faces_take_the_default_colour_and_the_last_group) {
+TEST(FillHoles, added_faces_take_the_default_color_and_the_last_group) {
   const Soup soup = quad_cube({1});
   MeshAttributes attributes;
   for (std::size_t f = 0; f < soup.num_faces(); ++f)

@@ -94,7 +94,7 @@ TEST(Format3mfFidelity, the_unit_is_kept_written_back_and_named_where_it_cannot_
   EXPECT_TRUE(describe_unwritten("out.stl", back).empty());
 }
 
-TEST(Format3mfFidelity, triangle_colours_and_object_names_are_named_as_read_past) {
+TEST(Format3mfFidelity, triangle_colors_and_object_names_are_named_as_read_past) {
   const std::string path = scratch("coloured.3mf");
   write_inch_tetrahedron(path);
   MeshAttributes attributes;

@@ -301,7 +301,7 @@ void write_busy_obj(const std::string& file, const Soup& soup) {
   }
 }
 
-TEST_F(ParallelReading, obj_with_relative_indices_groups_and_colours_reads_the_same_in_parts) {
+TEST_F(ParallelReading, obj_with_relative_indices_groups_and_colors_reads_the_same_in_parts) {
   const Soup board = test_support::shuffled(models::checkerboard_cubes(30), 5);
   const std::string file = path("busy.obj");
   write_busy_obj(file, board);
@@ -311,13 +311,13 @@ TEST_F(ParallelReading, obj_with_relative_indices_groups_and_colours_reads_the_s
   EXPECT_GT(one.info.dangling_edges, 0u);
   EXPECT_EQ(one.attributes.vertex_colors.size(), one.soup.num_vertices());
   ASSERT_EQ(one.attributes.vertex_color_missing.size(), one.soup.num_vertices());
-  std::size_t coloured = 0;
+  std::size_t colored = 0;
   for (std::size_t v = 0; v < one.soup.num_vertices(); ++v) {
     const bool has = v > one.soup.num_vertices() / 2 && v % 100 < 5;
-    coloured += has;
+    colored += has;
     EXPECT_EQ(one.attributes.vertex_color_missing[v], !has) << v;
   }
-  EXPECT_GT(coloured, 0u);
+  EXPECT_GT(colored, 0u);
   EXPECT_EQ(one.attributes.vertex_color_channels, kRgbaChannels);  // some 'v' has r g b a
   const std::size_t group_lines = (board.num_faces() + 4999) / 5000;
   EXPECT_EQ(one.attributes.material_libraries.size(), group_lines);
@@ -445,7 +445,7 @@ TEST_F(ParallelReading, obj_errors_in_later_parts_are_named_as_by_one_thread) {
   expect_same_for_every_thread_count(bad_number);
 }
 
-TEST_F(ParallelReading, obj_colour_scale_is_one_per_file_across_parts) {
+TEST_F(ParallelReading, obj_color_scale_is_one_per_file_across_parts) {
   // 0s and 1s in the first part, one 0..255 colour in the last: every part reads "1 1 1" as
   // near black, as one thread does.
   const std::string file = path("scale.obj");

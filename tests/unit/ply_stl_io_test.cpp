@@ -123,7 +123,7 @@ const std::vector<std::pair<const char*, Soup (*)()>> kModels = {
 
 // --- differential: OpenMesh's readers as the cross-check -------------------------------------
 
-TEST_F(PlyStlIo, realworld_ply_reads_as_openmesh_reads_it_colours_included) {
+TEST_F(PlyStlIo, realworld_ply_reads_as_openmesh_reads_it_colors_included) {
   const auto files = realworld_files("ply");
   ASSERT_EQ(files.size(), 2u);
   for (const std::string& file : files) {

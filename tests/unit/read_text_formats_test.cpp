@@ -195,7 +195,7 @@ TEST_F(TextFormats, obj_lines_and_points_without_an_index_are_counted_as_empty_r
       << describe_reading(info);
 }
 
-TEST_F(TextFormats, obj_index_forms_negative_indices_colours_and_groups) {
+TEST_F(TextFormats, obj_index_forms_negative_indices_colors_and_groups) {
   MeshAttributes attributes;
   ReadInfo info;
   const Soup soup =
@@ -298,7 +298,7 @@ TEST_F(TextFormats, read_write_read_is_identical_for_obj_and_off) {
   }
 }
 
-TEST_F(TextFormats, colours_and_groups_round_trip) {
+TEST_F(TextFormats, colors_and_groups_round_trip) {
   MeshAttributes attributes;
   const Soup soup = read_soup(write("colored.off",
                                     "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n"

@@ -81,7 +81,7 @@ TEST_F(ReaderFaults, off_words_that_are_no_number_are_counted_per_line) {
   EXPECT_TRUE(clean.not_kept.empty());
 }
 
-TEST_F(ReaderFaults, off_colours_out_of_range_are_clamped_and_counted) {
+TEST_F(ReaderFaults, off_colors_out_of_range_are_clamped_and_counted) {
   MeshAttributes attributes;
   read_soup(write("colours.off",
                   "COFF\n4 3 0\n0 0 0 300 0 0\n1 0 0 -5 0 0\n0 1 0 nan 0 0\n"
@@ -109,7 +109,7 @@ TEST_F(ReaderFaults, off_colours_out_of_range_are_clamped_and_counted) {
   EXPECT_TRUE(said);
 }
 
-TEST_F(ReaderFaults, ply_colours_out_of_range_are_clamped_and_counted) {
+TEST_F(ReaderFaults, ply_colors_out_of_range_are_clamped_and_counted) {
   const std::string header =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
       "property float z\nproperty int red\nproperty int green\nproperty float blue\n"
@@ -254,10 +254,10 @@ TEST_F(ReaderFaults, stl_padding_a_streamed_count_and_a_fourth_number) {
                        "binary STL header that counts 1 triangles before 2 whole facets, all "
                        "read"));
   // What such facets carry is named as for a whole binary STL (an attribute word here).
-  std::string coloured = one;
-  coloured[84 + 48] = 5;
+  std::string colored = one;
+  colored[84 + 48] = 5;
   attributes = MeshAttributes();
-  read_soup(write("coloured.stl", coloured), nullptr, &attributes);
+  read_soup(write("coloured.stl", colored), nullptr, &attributes);
   ASSERT_EQ(attributes.not_kept.size(), 2u);
   EXPECT_TRUE(contains(attributes.not_kept[0].what, "binary STL facet attribute words"));
   std::string three = binary + std::string(20, '\0');

@@ -234,7 +234,7 @@ TEST_F(ReaderStrictness, a_utf8_byte_order_mark_is_skipped_in_text_formats) {
 // OFF colours written as integers are 0..255, as floats 0..1. "1 1 1" is either: in a file that
 // writes other colours as floats it is white, in one that writes only integers it stays 1/255.
 // Whether a colour is integer is decided by its own values, not by the normal before it.
-TEST_F(ReaderStrictness, off_colour_scale_is_decided_per_file) {
+TEST_F(ReaderStrictness, off_color_scale_is_decided_per_file) {
   const auto colors = [&](const std::string& name, const std::string& text) {
     MeshAttributes attributes;
     read_soup(write(name, text), nullptr, &attributes);

@@ -154,7 +154,7 @@ TEST(Repair, moebius_is_reported_non_orientable_and_cut_open) {
   const Soup soup = models::moebius_strip();
   const RepairResult plain = repair(soup);
   expect_repair_invariants(soup, plain);
-  EXPECT_EQ(plain.report.nonorientable_components, 1u);
+  EXPECT_EQ(plain.report.nonorientable_after_pairing, 1u);
   EXPECT_EQ(plain.report.before.num_nonorientable_components, 1u);
   EXPECT_EQ(plain.report.after.num_nonorientable_components, 0u);
   EXPECT_EQ(plain.report.faces_flipped, 0u);
@@ -163,7 +163,7 @@ TEST(Repair, moebius_is_reported_non_orientable_and_cut_open) {
   options.cut_nonorientable = true;
   const RepairResult cut = repair(soup, options);
   expect_repair_invariants(soup, cut);
-  EXPECT_EQ(cut.report.nonorientable_components, 1u);
+  EXPECT_EQ(cut.report.nonorientable_after_pairing, 1u);
   EXPECT_EQ(cut.report.sides_cut_for_orientation, 2u);
   EXPECT_EQ(cut.report.after.num_nonorientable_components, 0u);
   EXPECT_EQ(cut.report.components_after, 1u);

@@ -16,6 +16,11 @@
 //! - *set aside* (a polygon with fewer than 3 distinct corners; listed as `faces_set_aside`
 //!   in reports) ~ a degenerate face dropped by other readers;
 //! - *sheet* ~ a face with the same side of space (material or void) on both sides.
+//! - *triangulated* (a polygon written as triangles, `polygons_triangulated`): ear-clipped,
+//!   fanned only where ear clipping gives up (geometry/triangulate.h);
+//! - *color* in identifiers (`vertex_colors`, `ColorScale`, MeshLab's `color_faces` and
+//!   `colored_faces`), as OpenMesh, vcglib and the formats spell it; prose and messages write
+//!   British "colour".
 
 #include "meshbridge/soup.h"
 

@@ -96,7 +96,8 @@ struct FileJobResult {
   //! warns with it, as `repair` does.
   std::string reading;
   //! Clean or repaired: what the output holds beyond the polygons (the record's `written`):
-  //! triangles fanned for STL/3MF, and what the output format left out (the CLI warns with each).
+  //! polygons triangulated for STL/3MF, and what the output format left out (the CLI warns with
+  //! each).
   WrittenOutput written;
   std::string record;   //!< the JSON Lines record (batch_record_json), no trailing newline
   RepairReport report;  //!< clean or repaired: what repair did; empty otherwise

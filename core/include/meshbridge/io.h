@@ -304,7 +304,7 @@ struct WrittenOutput {
   double separation = 0;  //!< how far each of them moved (model units); 0 when none moved
 };
 
-//! What write_mesh(path, mesh with `soup`, &attributes) makes of it: the triangles and fanned
+//! What write_mesh(path, mesh with `soup`, &attributes) makes of it: the triangles and triangulated
 //! polygons of a format that holds triangles only (.stl, .3mf); describe_unwritten(); there, the
 //! vertices with a coordinate that is not exactly a 32-bit float ("positions of 12 vertices
 //! rounded to 32-bit floats: STL holds no more"); and, when the input had vertex colours and

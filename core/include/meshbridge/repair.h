@@ -97,7 +97,7 @@ struct RepairReport {
   std::size_t boundary_edges_after = 0;
   //! Components that orientation found non-orientable (after pairing, before any cut): with
   //! `cut_nonorientable` they were oriented by cutting, otherwise left as they were.
-  std::size_t nonorientable_components = 0;
+  std::size_t nonorientable_after_pairing = 0;
   //! Closed shells nested in a closed shell and wound like it as written (see
   //! RepairOptions::nested_shells): ambiguous between an insert and a wrongly wound cavity.
   std::size_t ambiguous_nested_shells = 0;

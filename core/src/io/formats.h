@@ -168,9 +168,9 @@ inline void push_color(std::vector<Rgba>& colors, std::vector<bool>& missing, st
 
 //! True if input element `origin` has a colour of its own in `colours` (see
 //! MeshAttributes::has_color); false for kNoIndex (an element repair added).
-inline bool has_colour(const std::vector<Rgba>& colours, const std::vector<bool>& missing,
-                       Index origin) {
-  return MeshAttributes::has_color(colours, missing, origin);
+inline bool has_color(const std::vector<Rgba>& colors, const std::vector<bool>& missing,
+                      Index origin) {
+  return MeshAttributes::has_color(colors, missing, origin);
 }
 
 //! The vertex of the input soup behind output vertex `v` (identity when the map is empty).
@@ -192,8 +192,8 @@ CornerAttributes carry_corner_attributes(const CornerAttributes& input, const In
 
 //! The colour of the input element `origin` (from input_vertex / input_face), or the default
 //! colour (opaque black) for an element with no input (kNoIndex: a face added by hole filling).
-inline Rgba colour_of(const std::vector<Rgba>& colours, Index origin) {
-  return origin < colours.size() ? colours[origin] : Rgba{};
+inline Rgba color_of(const std::vector<Rgba>& colors, Index origin) {
+  return origin < colors.size() ? colors[origin] : Rgba{};
 }
 
 }  // namespace meshbridge::detail

@@ -51,17 +51,17 @@ void check_attributes(const std::string& path, const IndexedMesh& mesh,
                       const MeshAttributes* attributes) {
   if (attributes == nullptr)
     return;
-  const auto check = [&](std::size_t colours, std::size_t count, const std::vector<Index>& origin,
+  const auto check = [&](std::size_t colors, std::size_t count, const std::vector<Index>& origin,
                          const char* what) {
-    if (colours == 0)
+    if (colors == 0)
       return;
     std::size_t needed = origin.empty() ? count : 0;
     for (Index o : origin) {
       if (o != kNoIndex)  // a face repair added (hole filling) has no input colour
         needed = std::max<std::size_t>(needed, std::size_t(o) + 1);
     }
-    if (colours < needed) {
-      throw WriteError(path + ": the attributes hold " + std::to_string(colours) + " " + what +
+    if (colors < needed) {
+      throw WriteError(path + ": the attributes hold " + std::to_string(colors) + " " + what +
                        "(s) but the mesh needs " + std::to_string(needed) +
                        " (attributes of another mesh?)");
     }
@@ -71,10 +71,10 @@ void check_attributes(const std::string& path, const IndexedMesh& mesh,
   check(attributes->face_colors.size(), mesh.soup.num_faces(), mesh.face_origin, "face colour");
   check(attributes->face_objects.size(), mesh.soup.num_faces(), mesh.face_origin,
         "face's 3MF object");
-  const auto check_flags = [&](std::size_t flags, std::size_t colours, const char* what) {
-    if (flags != 0 && flags != colours) {
+  const auto check_flags = [&](std::size_t flags, std::size_t colors, const char* what) {
+    if (flags != 0 && flags != colors) {
       throw WriteError(path + ": the attributes hold " + std::to_string(flags) + " " + what +
-                       " missing-colour flag(s) for " + std::to_string(colours) +
+                       " missing-colour flag(s) for " + std::to_string(colors) +
                        " colour(s) (expected none or one per colour)");
     }
   };

@@ -62,7 +62,7 @@ void append_corner_attributes(ObjPart& part, std::size_t corner_base, MeshAttrib
 
 }  // namespace
 
-void rescale_unit_colours(const ColourScale& scale, MeshAttributes& attributes) {
+void rescale_unit_colors(const ColorScale& scale, MeshAttributes& attributes) {
   if (!scale.bytes)
     return;
   const auto as_byte = [](std::uint8_t& channel) {

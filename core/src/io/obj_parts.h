@@ -44,7 +44,7 @@ struct AttributeIndices {
 //! above 1 is 0..255 (as some exporters write them), and in a file with such a colour, colours
 //! of 0s and 1s are 0..255 too ("1 1 1" is near black, not white). A reader notes what it met;
 //! rescale_unit_colours() applies the file's scale at the end.
-struct ColourScale {
+struct ColorScale {
   bool bytes = false;  //!< some colour was whole numbers with one above 1
   //! The vertices (0-based, in the reader's soup) whose colour is 0s and 1s, read as 0..1, and
   //! whether it gave alpha.
@@ -53,7 +53,7 @@ struct ColourScale {
 
 //! In a file with some 0..255 colour (`scale.bytes`), reads the colours of 0s and 1s as 0..255
 //! too: a channel of "1" is 1, not 255. Nothing otherwise.
-void rescale_unit_colours(const ColourScale& scale, MeshAttributes& attributes);
+void rescale_unit_colors(const ColorScale& scale, MeshAttributes& attributes);
 
 //! How many `v` and `f` records, and face corners at most, a range of an OBJ file holds.
 struct RecordCounts {
@@ -78,7 +78,7 @@ struct ObjPart {
   MeshAttributes attributes;
   RelativeCorners relative;
   AttributeIndices attribute_indices;
-  ColourScale colour_scale;
+  ColorScale color_scale;
 };
 
 //! Adds `n` to the attributes' list, or its count to an entry about the same thing (parts).

@@ -64,15 +64,15 @@ void ObjReader::read() {
     attributes_->texture_coordinates = texture_coordinates_;
     if (w_not_one_ > 0)
       add_not_kept(*attributes_, {"OBJ vertex w other than 1", w_not_one_, "vertex"});
-    if (colours_clamped_ > 0) {
+    if (colors_clamped_ > 0) {
       add_not_kept(*attributes_, {"OBJ vertex colour values outside 0-1 (or 0-255) or not "
                                   "finite, clamped to the range",
-                                  colours_clamped_, "vertex", true, true});
+                                  colors_clamped_, "vertex", true, true});
     }
-    if (values_no_colour_ > 0) {
+    if (values_no_color_ > 0) {
       add_not_kept(*attributes_, {"OBJ numbers after a vertex that are no w or colour (5, or more "
                                   "than 7)",
-                                  values_no_colour_, "vertex", true});
+                                  values_no_color_, "vertex", true});
     }
     if (attribute_records_bad_ > 0) {
       add_not_kept(*attributes_, {"OBJ vt or vn records with a value that is no number (kept as 0)",
@@ -129,11 +129,11 @@ void ObjReader::vertex() {
         std::all_of(values + 3, values + n, [](double v) { return v == std::floor(v); });
     const bool bytes = whole && *std::max_element(values + 3, values + n) > 1;
     if (bytes)
-      colour_scale_.bytes = true;
+      color_scale_.bytes = true;
     else if (whole)  // 0s and 1s: the file's scale decides
-      colour_scale_.unit.emplace_back(static_cast<Index>(soup_.num_vertices() - 1), n == 7);
+      color_scale_.unit.emplace_back(static_cast<Index>(soup_.num_vertices() - 1), n == 7);
     const double top = bytes ? 255 : 1;
-    colours_clamped_ +=
+    colors_clamped_ +=
         std::any_of(values + 3, values + n, [top](double v) { return !(v >= 0 && v <= top); });
     color = Rgba{to_byte(values[3], bytes), to_byte(values[4], bytes), to_byte(values[5], bytes),
                  n == 7 ? to_byte(values[6], bytes) : std::uint8_t(255)};
@@ -143,7 +143,7 @@ void ObjReader::vertex() {
   alpha_given_ = alpha_given_ || n == 7;
   // Read past: a w other than 1 ("v x y z w"), and numbers that are neither w nor a colour.
   w_not_one_ += n == 4 && values[3] != 1;
-  values_no_colour_ += n == 5 || (n == 7 && !in_.at_line_end());
+  values_no_color_ += n == 5 || (n == 7 && !in_.at_line_end());
 }
 
 void ObjReader::attribute_record(int slot) {

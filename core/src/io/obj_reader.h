@@ -38,7 +38,7 @@ class ObjReader {
   //! The vt/vn indices met by read().
   const AttributeIndices& attribute_indices() const { return attribute_indices_; }
   //! The colour scale this reader met (see ColourScale); moved out.
-  ColourScale take_colour_scale() { return std::move(colour_scale_); }
+  ColorScale take_color_scale() { return std::move(color_scale_); }
 
   //! Reads the file counting the corners whose vt or vn index names a record past the file's
   //! `totals` (vt, vn) or, relative, before its first one.
@@ -108,9 +108,9 @@ class ObjReader {
   std::size_t attribute_index_faults_ = 0;
   const ObjIndexOutOfRange* locate_ = nullptr;              // see locate()
   bool alpha_given_ = false;                                // some 'v' line has r g b a
-  std::size_t w_not_one_ = 0, values_no_colour_ = 0;        // see vertex()
-  std::size_t colours_clamped_ = 0;                         // see vertex()
-  ColourScale colour_scale_;                                // see vertex()
+  std::size_t w_not_one_ = 0, values_no_color_ = 0;         // see vertex()
+  std::size_t colors_clamped_ = 0;                          // see vertex()
+  ColorScale color_scale_;                                  // see vertex()
   static constexpr std::ptrdiff_t kReleaseEvery = 8 << 20;  // bytes of the map kept behind
   const char* released_;
 };

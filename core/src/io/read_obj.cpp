@@ -22,7 +22,7 @@ namespace {
 //! index that reaches before the file's first vertex: the one-thread read names it.
 bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& info,
                    MeshAttributes* attributes, AttributeIndices& attribute_indices,
-                   ColourScale& colour_scale) {
+                   ColorScale& color_scale) {
   std::vector<ObjPart> parts(n);
   for (unsigned k = 0; k < n; ++k) {
     parts[k].first = k == 0 ? after_byte_order_mark(file.data(), file.end()) : parts[k - 1].last;
@@ -50,14 +50,14 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
         ObjReader reader(file, part.first, part.last, soup, info, attributes);
         reader.read();
         part.attribute_indices = reader.attribute_indices();
-        part.colour_scale = reader.take_colour_scale();
+        part.color_scale = reader.take_color_scale();
       } else {
         reserve_huge(part.soup, part.counts.vertices, part.counts.faces, part.counts.corners);
         ObjReader reader(file, part.first, part.last, part.soup, part.info,
                          attributes != nullptr ? &part.attributes : nullptr, &part.relative);
         reader.read();
         part.attribute_indices = reader.attribute_indices();
-        part.colour_scale = reader.take_colour_scale();
+        part.color_scale = reader.take_color_scale();
       }
     } catch (const ReadError&) {
       failed[k] = 1;
@@ -85,10 +85,10 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
   // part 0 read into `soup` itself, and appending empties a part).
   std::size_t first_vertex = 0;
   for (unsigned k = 0; k < n; ++k) {
-    const ColourScale& part = parts[k].colour_scale;
-    colour_scale.bytes = colour_scale.bytes || part.bytes;
+    const ColorScale& part = parts[k].color_scale;
+    color_scale.bytes = color_scale.bytes || part.bytes;
     for (const auto& [v, alpha] : part.unit)
-      colour_scale.unit.emplace_back(static_cast<Index>(first_vertex + v), alpha);
+      color_scale.unit.emplace_back(static_cast<Index>(first_vertex + v), alpha);
     first_vertex += k == 0 ? soup.num_vertices() : parts[k].soup.num_vertices();
   }
   for (unsigned k = 0; k < n; ++k) {
@@ -113,14 +113,14 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
       std::clamp<std::size_t>(file.size() / (std::size_t(1) << 20), 1, worker_threads()));
   bool read = false;
   AttributeIndices attribute_indices;
-  ColourScale colour_scale;
+  ColorScale color_scale;
   if (n > 1) {
-    read = read_in_parts(file, n, soup, info, attributes, attribute_indices, colour_scale);
+    read = read_in_parts(file, n, soup, info, attributes, attribute_indices, color_scale);
     if (!read) {
       soup = Soup();
       info = ReadInfo();
       attribute_indices = AttributeIndices();
-      colour_scale = ColourScale();
+      color_scale = ColorScale();
       if (attributes != nullptr)
         *attributes = MeshAttributes();
     }
@@ -132,7 +132,7 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
                      attributes);
     reader.read();
     attribute_indices = reader.attribute_indices();
-    colour_scale = reader.take_colour_scale();
+    color_scale = reader.take_color_scale();
   }
   // An l or p corner past the last vertex: an error naming its line, as for faces.
   if (attribute_indices.highest_element_vertex > std::int64_t(soup.num_vertices())) {
@@ -144,7 +144,7 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   }
   if (attributes == nullptr)
     return;
-  rescale_unit_colours(colour_scale, *attributes);
+  rescale_unit_colors(color_scale, *attributes);
   // A vt or vn index the file has no record for: counted by reading the file once more (only
   // such a broken file pays for it), and named as a fault.
   const std::size_t totals[2] = {attributes->texture_coordinates, attributes->normals};

@@ -59,7 +59,7 @@ class OffReader {
     if (header.binary) {
       const OffBinaryNotes notes =
           read_off_binary(file_, in_.position(), header, soup_, info_, attributes_);
-      binary_face_colours_ = notes.face_colours;
+      binary_face_colors_ = notes.face_colors;
       vertex_colors_clamped_ = notes.vertex_colors_clamped;
       if (attributes_ != nullptr)
         note_not_kept(header, info_.declared_vertices);
@@ -235,7 +235,7 @@ class OffReader {
           else if (values.size() == 1)
             ++info_.color_map_indices;
           else if (!values.empty())
-            ++vertex_values_no_colour_;
+            ++vertex_values_no_color_;
         }
         if (want_colors) {
           push_color(attributes_->vertex_colors, attributes_->vertex_color_missing,
@@ -245,7 +245,7 @@ class OffReader {
         // Plain OFF: values past x y z [normal] [s t] (a colour needs the C keyword).
         vertex_words_ += !numbers_to_line_end(rest, integral);
         if (rest.size() > (h.normals ? 3u : 0u) + (h.texcoords ? 2u : 0u))
-          ++vertex_values_no_colour_;
+          ++vertex_values_no_color_;
       }
       in_.next_line();
     }
@@ -299,7 +299,7 @@ class OffReader {
         else if (rest.size() == 1)
           ++info_.color_map_indices;
         else if (!rest.empty())
-          ++face_values_no_colour_;
+          ++face_values_no_color_;
       }
       in_.next_line();
     }
@@ -355,17 +355,17 @@ class OffReader {
       not_kept.push_back({"OFF vertex normals (NOFF)", vertices, "vertex"});
     if (h.texcoords && vertices > 0)
       not_kept.push_back({"OFF texture coordinates (ST)", vertices, "vertex"});
-    if (vertex_values_no_colour_ > 0) {
+    if (vertex_values_no_color_ > 0) {
       not_kept.push_back(
           {std::string("OFF values after a vertex that are no colour (") +
                (h.colors ? "not 1, 3 or 4 numbers" : "plain OFF: colours need COFF") + ")",
-           vertex_values_no_colour_, "vertex line", true});
+           vertex_values_no_color_, "vertex line", true});
     }
-    if (face_values_no_colour_ > 0) {
+    if (face_values_no_color_ > 0) {
       not_kept.push_back(
           {"OFF values after a face's corners that are no colour (not 1, 3 or 4 "
            "numbers)",
-           face_values_no_colour_, "face line", true});
+           face_values_no_color_, "face line", true});
     }
     if (vertex_words_ > 0) {
       not_kept.push_back({"OFF words after a vertex's numbers that are no number (read past)",
@@ -387,9 +387,9 @@ class OffReader {
            "clamped to the range",
            face_colors_clamped_, "face", true, true});
     }
-    if (binary_face_colours_ > 0) {
+    if (binary_face_colors_ > 0) {
       not_kept.push_back(
-          {"binary OFF face colours (Geomview's layout)", binary_face_colours_, "face"});
+          {"binary OFF face colours (Geomview's layout)", binary_face_colors_, "face"});
     }
   }
 
@@ -409,9 +409,9 @@ class OffReader {
   TextScanner in_;
   const char* released_ = file_.data();
   bool unit_colors_seen_ = false;  //!< some colour was written as floats (0..1)
-  bool vertex_alpha_given_ = false, face_alpha_given_ = false;  //!< some colour had 4 values
-  std::size_t vertex_values_no_colour_ = 0, face_values_no_colour_ = 0;  //!< see note_not_kept
-  std::size_t binary_face_colours_ = 0;            //!< Geomview binary faces with a colour
+  bool vertex_alpha_given_ = false, face_alpha_given_ = false;         //!< some colour had 4 values
+  std::size_t vertex_values_no_color_ = 0, face_values_no_color_ = 0;  //!< see note_not_kept
+  std::size_t binary_face_colors_ = 0;             //!< Geomview binary faces with a colour
   std::size_t vertex_words_ = 0, face_words_ = 0;  //!< lines with a word that is no number
   std::size_t vertex_colors_clamped_ = 0, face_colors_clamped_ = 0;  //!< see off_color_clamped()
   std::vector<std::pair<ColorOf, Index>> ambiguous_colors_;          //!< integer colours all <= 1

@@ -41,7 +41,7 @@ void add_off_face(std::vector<Index>& corners, Soup& soup, ReadInfo& info);
 
 //! What reading a binary OFF body counts for the reader's NotKept entries.
 struct OffBinaryNotes {
-  std::size_t face_colours = 0;           //!< Geomview-layout faces with a colour (not kept)
+  std::size_t face_colors = 0;            //!< Geomview-layout faces with a colour (not kept)
   std::size_t vertex_colors_clamped = 0;  //!< vertices with a channel outside 0..1
 };
 

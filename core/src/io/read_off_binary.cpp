@@ -170,14 +170,14 @@ class OffBinaryReader {
                                   // be read without fitting, see plausible())
         if (left() < 4)
           fail("binary OFF ends in face " + std::to_string(f + 1) + ", before its colour count");
-        const std::uint32_t colour_values = word();
-        if (4 * std::uint64_t(colour_values) > left()) {
+        const std::uint32_t color_values = word();
+        if (4 * std::uint64_t(color_values) > left()) {
           fail("binary OFF face " + std::to_string(f + 1) + " claims " +
-               std::to_string(colour_values) + " colour values, more than the rest of the file " +
+               std::to_string(color_values) + " colour values, more than the rest of the file " +
                "holds");
         }
-        notes_.face_colours += colour_values > 0 ? 1 : 0;
-        p += 4 * std::uint64_t(colour_values);
+        notes_.face_colors += color_values > 0 ? 1 : 0;
+        p += 4 * std::uint64_t(color_values);
       }
     }
     if (p != end && !only_padding(p)) {

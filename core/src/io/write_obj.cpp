@@ -31,7 +31,7 @@ void write_obj(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
     const Point& p = soup.positions[v];
     text.text("v ").number(p[0]).ch(' ').number(p[1]).ch(' ').number(p[2]);
     const Index origin = colors ? input_vertex(mesh, v) : kNoIndex;
-    if (colors && has_colour(attributes->vertex_colors, attributes->vertex_color_missing, origin)) {
+    if (colors && has_color(attributes->vertex_colors, attributes->vertex_color_missing, origin)) {
       const Rgba c = attributes->vertex_colors[origin];
       text.ch(' ').number(c.r / 255.0).ch(' ').number(c.g / 255.0).ch(' ').number(c.b / 255.0);
       if (alpha)

@@ -34,7 +34,7 @@ void write_off(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
     const Point& p = soup.positions[v];
     text.number(p[0]).ch(' ').number(p[1]).ch(' ').number(p[2]);
     if (vertex_colors)  // COFF: every vertex has a colour (white if the input vertex had none)
-      put_color(text, colour_of(attributes->vertex_colors, input_vertex(mesh, v)), vertex_alpha);
+      put_color(text, color_of(attributes->vertex_colors, input_vertex(mesh, v)), vertex_alpha);
     text.ch('\n');
   }
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
@@ -42,7 +42,7 @@ void write_off(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
     for (Index v : soup.polygon(f))
       text.ch(' ').number(static_cast<std::uint64_t>(v));
     const Index origin = face_colors ? input_face(mesh, f) : kNoIndex;
-    if (face_colors && has_colour(attributes->face_colors, attributes->face_color_missing, origin))
+    if (face_colors && has_color(attributes->face_colors, attributes->face_color_missing, origin))
       put_color(text, attributes->face_colors[origin], face_alpha);
     text.ch('\n');
   }

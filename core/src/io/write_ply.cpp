@@ -136,10 +136,10 @@ void write_ply(AtomicOutput& out, const IndexedMesh& mesh, const MeshAttributes*
   out.write(header);
 
   const auto vertex_color = [&](std::size_t v) {
-    return colour_of(attributes->vertex_colors, input_vertex(mesh, v));
+    return color_of(attributes->vertex_colors, input_vertex(mesh, v));
   };
   const auto face_color = [&](std::size_t f) {
-    return colour_of(attributes->face_colors, input_face(mesh, f));
+    return color_of(attributes->face_colors, input_face(mesh, f));
   };
 
   if (options.binary) {

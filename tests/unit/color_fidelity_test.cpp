@@ -20,9 +20,9 @@
 namespace meshbridge {
 namespace {
 
-class ColourFidelity : public test_support::ScratchFolderTest {
+class ColorFidelity : public test_support::ScratchFolderTest {
  protected:
-  ColourFidelity() : ScratchFolderTest("colour") {}
+  ColorFidelity() : ScratchFolderTest("colour") {}
 
   struct Reading {
     Soup soup;
@@ -52,7 +52,7 @@ class ColourFidelity : public test_support::ScratchFolderTest {
 
 const char* kTetrahedronFaces = "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
 
-TEST_F(ColourFidelity, obj_vertices_without_a_colour_stay_without_one) {
+TEST_F(ColorFidelity, obj_vertices_without_a_color_stay_without_one) {
   const Reading r = read(write("partial.obj",
                                "mtllib a.mtl b.mtl\nv 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0.2 1 0.6\n"
                                "v 0 0 1\nvt 0 0\nvt 1 0\nvn 0 0 1\nusemtl red\n" +
@@ -92,7 +92,7 @@ TEST_F(ColourFidelity, obj_vertices_without_a_colour_stay_without_one) {
   EXPECT_EQ(lines_of(write_back(opaque, "opaque_out.obj"))[1], "v 0 0 0 1 0 0");
 }
 
-TEST_F(ColourFidelity, off_faces_without_a_colour_stay_without_one_and_keep_their_channels) {
+TEST_F(ColorFidelity, off_faces_without_a_color_stay_without_one_and_keep_their_channels) {
   const char* text =
       "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
       "3 0 2 1 200 0 0\n3 0 1 3\n3 0 3 2 0.5 0.5 0.5\n3 1 2 3\n";
@@ -114,7 +114,7 @@ TEST_F(ColourFidelity, off_faces_without_a_colour_stay_without_one_and_keep_thei
   EXPECT_EQ(lines_of(write_back(alpha, "alpha_out.off"))[5], "3 0 1 2 10 20 30 40");
 }
 
-TEST_F(ColourFidelity, off_colour_map_indices_are_counted_with_or_without_attributes) {
+TEST_F(ColorFidelity, off_color_map_indices_are_counted_with_or_without_attributes) {
   const std::string file =
       write("colormap.off",
             "COFF\n4 4 0\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 7\n0 0 1 0 0 255\n"
@@ -136,7 +136,7 @@ TEST_F(ColourFidelity, off_colour_map_indices_are_counted_with_or_without_attrib
                                       "vertex a colour or none"}));
 }
 
-TEST_F(ColourFidelity, ply_channels_are_written_back_as_the_file_had_them) {
+TEST_F(ColorFidelity, ply_channels_are_written_back_as_the_file_had_them) {
   const std::string header =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
       "property float z\nproperty uchar red\nelement face 1\n"
@@ -163,7 +163,7 @@ TEST_F(ColourFidelity, ply_channels_are_written_back_as_the_file_had_them) {
   EXPECT_EQ(back.attributes.face_colors, r.attributes.face_colors);
 }
 
-TEST_F(ColourFidelity, ply_strip_triangles_have_no_colour_and_off_writes_none_for_them) {
+TEST_F(ColorFidelity, ply_strip_triangles_have_no_color_and_off_writes_none_for_them) {
   const Reading r = read(
       write("strips.ply",
             "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
@@ -182,7 +182,7 @@ TEST_F(ColourFidelity, ply_strip_triangles_have_no_colour_and_off_writes_none_fo
                                       "face a colour or none"}));
 }
 
-TEST_F(ColourFidelity, channels_a_file_lacked_are_named_where_the_format_needs_all_three) {
+TEST_F(ColorFidelity, channels_a_file_lacked_are_named_where_the_format_needs_all_three) {
   MeshAttributes a;
   a.vertex_colors.resize(3);
   a.vertex_color_channels = kRedChannel;
@@ -210,7 +210,7 @@ TEST_F(ColourFidelity, channels_a_file_lacked_are_named_where_the_format_needs_a
   EXPECT_EQ(describe_unwritten("red.off", r.attributes).size(), 1u);
 }
 
-TEST_F(ColourFidelity, describe_unwritten_names_what_each_format_cannot_hold) {
+TEST_F(ColorFidelity, describe_unwritten_names_what_each_format_cannot_hold) {
   MeshAttributes a;
   EXPECT_TRUE(describe_unwritten("x.stl", a).empty());
   a.vertex_colors = {Rgba{}};
@@ -247,7 +247,7 @@ TEST_F(ColourFidelity, describe_unwritten_names_what_each_format_cannot_hold) {
   EXPECT_EQ(describe_written("x.ply", soup, MeshAttributes()).left_out.size(), 0u);
 }
 
-TEST_F(ColourFidelity, obj_colours_written_0_to_255_are_read_as_such) {
+TEST_F(ColorFidelity, obj_colors_written_0_to_255_are_read_as_such) {
   const Reading r = read(write("bytes.obj",
                                "v 0 0 0 255 128 0\nv 1 0 0 0.5 0.25 1\nv 0 1 0\n"
                                "v 0 0 1 1 1 1\n" +
@@ -280,7 +280,7 @@ TEST_F(ColourFidelity, obj_colours_written_0_to_255_are_read_as_such) {
   EXPECT_EQ(unit.attributes.vertex_colors[3], (Rgba{255, 255, 255, 255}));
 }
 
-TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
+TEST_F(ColorFidelity, what_a_reader_reads_past_is_named_for_every_output) {
   const auto not_kept_of = [this](const std::string& name, const std::string& bytes) {
     return read(write(name, bytes)).attributes.not_kept;
   };
@@ -358,9 +358,9 @@ TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
                                  "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n");
   ASSERT_EQ(named.size(), 1u);
   EXPECT_EQ(named[0].what, "ASCII STL solid names");
-  std::string coloured = stl;
-  coloured.replace(0, 10, "COLOR=\x80\x80\x80\xff");
-  EXPECT_EQ(not_kept_of("colour.stl", coloured).back().what,
+  std::string colored = stl;
+  colored.replace(0, 10, "COLOR=\x80\x80\x80\xff");
+  EXPECT_EQ(not_kept_of("colour.stl", colored).back().what,
             "binary STL header colour (COLOR=/MATERIAL=)");
   const auto comments = not_kept_of(
       "c.ply",
@@ -401,7 +401,7 @@ TEST_F(ColourFidelity, what_a_reader_reads_past_is_named_for_every_output) {
             "PLY vertex properties nx, s, on 3 vertices: not written (MeshBridge reads past them)");
 }
 
-TEST_F(ColourFidelity, obj_group_lines_after_the_last_face_are_written_back) {
+TEST_F(ColorFidelity, obj_group_lines_after_the_last_face_are_written_back) {
   const Reading r = read(write("trailing.obj",
                                "g a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
                                "g trailing\nusemtl unused\n"));
@@ -413,7 +413,7 @@ TEST_F(ColourFidelity, obj_group_lines_after_the_last_face_are_written_back) {
   EXPECT_EQ(lines[7], "usemtl unused");
 }
 
-TEST_F(ColourFidelity, write_mesh_refuses_missing_flags_of_another_size) {
+TEST_F(ColorFidelity, write_mesh_refuses_missing_flags_of_another_size) {
   IndexedMesh mesh;
   mesh.soup = read_soup(write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
   MeshAttributes a;
