@@ -12,11 +12,13 @@
 
 #include "hash_mix.h"
 #include "io/huge_pages.h"
+#include "parallel_parts.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace meshbridge::detail {
@@ -31,8 +33,11 @@ std::uint64_t bits(double x) {
   return b;
 }
 
+//! Only spreads the positions over buckets and slots (equal positions are compared whole): the
+//! three coordinates' products with odd constants added (independent multiplications), one mix.
 std::uint64_t position_hash(const Point& p) {
-  return mix(bits(p[0]) ^ mix(bits(p[1]) ^ mix(bits(p[2]))));
+  return mix(bits(p[0]) * 0x9e3779b97f4a7c15ULL + bits(p[1]) * 0xc2b2ae3d27d4eb4fULL +
+             bits(p[2]) * 0x165667b19e3779f9ULL);
 }
 
 //! A used vertex in its hash bucket.
@@ -51,7 +56,8 @@ std::unique_ptr<T[]> uninitialised(std::size_t n) {
 }
 
 constexpr std::size_t kBucketVertices = 1024;  // a bucket's table: 8 KiB, in the L1 cache
-constexpr std::uint32_t kAhead = 8;            // records whose positions are on their way
+constexpr std::uint32_t kAhead = 32;           // records whose positions are on their way
+constexpr std::size_t kLeastThreaded = std::size_t(1) << 16;  // fewer vertices: one thread
 
 //! Where mark[v] == v (a used vertex), mark[v] becomes the first used vertex u <= v at v's
 //! position with same(u, v) (vertices a < b at one position weld if same(a, b)); kNoIndex
@@ -67,64 +73,78 @@ std::unique_ptr<Record[]> mark_first_at_position(const Soup& soup, std::vector<I
     return bucket_bits == 0 ? std::size_t(0) : static_cast<std::size_t>(hash >> (64 - bucket_bits));
   };
   const std::size_t buckets = std::size_t(1) << bucket_bits;
+  // Thread t counts and places the used vertices of its share of [0, n): its records follow those
+  // of the threads before it in each bucket, so every bucket is in vertex order.
+  const unsigned threads = used < kLeastThreaded ? 1u : std::clamp(worker_threads(), 1u, 8u);
+  std::vector<std::size_t> at(threads * buckets, 0);  // thread t's next record in bucket b
+  run_parts(threads, [&](unsigned t) {
+    std::size_t* count = at.data() + t * buckets;
+    for (std::size_t v = part_begin(n, threads, t); v < part_begin(n, threads, t + 1); ++v) {
+      if (mark[v] != kNoIndex)
+        ++count[bucket(position_hash(soup.positions[v]))];
+    }
+  });
   std::vector<std::size_t> begin(buckets + 1, 0);
-  for (std::size_t v = 0; v < n; ++v) {
-    if (mark[v] != kNoIndex)
-      ++begin[bucket(position_hash(soup.positions[v])) + 1];
-  }
   std::size_t largest = 0;
   for (std::size_t b = 0; b < buckets; ++b) {
-    largest = std::max(largest, begin[b + 1]);
-    begin[b + 1] += begin[b];
+    std::size_t next = begin[b];
+    for (unsigned t = 0; t < threads; ++t)
+      next += std::exchange(at[t * buckets + b], next);
+    begin[b + 1] = next;
+    largest = std::max(largest, next - begin[b]);
   }
   // The records of a bucket in vertex order: the first of a group first.
   auto records = uninitialised<Record>(used);
-  {
-    std::vector<std::size_t> end(begin.begin(), begin.end() - 1);  // where the next one goes
-    for (std::size_t v = 0; v < n; ++v) {
+  run_parts(threads, [&](unsigned t) {
+    std::size_t* next = at.data() + t * buckets;
+    for (std::size_t v = part_begin(n, threads, t); v < part_begin(n, threads, t + 1); ++v) {
       if (mark[v] == kNoIndex)
         continue;
       const std::uint64_t hash = position_hash(soup.positions[v]);
-      records[end[bucket(hash)]++] =
+      records[next[bucket(hash)]++] =
           Record{static_cast<Index>(v), static_cast<std::uint32_t>(hash)};
     }
-  }
+  });
   std::size_t capacity = 16;
   while (capacity < 2 * largest)
     capacity *= 2;
-  const std::uint32_t empty = static_cast<std::uint32_t>(-1);
-  std::vector<std::uint32_t> table(capacity, empty);  // record - begin of the bucket
   const Point* positions = soup.positions.data();
-  for (std::size_t b = 0; b < buckets; ++b) {
-    const Record* first = records.get() + begin[b];
-    const std::uint32_t size = static_cast<std::uint32_t>(begin[b + 1] - begin[b]);
-    std::size_t mask = 15;
-    while (mask + 1 < 2 * std::size_t(size))
-      mask = 2 * mask + 1;
-    std::fill(table.begin(), table.begin() + static_cast<std::ptrdiff_t>(mask + 1), empty);
-    for (std::uint32_t i = 0; i < std::min(kAhead, size); ++i)
-      __builtin_prefetch(&positions[first[i].vertex]);
-    for (std::uint32_t i = 0; i < size; ++i) {
-      if (i + kAhead < size)
-        __builtin_prefetch(&positions[first[i + kAhead].vertex]);
-      const Record& r = first[i];
-      const Point& p = positions[r.vertex];
-      for (std::size_t slot = r.hash & mask;; slot = (slot + 1) & mask) {
-        if (table[slot] == empty) {
-          table[slot] = i;
-          break;
-        }
-        const Record& q = first[table[slot]];
-        if (q.hash != r.hash)
-          continue;
-        const Point& o = positions[q.vertex];
-        if (o[0] == p[0] && o[1] == p[1] && o[2] == p[2] && same(q.vertex, r.vertex)) {
-          mark[r.vertex] = q.vertex;
-          break;
+  // Each thread welds a share of the buckets in a table of its own.
+  run_parts(threads, [&](unsigned t) {
+    const std::uint32_t empty = static_cast<std::uint32_t>(-1);
+    std::vector<std::uint32_t> table(capacity, empty);  // record - begin of the bucket
+    for (std::size_t b = part_begin(buckets, threads, t); b < part_begin(buckets, threads, t + 1);
+         ++b) {
+      const Record* first = records.get() + begin[b];
+      const std::uint32_t size = static_cast<std::uint32_t>(begin[b + 1] - begin[b]);
+      std::size_t mask = 15;
+      while (mask + 1 < 2 * std::size_t(size))
+        mask = 2 * mask + 1;
+      std::fill(table.begin(), table.begin() + static_cast<std::ptrdiff_t>(mask + 1), empty);
+      for (std::uint32_t i = 0; i < std::min(kAhead, size); ++i)
+        __builtin_prefetch(&positions[first[i].vertex]);
+      for (std::uint32_t i = 0; i < size; ++i) {
+        if (i + kAhead < size)
+          __builtin_prefetch(&positions[first[i + kAhead].vertex]);
+        const Record& r = first[i];
+        const Point& p = positions[r.vertex];
+        for (std::size_t slot = r.hash & mask;; slot = (slot + 1) & mask) {
+          if (table[slot] == empty) {
+            table[slot] = i;
+            break;
+          }
+          const Record& q = first[table[slot]];
+          if (q.hash != r.hash)
+            continue;
+          const Point& o = positions[q.vertex];
+          if (o[0] == p[0] && o[1] == p[1] && o[2] == p[2] && same(q.vertex, r.vertex)) {
+            mark[r.vertex] = q.vertex;
+            break;
+          }
         }
       }
     }
-  }
+  });
   return records;
 }
 
