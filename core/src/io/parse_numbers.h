@@ -13,6 +13,37 @@ namespace meshbridge::detail {
 //! Returns the end of the number, or nullptr if none starts at `first` (value untouched).
 //! An out-of-range magnitude is refused too (nullptr).
 inline const char* parse_double(const char* first, const char* last, double& value) {
+  // Fast path (Clinger's): an optional '-', digits, and digits after a '.' if any, 19 digits at
+  // most whose whole number fits in 53 bits and at most 22 of them after the point: the number
+  // and 10^(digits after the point) are both exact doubles, so their one division rounds
+  // correctly, to the value from_chars gives. Anything else (an exponent, more digits, "inf",
+  // ".5", "1.") goes to from_chars.
+  static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  const auto digit = [](char c) { return static_cast<unsigned>(c - '0') < 10; };
+  const char* p = first;
+  const bool negative = p != last && *p == '-';
+  p += negative;
+  std::uint64_t digits = 0;
+  const char* whole = p;
+  while (p != last && digit(*p) && p - whole < 20)
+    digits = 10 * digits + static_cast<unsigned>(*p++ - '0');
+  const std::ptrdiff_t whole_digits = p - whole;
+  std::ptrdiff_t after = 0;
+  if (whole_digits > 0 && last - p >= 2 && *p == '.' && digit(p[1])) {
+    const char* point = ++p;
+    while (p != last && digit(*p) && whole_digits + (p - point) < 20)
+      digits = 10 * digits + static_cast<unsigned>(*p++ - '0');
+    after = p - point;
+  }
+  if (whole_digits > 0 && whole_digits + after <= 19 && after <= 22 &&
+      digits <= (std::uint64_t(1) << 53) &&
+      (p == last || !(digit(*p) || *p == '.' || *p == 'e' || *p == 'E'))) {
+    const double d = static_cast<double>(digits) / kPowers[after];
+    value = negative ? -d : d;
+    return p;
+  }
   if (first != last && *first == '+') {
     ++first;
     if (first != last && (*first == '-' || *first == '+'))

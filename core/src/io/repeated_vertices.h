@@ -18,8 +18,8 @@ namespace meshbridge::detail {
 //! vertex; the others are removed, survivors and unused vertices keep their order, and the
 //! per-vertex attributes follow. A soup where some vertex is shared (an indexed mesh, a repaired
 //! mesh whose split copies are each shared by their fan), or whose faces would meet only at
-//! vertices (the two triangles of a repaired bowtie), is left as it is. Linear time (one hash
-//! table). Returns the number of vertices removed. Indices out of range: left for the caller's
+//! vertices (the two triangles of a repaired bowtie), is left as it is. Linear time (hash
+//! buckets). Returns the number of vertices removed. Indices out of range: left for the caller's
 //! validation (nothing is welded).
 std::size_t weld_repeated_vertices(Soup& soup, MeshAttributes* attributes);
 
