@@ -4,11 +4,13 @@
 #include "geometry/newell_normal.h"
 #include "geometry/signed_volume.h"
 #include "pipeline/nesting.h"
+#include "pipeline/singular_conflicts.h"
 
 #include "union_find.h"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace meshbridge::detail {
 
@@ -285,15 +287,17 @@ std::size_t cut_inconsistent_pairs(const Soup& soup, std::vector<Index>& mate) {
 
 OrientationCounts orient_consistently(const Soup& soup, const CornerFaces& corner_face,
                                       bool cut_nonorientable, std::vector<Index>& mate,
-                                      std::vector<char>& flipped) {
+                                      std::vector<char>& flipped, const EdgeBridges* bridges) {
   OrientationCounts counts;
   const std::size_t num_faces = soup.num_faces();
   flipped.assign(num_faces, 0);
   if (!has_inconsistent_pair(soup, mate))
     return counts;  // nothing to flip, nothing to cut
   std::vector<char> visited(num_faces, 0);
-  std::vector<Index> queue;
+  std::vector<Index> queue, faces;
   queue.reserve(num_faces);
+  std::vector<Index> edge_of_side;        // made when first needed
+  std::optional<ParityUnionFind> blocks;  // likewise
   for (Index root = 0; root < num_faces; ++root) {
     if (visited[root])
       continue;
@@ -325,6 +329,20 @@ OrientationCounts orient_consistently(const Soup& soup, const CornerFaces& corne
     }
     if (!conflict)
       continue;
+    if (!cut_nonorientable && bridges != nullptr) {
+      // Orientable through the input's own two-sided edges: the singular pairs yield.
+      if (edge_of_side.empty()) {
+        edge_of_side = edge_of_sides(soup, *bridges);
+        blocks.emplace(num_faces);
+      }
+      faces.assign(queue.begin() + component_begin, queue.end());
+      const Index cut = yield_singular_pairs(soup, corner_face, *bridges, edge_of_side, faces,
+                                             *blocks, mate, flipped);
+      if (cut != kNoIndex) {
+        counts.sides_cut += cut;
+        continue;
+      }
+    }
     ++counts.nonorientable_components;
     if (cut_nonorientable)
       continue;
