@@ -24,8 +24,11 @@ struct RepairOptions {
   bool orient = true;  //!< orient orientable components consistently, closed ones outward
   //! Also orient non-orientable components: their faces take the orientation of a breadth-first
   //! spanning tree over the pairs, and every pair that disagrees with it is cut (a valid cut,
-  //! not necessarily the fewest edges). Off: such components keep their faces' directions and
-  //! every inconsistent edge of theirs is cut.
+  //! not necessarily the fewest edges). Off: a component that only the pairs made at singular
+  //! edges make non-orientable (its faces orient consistently through the input's own two-sided
+  //! edges) keeps those edges, and the fewest, weakest singular pairs yield (counted in
+  //! sides_cut_for_orientation; stitching may glue their sides again); any other such component
+  //! keeps its faces' directions and every inconsistent edge of it is cut.
   bool cut_nonorientable = false;
   bool stitch = true;  //!< glue boundary sides on one vertex pair back when that stays manifold
   //! A closed shell inside another, both consistently wound the same way as written (an insert,
@@ -96,7 +99,9 @@ struct RepairReport {
   std::size_t boundary_edges_before = 0;
   std::size_t boundary_edges_after = 0;
   //! Components that orientation found non-orientable (after pairing, before any cut): with
-  //! `cut_nonorientable` they were oriented by cutting, otherwise left as they were.
+  //! `cut_nonorientable` they were oriented by cutting, otherwise left as they were. Without
+  //! `cut_nonorientable`, components made non-orientable only by pairs at singular edges are not
+  //! counted: those pairs yield (see RepairOptions::cut_nonorientable).
   std::size_t nonorientable_after_pairing = 0;
   //! Closed shells nested in a closed shell and wound like it as written (see
   //! RepairOptions::nested_shells): ambiguous between an insert and a wrongly wound cavity.

@@ -4,11 +4,13 @@
 #include "geometry/newell_normal.h"
 #include "geometry/signed_volume.h"
 #include "pipeline/nesting.h"
+#include "pipeline/singular_conflicts.h"
 
 #include "union_find.h"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace meshbridge::detail {
 
@@ -28,8 +30,13 @@ bool same_way(const Soup& soup, Index c, Index m) {
 class ComponentOrienter {
  public:
   ComponentOrienter(const Soup& soup, const CornerFaces& corner_face,
-                    const std::vector<Index>& mate, std::vector<char>& flipped)
-      : soup_(soup), corner_face_(corner_face), mate_(mate), flipped_(flipped) {}
+                    const std::vector<Index>& mate, const std::vector<char>& midpoint,
+                    std::vector<char>& flipped)
+      : soup_(soup),
+        corner_face_(corner_face),
+        mate_(mate),
+        midpoint_(midpoint),
+        flipped_(flipped) {}
 
   // Reverses whole components in `flipped`; returns the ambiguous nested shells.
   std::size_t run(AmbiguousNesting nested) {
@@ -171,7 +178,8 @@ class ComponentOrienter {
 
   // Whether to reverse each open (or volume-less) component, on the best evidence it has:
   // - its volume, taken about its corners' centroid c (an open surface's volume depends on
-  //   that point), when |volume| exceeds what capping its holes could change: |N| * R, with N
+  //   that point; the output's corners, with the midpoints of split pairs), when |volume|
+  //   exceeds what capping its holes could change: |N| * R, with N
   //   the sum of its faces' vector areas (the holes' vector area, both times 2) and R the
   //   farthest boundary vertex from c; a slit such as a T-junction crack has no area, so it
   //   never hides a volume;
@@ -197,6 +205,18 @@ class ComponentOrienter {
       for (Index v : soup_.polygon(f))
         centroid[u] += soup_.positions[v];
       corners[u] += static_cast<double>(soup_.polygon(f).size());
+      if (midpoint_.empty())
+        continue;
+      // The corners the output will have: a pair split at its midpoint gives both its faces one
+      // more there (emit_mesh()), so that repairing the output again judges the same centroid.
+      for (Index c = soup_.face_begin[f]; c < soup_.face_begin[f + 1]; ++c) {
+        if (!midpoint_[c])
+          continue;
+        const Point& a = soup_.positions[soup_.corner_vertices[c]];
+        const Point& b = soup_.positions[soup_.corner_vertices[soup_.next_corner(c, f)]];
+        centroid[u] += (a + b) * 0.5;
+        corners[u] += 1;
+      }
     }
     for (std::size_t u = 0; u < count; ++u)
       centroid[u] /= corners[u];
@@ -232,6 +252,7 @@ class ComponentOrienter {
   const Soup& soup_;
   const CornerFaces& corner_face_;
   const std::vector<Index>& mate_;
+  const std::vector<char>& midpoint_;  // per side, or empty: pairs split at their midpoint
   std::vector<char>& flipped_;
   std::vector<Index> root_face_, component_;  // per component; per face
   std::size_t num_components_ = 0, num_shells_ = 0, num_undecided_ = 0;
@@ -266,15 +287,17 @@ std::size_t cut_inconsistent_pairs(const Soup& soup, std::vector<Index>& mate) {
 
 OrientationCounts orient_consistently(const Soup& soup, const CornerFaces& corner_face,
                                       bool cut_nonorientable, std::vector<Index>& mate,
-                                      std::vector<char>& flipped) {
+                                      std::vector<char>& flipped, const EdgeBridges* bridges) {
   OrientationCounts counts;
   const std::size_t num_faces = soup.num_faces();
   flipped.assign(num_faces, 0);
   if (!has_inconsistent_pair(soup, mate))
     return counts;  // nothing to flip, nothing to cut
   std::vector<char> visited(num_faces, 0);
-  std::vector<Index> queue;
+  std::vector<Index> queue, faces;
   queue.reserve(num_faces);
+  std::vector<Index> edge_of_side;        // made when first needed
+  std::optional<ParityUnionFind> blocks;  // likewise
   for (Index root = 0; root < num_faces; ++root) {
     if (visited[root])
       continue;
@@ -306,6 +329,20 @@ OrientationCounts orient_consistently(const Soup& soup, const CornerFaces& corne
     }
     if (!conflict)
       continue;
+    if (!cut_nonorientable && bridges != nullptr) {
+      // Orientable through the input's own two-sided edges: the singular pairs yield.
+      if (edge_of_side.empty()) {
+        edge_of_side = edge_of_sides(soup, *bridges);
+        blocks.emplace(num_faces);
+      }
+      faces.assign(queue.begin() + component_begin, queue.end());
+      const Index cut = yield_singular_pairs(soup, corner_face, *bridges, edge_of_side, faces,
+                                             *blocks, mate, flipped);
+      if (cut != kNoIndex) {
+        counts.sides_cut += cut;
+        continue;
+      }
+    }
     ++counts.nonorientable_components;
     if (cut_nonorientable)
       continue;
@@ -328,7 +365,8 @@ OrientationCounts orient_consistently(const Soup& soup, const CornerFaces& corne
 
 std::size_t orient_components(const Soup& soup, const GroupedSides& grouped, SidePairing& pairing,
                               AmbiguousNesting nested) {
-  ComponentOrienter orienter(soup, grouped.corner_face, pairing.mate, pairing.flipped);
+  ComponentOrienter orienter(soup, grouped.corner_face, pairing.mate, pairing.midpoint,
+                             pairing.flipped);
   return orienter.run(nested);
 }
 

@@ -3,6 +3,7 @@
 // Stage 3, orientation: faces connected through paired sides made consistent (before
 // stitching), then each component turned as a whole (after stitching).
 
+#include "meshbridge/edge_bridges.h"
 #include "meshbridge/pairing.h"
 #include "meshbridge/soup.h"
 
@@ -19,13 +20,19 @@ struct OrientationCounts {
 };
 
 //! Breadth-first over the faces connected through `mate`, choosing per face whether to reverse
-//! it (`flipped`) so that every pair runs in opposite directions. A component where that is
-//! impossible is non-orientable: with `cut_nonorientable` its conflicting pairs (the ones the
-//! search meets after the faces are fixed) are cut and its flips kept; without, its faces keep
-//! their direction and every same-running pair of it is cut. `flipped` has one entry per face.
+//! it (`flipped`) so that every pair runs in opposite directions. Where that is impossible:
+//! - without `cut_nonorientable`, given the `bridges` `mate` pairs, and the component's faces
+//!   orient consistently through their two-sided edges (it is the pairs made at singular edges
+//!   that conflict): those pairs yield (yield_singular_pairs()), their sides are counted in
+//!   `sides_cut`, and the component is not counted as non-orientable (the input is not);
+//! - otherwise the component is non-orientable: with `cut_nonorientable` its conflicting pairs
+//!   (the ones the search meets after the faces are fixed) are cut and its flips kept; without,
+//!   its faces keep their direction and every same-running pair of it is cut.
+//! `flipped` has one entry per face.
 OrientationCounts orient_consistently(const Soup& soup, const CornerFaces& corner_face,
                                       bool cut_nonorientable, std::vector<Index>& mate,
-                                      std::vector<char>& flipped);
+                                      std::vector<char>& flipped,
+                                      const EdgeBridges* bridges = nullptr);
 
 //! Without orientation: every pair whose sides run the same way is cut.
 std::size_t cut_inconsistent_pairs(const Soup& soup, std::vector<Index>& mate);

@@ -45,8 +45,9 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
 
   // 3. Orientation: faces joined through pairs run consistently (pairs that cannot are cut).
   if (options.orient) {
-    const OrientationCounts oriented = orient_consistently(
-        soup, grouped.corner_face, options.cut_nonorientable, pairing.mate, pairing.flipped);
+    const OrientationCounts oriented =
+        orient_consistently(soup, grouped.corner_face, options.cut_nonorientable, pairing.mate,
+                            pairing.flipped, &grouped.bridges);
     counts.nonorientable_components = oriented.nonorientable_components;
     counts.sides_cut_for_orientation = oriented.sides_cut;
   } else {
