@@ -80,7 +80,8 @@ class RepairRun {
   bool gaps_closed_ = false;
   std::unique_ptr<WorkingSoup> closed_simple_;  //!< the closed soup made simple
   const WorkingSoup* simple_ = nullptr;         //!< input_simple_ or closed_simple_
-  //! Cleanup: the simple polygons kept, with face and corner origins in the input.
+  //! Cleanup and keyholes: the simple polygons kept (a keyhole polygon's triangles in place of
+  //! its loops), with face and corner origins in the input; made only when one of them applies.
   Soup filtered_;
   std::vector<Index> filtered_face_origin_, filtered_corner_origin_;
   std::unique_ptr<WorkingSoup> filtered_working_;
