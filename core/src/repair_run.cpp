@@ -161,7 +161,10 @@ void RepairRun::clean_up() {
       bool kept = true;  // a keyhole's loops are removed together (all of one input face)
       for (Index g = f; g < f + keyhole.num_loops; ++g)
         kept = kept && !remove[g];
-      if (kept) {
+      if (!kept) {  // removed as a degenerate face: neither cut nor its triangles added
+        ++keyholes_removed_;
+        keyhole_faces_not_added_ += keyhole.num_triangles - keyhole.num_loops;
+      } else {
         const Index* corner = simple_->keyhole_corners().data() + keyhole.first_corner;
         for (Index i = 0; i < keyhole.num_triangles; ++i, corner += 3) {
           filtered_.add_polygon({source.corner_vertices[corner[0]],
@@ -240,9 +243,9 @@ void RepairRun::count() {
   if (options_.remove_degenerate_faces)
     report.degenerate_faces_removed += simple_->faces_set_aside().size();
   report.faces_split = simple_->faces_split();
-  report.faces_added_by_split = simple_->faces_added_by_split();
+  report.faces_added_by_split = simple_->faces_added_by_split() - keyhole_faces_not_added_;
   report.slits_set_aside = simple_->slits_set_aside();
-  report.keyhole_polygons_triangulated = simple_->keyholes().size();
+  report.keyhole_polygons_triangulated = simple_->keyholes().size() - keyholes_removed_;
   report.vertices_out = mesh.soup.num_vertices();
   report.vertices_split = counts.vertices_split;
   report.sides_cut = counts.sides_cut;

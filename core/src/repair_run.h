@@ -85,6 +85,9 @@ class RepairRun {
   Soup filtered_;
   std::vector<Index> filtered_face_origin_, filtered_corner_origin_;
   std::unique_ptr<WorkingSoup> filtered_working_;
+  //! Keyhole polygons that cleanup removed (their loops counted as removed), and the faces
+  //! their triangles would have added beyond their loops.
+  std::size_t keyholes_removed_ = 0, keyhole_faces_not_added_ = 0;
   const WorkingSoup* working_ = nullptr;  //!< what the pipeline reads
   PipelineResult pipeline_;
   RepairResult result_;

@@ -8,6 +8,7 @@
 // old rule: split into its loops, the slit set aside.
 
 #include "scratch_folder.h"
+#include "test_support.h"
 
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/io.h"
@@ -82,6 +83,7 @@ void expect_polygon_with_holes(const Soup& input, const RepairResult& r, std::si
                                double area) {
   const std::size_t n = input.num_corners();
   const Soup& out = r.mesh.soup;
+  test_support::expect_repair_invariants(input, r);
   EXPECT_EQ(r.report.keyhole_polygons_triangulated, 1u);
   EXPECT_EQ(r.report.slits_set_aside, 0u);
   EXPECT_EQ(r.report.faces_split, 1u);
@@ -160,6 +162,18 @@ TEST(KeyholePolygon, two_holes_joined_by_two_slits_both_stay_open) {
       expect_polygon_with_holes(s, r, 2, 32 - 4 - 4);
     }
   }
+}
+
+TEST(KeyholePolygon, removed_as_a_degenerate_face_it_is_neither_cut_nor_counted_twice) {
+  const Soup s = with_polygon(keyhole_points(false), kOneHole, 0, false);
+  RepairOptions options;
+  options.remove_degenerate_faces = true;
+  const RepairResult r = repair(s, options);
+  EXPECT_EQ(r.report.faces_out, 0u);
+  EXPECT_EQ(r.report.keyhole_polygons_triangulated, 0u);
+  EXPECT_EQ(r.report.degenerate_faces_removed, 2u);  // its two loops, as before
+  EXPECT_EQ(r.report.faces_in + r.report.faces_added_by_split,
+            r.report.faces_out + r.report.degenerate_faces_removed);
 }
 
 TEST(KeyholePolygon, a_hole_wound_like_its_outline_is_split_and_its_slit_set_aside) {
