@@ -237,6 +237,8 @@ DefectReport detect_tallied(const WorkingSoup& working, const CornerFaces& corne
   std::vector<char> used(soup.num_vertices(), 0);
   for (Index v : soup.corner_vertices)
     used[v] = 1;
+  for (const WorkingSoup::Slit& s : working.slits())  // a bridge's own vertex: the file uses it
+    used[s.a] = used[s.b] = 1;
   std::size_t used_count = 0;
   for (Index v = 0; v < soup.num_vertices(); ++v) {
     used_count += used[v];

@@ -78,9 +78,10 @@ std::pair<double, double> areas(const Soup& soup) {
 }
 
 //! Checks a repaired keyhole polygon of `corners` corners (slits counted twice) with `holes`
-//! holes and ring area `area`: its triangles, their corners and the output's counts.
+//! holes and ring area `area`: its triangles, their corners and the output's counts. `inside`:
+//! vertices on a bridge only (on no loop), which no boundary edge reaches.
 void expect_polygon_with_holes(const Soup& input, const RepairResult& r, std::size_t holes,
-                               double area) {
+                               double area, std::size_t inside = 0) {
   const std::size_t n = input.num_corners();
   const Soup& out = r.mesh.soup;
   test_support::expect_repair_invariants(input, r);
@@ -113,7 +114,7 @@ void expect_polygon_with_holes(const Soup& input, const RepairResult& r, std::si
   const long long euler = 1 - static_cast<long long>(holes);
   EXPECT_EQ(after.euler_characteristic, euler);
   EXPECT_EQ(detect_defects(input).euler_characteristic, euler);
-  EXPECT_EQ(after.boundary_edges.size(), v);
+  EXPECT_EQ(after.boundary_edges.size(), v - inside);
   EXPECT_EQ(after.num_singular_vertices(), 0u);
   EXPECT_TRUE(after.singular_edges.empty());
   EXPECT_TRUE(after.duplicate_faces.empty());
@@ -162,6 +163,19 @@ TEST(KeyholePolygon, two_holes_joined_by_two_slits_both_stay_open) {
       expect_polygon_with_holes(s, r, 2, 32 - 4 - 4);
     }
   }
+}
+
+TEST(KeyholePolygon, a_bridge_of_two_slits_through_a_vertex_of_its_own_is_cut_too) {
+  // The outline reaches the hole through vertex 8 at (1, 0.5), on no loop: 0 -> 8 -> 4 and back.
+  Soup points = keyhole_points(false);
+  points.add_vertex({1, 0.5, 0});
+  const Soup s = with_polygon(points, {0, 8, 4, 5, 6, 7, 4, 8, 0, 1, 2, 3}, 0, false);
+  const DefectReport d = detect_defects(s);
+  EXPECT_EQ(d.num_edges, 10u);
+  EXPECT_TRUE(d.isolated_vertices.empty());  // vertex 8 is the bridge's, used by the polygon
+  EXPECT_EQ(d.euler_characteristic, 0);
+  const RepairResult r = repair(s);
+  expect_polygon_with_holes(s, r, 1, 12, 1);
 }
 
 TEST(KeyholePolygon, removed_as_a_degenerate_face_it_is_neither_cut_nor_counted_twice) {
