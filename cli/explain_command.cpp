@@ -91,7 +91,9 @@ const std::vector<Entry> kEntries = {
      "edges to join, so repair keeps them out of the surface and counts them."},
     {"split",
      "A pinched polygon (one that passes twice through the same vertex) is split into simple\n"
-     "polygons: 'N split into M more' means N polygons became N + M."},
+     "polygons: 'N split into M more' means N polygons became N + M. A keyhole polygon (an\n"
+     "outline and holes joined by slits: it runs a-b and later b-a) is cut into triangles as\n"
+     "one polygon with holes, the holes left open ('keyhole polygon triangulated')."},
     {"degenerate face", "A face that repeats a vertex index. --remove-degenerate drops them."},
     {"zero-area face", "A face whose corners lie on one line or one point (area 0)."},
     {"duplicate face",

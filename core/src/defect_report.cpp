@@ -53,6 +53,11 @@ std::string to_text(const DefectReport& r, std::size_t max_listed) {
   list(out, "isolated vertices", r.isolated_vertices, max_listed, index);
   list(out, "degenerate faces (repeated vertex)", r.degenerate_faces, max_listed, index);
   list(out, "faces set aside (< 3 distinct vertices)", r.faces_set_aside, max_listed, index);
+  if (r.keyhole_polygons_triangulated > 0) {
+    out << "  keyhole polygons (an outline and holes joined by slits, a-b and later b-a; "
+           "triangulated by repair, the holes left open): "
+        << r.keyhole_polygons_triangulated << "\n";
+  }
   if (r.slits_set_aside > 0) {
     out << "  keyhole slits (a polygon running a-b and later b-a; set aside by repair, their "
            "edges counted): "

@@ -212,7 +212,8 @@ DefectReport detect_tallied(const WorkingSoup& working, const CornerFaces& corne
   for (char is_edge : tally.slit_is_edge)
     num_edges += is_edge ? 0 : 1;
   report.num_edges = num_edges;
-  report.slits_set_aside = working.slits().size();
+  report.slits_set_aside = working.slits_set_aside();
+  report.keyhole_polygons_triangulated = working.keyholes().size();
   std::vector<Index>& manifold_mate = tally.manifold_mate;
   const std::vector<char>& on_singular_edge = tally.on_singular_edge;
   {
@@ -236,6 +237,8 @@ DefectReport detect_tallied(const WorkingSoup& working, const CornerFaces& corne
   std::vector<char> used(soup.num_vertices(), 0);
   for (Index v : soup.corner_vertices)
     used[v] = 1;
+  for (const WorkingSoup::Slit& s : working.slits())  // a bridge's own vertex: the file uses it
+    used[s.a] = used[s.b] = 1;
   std::size_t used_count = 0;
   for (Index v = 0; v < soup.num_vertices(); ++v) {
     used_count += used[v];
@@ -280,9 +283,14 @@ DefectReport detect_tallied(const WorkingSoup& working, const CornerFaces& corne
     *manifold_mate_out = std::move(manifold_mate);
   manifold_mate = std::vector<Index>();  // freed before the face checks allocate
 
+  // A keyhole polygon counts once, as repair's triangles count (their diagonals and triangles
+  // add as many edges as faces, less one): an outline with h holes adds 1 - h, not 1.
+  std::size_t keyhole_loops = 0;
+  for (const WorkingSoup::Keyhole& k : working.keyholes())
+    keyhole_loops += k.num_loops - 1;
   report.euler_characteristic = static_cast<long long>(used_count) -
                                 static_cast<long long>(num_edges) +
-                                static_cast<long long>(soup.num_faces());
+                                static_cast<long long>(soup.num_faces() - keyhole_loops);
 
   FaceChecks faces = face_checks.get();
   report.zero_area_faces = std::move(faces.zero_area_faces);

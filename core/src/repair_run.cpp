@@ -117,10 +117,12 @@ void RepairRun::group_closed_soup() {
 }
 
 // Cleanup removals, on the simple polygons (a collapsed polygon can duplicate another one), so
-// that a second repair finds nothing more to remove.
+// that a second repair finds nothing more to remove; and keyhole polygons, split into their
+// loops for detection, become their triangles (WorkingSoup::keyholes()), so that the outline's
+// loop does not cover the holes.
 void RepairRun::clean_up() {
   working_ = simple_;
-  if (!filtering_)
+  if (!filtering_ && simple_->keyholes().empty())
     return;
   RepairReport& report = result_.report;
   const Soup& polygons = simple_->soup();
@@ -147,8 +149,34 @@ void RepairRun::clean_up() {
     remove_input_faces(report.before.degenerate_faces, report.degenerate_faces_removed);
   if (options_.remove_zero_area_faces)
     remove_input_faces(report.before.zero_area_faces, report.zero_area_faces_removed);
+  // Per face of the simple soup: the keyhole whose first loop it is, +1 (0: none).
+  std::vector<Index> keyhole_at(polygons.num_faces(), 0);
+  for (std::size_t k = 0; k < simple_->keyholes().size(); ++k)
+    keyhole_at[simple_->keyholes()[k].first_face] = static_cast<Index>(k + 1);
+  const Soup& source = simple_->input();
   filtered_.positions = polygons.positions;
   for (Index f = 0; f < polygons.num_faces(); ++f) {
+    if (keyhole_at[f] != 0) {
+      const WorkingSoup::Keyhole& keyhole = simple_->keyholes()[keyhole_at[f] - 1];
+      bool kept = true;  // a keyhole's loops are removed together (all of one input face)
+      for (Index g = f; g < f + keyhole.num_loops; ++g)
+        kept = kept && !remove[g];
+      if (!kept) {  // removed as a degenerate face: neither cut nor its triangles added
+        ++keyholes_removed_;
+        keyhole_faces_not_added_ += keyhole.num_triangles - keyhole.num_loops;
+      } else {
+        const Index* corner = simple_->keyhole_corners().data() + keyhole.first_corner;
+        for (Index i = 0; i < keyhole.num_triangles; ++i, corner += 3) {
+          filtered_.add_polygon({source.corner_vertices[corner[0]],
+                                 source.corner_vertices[corner[1]],
+                                 source.corner_vertices[corner[2]]});
+          filtered_corner_origin_.insert(filtered_corner_origin_.end(), corner, corner + 3);
+          filtered_face_origin_.push_back(simple_->face_origin(f));
+        }
+        f += keyhole.num_loops - 1;
+        continue;
+      }
+    }
     if (remove[f])
       continue;
     for (Index c = polygons.face_begin[f]; c < polygons.face_begin[f + 1]; ++c)
@@ -181,7 +209,7 @@ void RepairRun::pair_orient_emit() {
 // to the input.
 void RepairRun::compose_origins() {
   IndexedMesh& mesh = result_.mesh;
-  if (filtering_) {
+  if (filtered_working_) {  // cleanup or keyholes rewrote the simple soup
     for (Index& f : mesh.face_origin)
       f = filtered_face_origin_[f];
     for (Index& c : mesh.corner_origin)
@@ -215,8 +243,9 @@ void RepairRun::count() {
   if (options_.remove_degenerate_faces)
     report.degenerate_faces_removed += simple_->faces_set_aside().size();
   report.faces_split = simple_->faces_split();
-  report.faces_added_by_split = simple_->faces_added_by_split();
-  report.slits_set_aside = simple_->slits().size();
+  report.faces_added_by_split = simple_->faces_added_by_split() - keyhole_faces_not_added_;
+  report.slits_set_aside = simple_->slits_set_aside();
+  report.keyhole_polygons_triangulated = simple_->keyholes().size() - keyholes_removed_;
   report.vertices_out = mesh.soup.num_vertices();
   report.vertices_split = counts.vertices_split;
   report.sides_cut = counts.sides_cut;

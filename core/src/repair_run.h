@@ -80,10 +80,14 @@ class RepairRun {
   bool gaps_closed_ = false;
   std::unique_ptr<WorkingSoup> closed_simple_;  //!< the closed soup made simple
   const WorkingSoup* simple_ = nullptr;         //!< input_simple_ or closed_simple_
-  //! Cleanup: the simple polygons kept, with face and corner origins in the input.
+  //! Cleanup and keyholes: the simple polygons kept (a keyhole polygon's triangles in place of
+  //! its loops), with face and corner origins in the input; made only when one of them applies.
   Soup filtered_;
   std::vector<Index> filtered_face_origin_, filtered_corner_origin_;
   std::unique_ptr<WorkingSoup> filtered_working_;
+  //! Keyhole polygons that cleanup removed (their loops counted as removed), and the faces
+  //! their triangles would have added beyond their loops.
+  std::size_t keyholes_removed_ = 0, keyhole_faces_not_added_ = 0;
   const WorkingSoup* working_ = nullptr;  //!< what the pipeline reads
   PipelineResult pipeline_;
   RepairResult result_;

@@ -33,6 +33,10 @@ std::string to_text(const RepairReport& r) {
   }
   out << "faces: " << r.faces_in << " in, " << r.faces_out << " out (" << r.faces_set_aside
       << " set aside, " << r.faces_split << " split into " << r.faces_added_by_split << " more"
+      << (r.keyhole_polygons_triangulated != 0
+              ? " (" + counted(r.keyhole_polygons_triangulated, "keyhole polygon") +
+                    " triangulated, holes left open)"
+              : std::string())
       << (r.slits_set_aside != 0 ? " (" + counted(r.slits_set_aside, "keyhole slit") + " set aside)"
                                  : std::string())
       << ", " << counted(r.duplicate_faces_removed, "duplicate") << " and "

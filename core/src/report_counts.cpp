@@ -98,6 +98,7 @@ void append_counts(ReportCounts& out, const RepairReport& r) {
   a.count("faces_split", r.faces_split);
   a.count("faces_added_by_split", r.faces_added_by_split);
   a.count("slits_set_aside", r.slits_set_aside);
+  a.count("keyhole_polygons_triangulated", r.keyhole_polygons_triangulated);
   a.count("faces_flipped", r.faces_flipped);
   a.count("duplicate_faces_removed", r.duplicate_faces_removed);
   a.count("degenerate_faces_removed", r.degenerate_faces_removed);

@@ -143,6 +143,7 @@ void add_repair(Json& out, const RepairReport& r, bool elements, const DefectRep
   out["faces_split"] = r.faces_split;
   out["faces_added_by_split"] = r.faces_added_by_split;
   out["slits_set_aside"] = r.slits_set_aside;
+  out["keyhole_polygons_triangulated"] = r.keyhole_polygons_triangulated;
   out["faces_flipped"] = r.faces_flipped;
   out["duplicate_faces_removed"] = r.duplicate_faces_removed;
   out["degenerate_faces_removed"] = r.degenerate_faces_removed;

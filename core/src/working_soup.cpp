@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "working_soup.h"
 
+#include "geometry/triangulate.h"
+
 #include <algorithm>
 
 namespace meshbridge::detail {
@@ -33,6 +35,7 @@ WorkingSoup::WorkingSoup(const Soup& input) : input_(input) {
   face_origin_.reserve(input.num_faces());
   corner_origin_.reserve(input.num_corners());
   std::size_t next_degenerate = 0;
+  Triangulation keyhole;
   for (std::size_t f = 0; f < input.num_faces(); ++f) {
     const Index first = input.face_begin[f];
     const Index last = input.face_begin[f + 1];
@@ -45,17 +48,33 @@ WorkingSoup::WorkingSoup(const Soup& input) : input_(input) {
       std::vector<std::pair<Index, Index>> slits;
       loops = simple_loops(
           std::move(corners), [&](Index c) { return input.corner_vertices[c]; }, &slits);
-      for (const auto& [a, b] : slits) {
-        if (!loops.empty()) {  // a polygon with no loop left is set aside whole
-          slits_.push_back({static_cast<Index>(face_origin_.size()), input.corner_vertices[a],
-                            input.corner_vertices[b]});
-        }
-      }
-      if (loops.empty()) {
+      if (loops.empty()) {  // a polygon with no loop left is set aside whole
         set_aside_.push_back(static_cast<Index>(f));
         continue;
       }
-      if (loops.size() > 1) {
+      const bool is_keyhole =
+          !slits.empty() &&
+          triangulate_keyhole(input,
+                              std::vector<Index>(input.corner_vertices.begin() + first,
+                                                 input.corner_vertices.begin() + last),
+                              keyhole);
+      for (const auto& [a, b] : slits) {
+        slits_.push_back({static_cast<Index>(face_origin_.size()), input.corner_vertices[a],
+                          input.corner_vertices[b], is_keyhole});
+      }
+      if (is_keyhole) {
+        slits_in_keyholes_ += slits.size();
+        keyholes_.push_back({static_cast<Index>(face_origin_.size()),
+                             static_cast<Index>(loops.size()),
+                             static_cast<Index>(keyhole_corners_.size()),
+                             static_cast<Index>(keyhole.positions.size())});
+        for (const auto& triangle : keyhole.positions) {
+          for (Index i : triangle)
+            keyhole_corners_.push_back(first + i);
+        }
+        ++faces_split_;
+        faces_added_by_split_ += keyhole.positions.size() - 1;
+      } else if (loops.size() > 1) {
         ++faces_split_;
         faces_added_by_split_ += loops.size() - 1;
       }

@@ -14,6 +14,10 @@ namespace meshbridge::detail {
 //! consecutive repeats are collapsed, and one that still revisits a vertex (pinched) is split into
 //! simple loops. Loops with fewer than 3 corners cannot exist in a half-edge mesh: a face left with
 //! none is *set aside* (listed). When no polygon is degenerate the input is used as is.
+//! A *keyhole polygon* (an outline and holes joined by slits, triangulate_keyhole()) is split into
+//! its loops here too, as detection sees the file's edges; its triangles are kept beside
+//! (keyholes()), and repair puts them in place of its loops, so that the outline's loop does not
+//! cover the holes.
 class WorkingSoup {
  public:
   explicit WorkingSoup(const Soup& input);
@@ -27,16 +31,30 @@ class WorkingSoup {
 
   const std::vector<Index>& degenerate_faces() const { return degenerate_; }
   const std::vector<Index>& faces_set_aside() const { return set_aside_; }
+  //! Pinched polygons split, and the extra faces that repair makes of them: a keyhole polygon
+  //! one per triangle after the first, another one per loop after the first.
   std::size_t faces_split() const { return faces_split_; }
   std::size_t faces_added_by_split() const { return faces_added_by_split_; }
-  //! Keyhole slits set aside: two-corner loops of pinched polygons (the polygon runs a -> b and
-  //! later b -> a), as (face of the working soup's first loop of that polygon, a, b) with a, b
-  //! vertices. No half-edge face can hold them; detection still counts their edge and joins the
-  //! polygon's loops through them, as the file joins them.
+  //! Keyhole slits: two-corner loops of pinched polygons (the polygon runs a -> b and later
+  //! b -> a), as (face of the working soup's first loop of that polygon, a, b) with a, b
+  //! vertices. No face of this soup holds them; detection still counts their edge and joins the
+  //! polygon's loops through them, as the file joins them. `in_keyhole`: the polygon is in
+  //! keyholes() (its triangles hold the slit), otherwise repair sets the slit aside.
   struct Slit {
     Index face, a, b;
+    bool in_keyhole;
   };
   const std::vector<Slit>& slits() const { return slits_; }
+  std::size_t slits_set_aside() const { return slits_.size() - slits_in_keyholes_; }
+  //! A keyhole polygon cut as one polygon with holes: its loops are faces `first_face` ..
+  //! `first_face + num_loops - 1` of soup(); repair replaces them by the triangles
+  //! `corners[first_corner .. first_corner + 3 * num_triangles)` (corners of input(), each
+  //! triangle running the polygon's way round).
+  struct Keyhole {
+    Index first_face, num_loops, first_corner, num_triangles;
+  };
+  const std::vector<Keyhole>& keyholes() const { return keyholes_; }
+  const std::vector<Index>& keyhole_corners() const { return keyhole_corners_; }
 
  private:
   const Soup& input_;
@@ -49,6 +67,9 @@ class WorkingSoup {
   std::size_t faces_split_ = 0;
   std::size_t faces_added_by_split_ = 0;
   std::vector<Slit> slits_;
+  std::size_t slits_in_keyholes_ = 0;
+  std::vector<Keyhole> keyholes_;
+  std::vector<Index> keyhole_corners_;
 };
 
 //! True if the polygon repeats a vertex index.

@@ -784,6 +784,15 @@ snapshot)
     expect_exit 1 "$mb" snapshot "$models/prisms24.obj" "$work/p-$view.png" --view "$view" --size 99
     [ "$(pixels "$work/out" red)" -gt 0 ] 2>/dev/null || fail "no red pixels in prisms24, $view"
   done
+  # A keyhole polygon (assimp's ring: an outline and its hole joined by a slit) repaired: the
+  # hole stays open, so the middle of the picture is the white background, not grey surface.
+  expect_exit 0 "$mb" repair "$models/../../tests/data/realworld2/assimp_concave_polygon.obj" \
+    "$work/ring.obj"
+  expect_in "$work/out" "1 keyhole polygon triangulated"
+  expect_exit 1 "$mb" snapshot "$work/ring.obj" "$work/ring.png" --view x --size 400 --focus whole
+  expect_in "$work/out" "0 singular edges, 0 singular vertices, 64 boundary edges"
+  [ "$(convert "$work/ring.png" -format '%[pixel:p{200,210}]' info:)" = "srgba(255,255,255,1)" ] ||
+    fail "keyhole's hole covered: $(convert "$work/ring.png" -format '%[pixel:p{200,210}]' info:)"
   ls -a "$work" | grep -q tmp && fail "temporary file left behind"
   expect_exit 0 "$mb" snapshot --help
   expect_in "$work/out" "Usage: meshbridge snapshot [OPTIONS] FILE OUT.png"

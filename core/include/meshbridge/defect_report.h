@@ -44,17 +44,22 @@ struct DefectReport {
   std::vector<Index> degenerate_faces;        //!< polygons with a repeated vertex index
   std::vector<Index> faces_set_aside;         //!< degenerate ones with < 3 distinct corners
   //! Keyhole slits: two-corner pieces of pinched polygons (the polygon runs a -> b and later
-  //! b -> a). No face can hold one, so repair sets them aside (counted here and in
-  //! RepairReport::slits_set_aside); their edge counts in num_edges and joins the polygon's loops
-  //! in num_components, as in the file.
+  //! b -> a). Every slit's edge counts in num_edges and joins the polygon's loops in
+  //! num_components, as in the file. A polygon that is an outline with holes joined by its slits
+  //! is triangulated by repair as one polygon with holes (its triangles hold the slits; counted
+  //! here and in RepairReport::keyhole_polygons_triangulated); the slits of other polygons (a
+  //! slit to a loop outside the outline) no face can hold, and repair sets them aside (counted
+  //! here and in RepairReport::slits_set_aside).
   std::size_t slits_set_aside = 0;
+  std::size_t keyhole_polygons_triangulated = 0;
   std::vector<Index> zero_area_faces;            //!< polygons whose area is ~0 (see detect_defects)
   std::vector<Index> duplicate_faces;            //!< polygons whose vertex set an earlier one has
   std::vector<VertexPair> inconsistent_edges;    //!< 2-sided edges whose sides run the same way
   std::size_t num_nonorientable_components = 0;  //!< components that no flipping makes consistent
   std::size_t num_components = 0;                //!< connected through every contender
   //! V - E + F over the used vertices, with F the faces detection works on: a pinched polygon
-  //! counts as its simple loops (as repair splits it), one with < 3 distinct corners not at all.
+  //! counts as its simple loops (as repair splits it), one with < 3 distinct corners not at all,
+  //! a keyhole polygon repair triangulates as one face (V - E + F of its triangles is the same).
   //! So F may differ from num_faces, which counts the file's polygons.
   long long euler_characteristic = 0;
   bool watertight = false;  //!< closed 2-manifold: no boundary, singular or inconsistent element

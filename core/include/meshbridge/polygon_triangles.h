@@ -25,8 +25,10 @@ struct PolygonTriangles {
 //! is cut into n - 2 triangles by ear clipping in the plane of its Newell normal (Meisters
 //! 1975), and no ear whose diagonal is already an edge of the mesh (a side of any polygon, or a
 //! diagonal chosen for an earlier one) is taken while the polygon has another ear, so a closed
-//! 2-manifold soup stays one when written as triangles. A polygon that repeats a vertex is cut as
-//! its simple loops; its triangles then name each vertex by its first position in the polygon.
+//! 2-manifold soup stays one when written as triangles. A keyhole polygon (an outline and holes
+//! joined by slits: it runs a -> b and later b -> a) is cut as one polygon with holes, the holes
+//! left open, its triangles naming the polygon's own corners; another polygon that repeats a
+//! vertex is cut as its simple loops, its triangles naming each vertex by its first position.
 //! \pre `soup` passes validate_soup()
 PolygonTriangles triangles_as_written(const Soup& soup);
 

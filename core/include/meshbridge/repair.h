@@ -62,8 +62,14 @@ struct RepairReport {
   std::size_t faces_set_aside = 0;       //!< degenerate, < 3 distinct corners (listed in `before`)
   std::size_t faces_split = 0;           //!< pinched polygons split into simple ones
   std::size_t faces_added_by_split = 0;  //!< extra polygons those splits made
-  //! Keyhole slits of those polygons set aside (DefectReport::slits_set_aside): a polygon that
-  //! runs a -> b and later b -> a keeps its loops; the two-corner piece between is no face.
+  //! Keyhole polygons (a polygon that runs a -> b and later b -> a: an outline and holes joined
+  //! by slits) cut into triangles as one polygon with holes, so that the holes stay open and no
+  //! triangle overlaps another; each is also counted in faces_split, its triangles after the
+  //! first in faces_added_by_split (DefectReport::keyhole_polygons_triangulated).
+  std::size_t keyhole_polygons_triangulated = 0;
+  //! Keyhole slits of other pinched polygons set aside (DefectReport::slits_set_aside): a slit
+  //! to a loop that is no hole of the outline; the polygon keeps its loops, the two-corner piece
+  //! between is no face.
   std::size_t slits_set_aside = 0;
   std::size_t duplicate_faces_removed = 0;    //!< by `remove_duplicate_faces`
   std::size_t degenerate_faces_removed = 0;   //!< by `remove_degenerate_faces`

@@ -59,12 +59,13 @@ void append_counts(ReportCounts& out, const SelfIntersectionReport& crossings,
                    const std::string& prefix = "self_intersections.");
 
 //! Appends a repair's counts (the schema's repair object): faces_in, faces_out, faces_set_aside,
-//! faces_split, faces_added_by_split, slits_set_aside, faces_flipped, duplicate_faces_removed,
-//! degenerate_faces_removed, zero_area_faces_removed, vertices_in, vertices_out, vertices_split,
-//! isolated_vertices_removed, sides_cut, sides_cut_for_orientation, sides_cut_to_stay_manifold,
-//! sides_paired_with_copies, edges_split_to_stay_manifold, sides_stitched,
-//! ambiguous_nested_shells; then gaps.*, holes.* (always, 0 when filling was off), before.* and
-//! after.* (the check counts of `before` and `after`).
+//! faces_split, faces_added_by_split, slits_set_aside, keyhole_polygons_triangulated,
+//! faces_flipped, duplicate_faces_removed, degenerate_faces_removed, zero_area_faces_removed,
+//! vertices_in, vertices_out, vertices_split, isolated_vertices_removed, sides_cut,
+//! sides_cut_for_orientation, sides_cut_to_stay_manifold, sides_paired_with_copies,
+//! edges_split_to_stay_manifold, sides_stitched, ambiguous_nested_shells; then gaps.*, holes.*
+//! (always, 0 when filling was off), before.* and after.* (the check counts of `before` and
+//! `after`).
 void append_counts(ReportCounts& out, const RepairReport& report);
 
 //! The entry named `name` in `counts`, or null.

@@ -19,13 +19,21 @@ double cross(double au, double av, double bu, double bv, double cu, double cv) {
   return (bu - au) * (cv - av) - (bv - av) * (cu - au);
 }
 
-//! Appends the triangles of the ring `p` (>= 3 corners) to `t.triangles`.
-void triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t) {
+//! Appends the triangles of the ring `p` (>= 3 corners) to `t.triangles`; with `strict`, also
+//! their corners as positions in `p` to `t.positions`, and returns false (leaving the triangles
+//! incomplete) instead of fanning where no ear is left or the last triangle does not turn the
+//! ring's way. Returns true otherwise.
+bool triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t, bool strict = false) {
   const std::size_t n = p.size();
+  const auto emit = [&](Index a, Index b, Index c) {
+    t.triangles.push_back({p[a], p[b], p[c]});
+    if (strict)
+      t.positions.push_back({a, b, c});
+  };
   const auto fan = [&](std::size_t first, std::size_t count) {  // the ring from `first` on
     Index a = static_cast<Index>(first), b = t.next[a];
     for (std::size_t k = 0; k + 2 < count; ++k) {
-      t.triangles.push_back({p[a], p[b], p[t.next[b]]});
+      emit(a, b, t.next[b]);
       b = t.next[b];
     }
   };
@@ -65,8 +73,10 @@ void triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t) {
     fan(first, count);
   };
   if (n == 3 || n > 4096 || !(std::abs(normal[drop]) > 0) || !std::isfinite(normal[drop])) {
+    if (strict)
+      return false;
     free_fan(0, n);
-    return;
+    return true;
   }
   int iu = (drop + 1) % 3, iv = (drop + 2) % 3;
   if (normal[drop] < 0)
@@ -77,17 +87,21 @@ void triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t) {
     t.u[i] = soup.positions[p[i]][iu];
     t.v[i] = soup.positions[p[i]][iv];
   }
-  // An ear: a convex corner whose triangle holds no other corner of the ring (on its sides
-  // counts as inside, unless the corner is at one of its three points: a pinched polygon).
-  const auto is_ear = [&](Index b) {
-    const Index a = t.previous[b], c = t.next[b];
-    // Convex, and not flat: a corner on the line of its neighbours (a vertex repair put at an
-    // edge's midpoint) gives a triangle of no area, whose diagonal is that edge again; rounding
-    // makes such a corner's cross product a few units in the last place of either sign.
+  // Convex, and not flat: a corner on the line of its neighbours (a vertex repair put at an
+  // edge's midpoint) gives a triangle of no area, whose diagonal is that edge again; rounding
+  // makes such a corner's cross product a few units in the last place of either sign.
+  const auto is_convex = [&](Index a, Index b, Index c) {
     const double turn = cross(t.u[a], t.v[a], t.u[b], t.v[b], t.u[c], t.v[c]);
     const double ab = std::hypot(t.u[b] - t.u[a], t.v[b] - t.v[a]);
     const double bc = std::hypot(t.u[c] - t.u[b], t.v[c] - t.v[b]);
-    if (!(turn > 1e-12 * ab * bc))
+    return turn > 1e-12 * ab * bc;
+  };
+  // An ear: a convex corner whose triangle holds no other corner of the ring (on its sides
+  // counts as inside, unless the corner is at one of its three points: a pinched polygon, or
+  // the two ends of a keyhole's slit).
+  const auto is_ear = [&](Index b) {
+    const Index a = t.previous[b], c = t.next[b];
+    if (!is_convex(a, b, c))
       return false;
     for (Index q = t.next[c]; q != a; q = t.next[q]) {
       const bool at_corner = (t.u[q] == t.u[a] && t.v[q] == t.v[a]) ||
@@ -134,30 +148,35 @@ void triangulate_ring(const Soup& soup, PolygonView p, Triangulation& t) {
   std::size_t left = n;
   while (left > 3) {
     Index b = t.taken.empty() ? kNoIndex : find_ear(start, left, is_free_ear);
-    if (b == kNoIndex && left == 4 && !t.taken.empty()) {
+    if (b == kNoIndex && left == 4 && !t.taken.empty() && !strict) {
       const Index a = find_ear(start, 2, free_quad);
       if (a != kNoIndex) {
         t.taken.insert(edge_key(p[a], p[t.next[t.next[a]]]));
         fan(a, 4);
-        return;
+        return true;
       }
     }
     if (b == kNoIndex)
       b = find_ear(start, left, is_ear);
     if (b == kNoIndex) {  // no ear: not a simple polygon in this plane
+      if (strict)
+        return false;
       free_fan(start, left);
-      return;
+      return true;
     }
     const Index a = t.previous[b], c = t.next[b];
     if (!t.taken.empty())
       t.taken.insert(edge_key(p[a], p[c]));
-    t.triangles.push_back({p[a], p[b], p[c]});
+    emit(a, b, c);
     t.next[a] = c;
     t.previous[c] = a;
     start = a;
     --left;
   }
-  t.triangles.push_back({p[t.previous[start]], p[start], p[t.next[start]]});
+  if (strict && !is_convex(t.previous[start], start, t.next[start]))
+    return false;
+  emit(t.previous[start], start, t.next[start]);
+  return true;
 }
 
 }  // namespace
@@ -177,13 +196,71 @@ void avoid_existing_edges(const Soup& soup, Triangulation& t) {
   }
 }
 
+bool triangulate_keyhole(const Soup& soup, const std::vector<Index>& vertices, Triangulation& t) {
+  t.triangles.clear();
+  t.positions.clear();
+  // Consecutive repeats collapse (cyclically), as simple_loops() collapses them.
+  std::vector<Index> kept;  // positions in `vertices`
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (kept.empty() || vertices[kept.back()] != vertices[i])
+      kept.push_back(static_cast<Index>(i));
+  }
+  while (kept.size() > 1 && vertices[kept.back()] == vertices[kept.front()])
+    kept.pop_back();
+  if (kept.size() < 8)  // the smallest keyhole: a triangle in a triangle, and the slit twice
+    return false;
+  t.ring.resize(kept.size());
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    t.ring[i] = vertices[kept[i]];
+  std::vector<Index> ids(kept.size());
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    ids[i] = static_cast<Index>(i);
+  std::vector<std::pair<Index, Index>> slits;
+  const auto loops = simple_loops(
+      std::move(ids), [&](Index i) { return t.ring[i]; }, &slits);
+  if (slits.empty() || loops.size() < 2)
+    return false;
+  const PolygonView ring{t.ring.data(), t.ring.data() + t.ring.size()};
+  if (!triangulate_ring(soup, ring, t, true)) {
+    t.triangles.clear();
+    t.positions.clear();
+    return false;
+  }
+  // In the ring's plane (t.u, t.v: the whole polygon runs counter-clockwise), exactly one loop
+  // turns that way (the outline) and the others the other way (the holes): the polygon winds
+  // once round the points between them and not at all round a hole's, so triangles that all
+  // turn that way (the ears do) cover the ring between them once and leave the holes open.
+  std::size_t turning_way = 0;
+  for (const std::vector<Index>& loop : loops) {
+    double area = 0;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const Index a = loop[i], b = loop[(i + 1) % loop.size()];
+      area += t.u[a] * t.v[b] - t.u[b] * t.v[a];
+    }
+    turning_way += area > 0 ? 1 : 0;
+  }
+  if (turning_way != 1) {
+    t.triangles.clear();
+    t.positions.clear();
+    return false;
+  }
+  for (auto& triangle : t.positions) {
+    for (Index& i : triangle)
+      i = kept[i];
+  }
+  return true;
+}
+
 void triangulate_polygon(const Soup& soup, std::size_t f, Triangulation& t) {
   t.triangles.clear();
+  t.positions.clear();
   const PolygonView p = soup.polygon(f);
   if (p.size() <= 3 || !has_repeated_vertex(p)) {
     triangulate_ring(soup, p, t);
     return;
   }
+  if (triangulate_keyhole(soup, std::vector<Index>(p.begin(), p.end()), t))
+    return;
   const auto loops =
       simple_loops(std::vector<Index>(p.begin(), p.end()), [](Index v) { return v; });
   if (loops.empty()) {
@@ -196,10 +273,14 @@ void triangulate_polygon(const Soup& soup, std::size_t f, Triangulation& t) {
   }
 }
 
-std::size_t polygon_triangle_count(PolygonView polygon) {
+std::size_t polygon_triangle_count(const Soup& soup, std::size_t f) {
+  const PolygonView polygon = soup.polygon(f);
   const std::size_t n = polygon.size();
   if (n <= 3 || !has_repeated_vertex(polygon))
     return n >= 3 ? n - 2 : 0;
+  Triangulation t;
+  if (triangulate_keyhole(soup, std::vector<Index>(polygon.begin(), polygon.end()), t))
+    return t.triangles.size();
   const auto loops =
       simple_loops(std::vector<Index>(polygon.begin(), polygon.end()), [](Index v) { return v; });
   if (loops.empty())
@@ -231,6 +312,11 @@ PolygonTriangles triangles_as_written(const Soup& soup) {
     const auto position = [&p](Index v) {
       return static_cast<std::uint32_t>(std::find(p.begin(), p.end(), v) - p.begin());
     };
+    if (!t.positions.empty()) {  // a keyhole polygon: a slit's ends are two corners each
+      for (const auto& [a, b, c] : t.positions)
+        out.corners.push_back({a, b, c});
+      continue;
+    }
     for (const auto& [a, b, c] : t.triangles)
       out.corners.push_back({position(a), position(b), position(c)});
   }

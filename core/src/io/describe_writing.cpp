@@ -286,7 +286,7 @@ WrittenOutput describe_written(const std::string& path, const Soup& soup,
   }
   if (format == detail::Format::stl || format == detail::Format::threemf) {
     for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-      written.triangles += detail::polygon_triangle_count(soup.polygon(f));
+      written.triangles += detail::polygon_triangle_count(soup, f);
       written.polygons_triangulated += soup.arity(f) > 3 ? 1 : 0;
     }
     std::size_t rounded = 0;  // vertices with a coordinate that is not exactly a float

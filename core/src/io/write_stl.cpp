@@ -28,7 +28,7 @@ Point unit_normal(const Point& a, const Point& b, const Point& c) {
 std::uint64_t triangle_count(const Soup& soup) {
   std::uint64_t triangles = 0;
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
-    triangles += polygon_triangle_count(soup.polygon(f));
+    triangles += polygon_triangle_count(soup, f);
   return triangles;
 }
 
