@@ -225,7 +225,10 @@ const char* scan_vertices_until(const char* begin, const char* end, std::vector<
       if (!std::isfinite(f[k]) || std::abs(f[k]) > 1e9f)
         return false;  // lib3mf's limit: the pugixml route refuses it
     }
-    positions.insert(positions.end(), f, f + 3);
+    // push_back, not insert: insert of 3 calls memmove (5 % of a 1M-triangle 3MF's read).
+    positions.push_back(f[0]);
+    positions.push_back(f[1]);
+    positions.push_back(f[2]);
     return true;
   };
   static const char* const kBetween[2] = {"\" y=\"", "\" z=\""};
@@ -256,7 +259,9 @@ const char* scan_triangles_until(const char* begin, const char* end, std::size_t
         v[1] == v[2] || v[0] == v[2]) {
       return false;
     }
-    corners.insert(corners.end(), v, v + 3);
+    corners.push_back(v[0]);
+    corners.push_back(v[1]);
+    corners.push_back(v[2]);
     return true;
   };
   static const char* const kBetween[2] = {"\" v2=\"", "\" v3=\""};
