@@ -3,9 +3,9 @@
 // The meshes of a 3MF model part (3MF Core Specification 1.2, section 4.1.1: <mesh>, <vertices>,
 // <triangles>) read apart (a direct scan, mesh_scan_3mf.h; pugixml where it gives up), and the
 // model part without them, for lib3mf to read the rest (build, components, transforms, types,
-// metadata, materials). A 3MF of 1M triangles reads in about a fifth of lib3mf 1.8's CPU time
-// (meshbridge-parse-bench read-3mf, 1M torus, one thread: 0.16 s against 0.87 s; pugixml alone
-// 0.25 s; bench/results.md section 15).
+// metadata, materials). A 3MF of 1M triangles reads in about an eighth of lib3mf 1.8's CPU time
+// (meshbridge-parse-bench read-3mf, 1M torus, one thread: 0.107 s streamed with ISA-L, 0.15 s
+// inflated whole, against 0.88 s; pugixml alone 0.25 s; bench/results.md sections 15 and 16).
 
 #include <cstddef>
 #include <cstdint>
