@@ -10,6 +10,7 @@
 // part, for lib3mf.
 #include "io/mesh_xml_3mf.h"
 
+#include "io/inflate_chunks.h"
 #include "io/mesh_scan_3mf.h"
 #include "io/mesh_stream_3mf.h"
 #include "io/package_3mf.h"
@@ -370,8 +371,8 @@ std::vector<unsigned char> package_without_meshes_or_throw(
   // meshes. MESHBRIDGE_3MF_MESHES=whole (or pugixml) reads it whole.
   const char* route = std::getenv("MESHBRIDGE_3MF_MESHES");
   bool read = false;
-  if (route == nullptr ||
-      (std::strcmp(route, "whole") != 0 && std::strcmp(route, "pugixml") != 0)) {
+  if (can_inflate_in_chunks() && (route == nullptr || (std::strcmp(route, "whole") != 0 &&
+                                                       std::strcmp(route, "pugixml") != 0))) {
     PartStat part;
     PartBytes compressed;
     read = package.read_deflated(root, part, compressed) &&
