@@ -11,6 +11,7 @@ packages=(build-essential cmake pkg-config libopenmesh-dev libgtest-dev googlete
   clang-format  # the test command checks every C++ file's formatting (.clang-format)
   lib3mf-dev  # 3MF read and write (core)
   libpugixml-dev libzip-dev libdeflate-dev  # 3MF meshes read apart from lib3mf (core, faster)
+  libisal-dev  # 3MF model parts inflated in chunks as they are read (core, optional, faster)
   libcgal-dev libgmp-dev libmpfr-dev  # hole filling (core: CGAL PMP triangulate_hole, header-only)
   "$@")
 

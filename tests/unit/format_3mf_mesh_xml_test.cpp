@@ -97,11 +97,19 @@ Outcome read_with(const std::string& path, const char* route) {
 }
 
 // Reads `path` every way (lib3mf alone; the meshes apart by pugixml alone; apart by the direct
-// scan with pugixml where it gives up, the default) and expects the same outcome; returns it.
+// scan of the part inflated whole; apart by the scan as the part is inflated, with the part read
+// whole where it gives up, the default) and expects the same outcome; returns it.
 Outcome expect_same_both_ways(const std::string& path) {
   const Outcome lib3mf = read_with(path, "lib3mf");
   const Outcome apart = read_with(path, "xml");
   const Outcome pugixml = read_with(path, "pugixml");
+  const Outcome whole = read_with(path, "whole");  // the part inflated whole, not streamed
+  EXPECT_EQ(apart.error, whole.error);
+  EXPECT_EQ(apart.soup.positions, whole.soup.positions);
+  EXPECT_EQ(apart.soup.corner_vertices, whole.soup.corner_vertices);
+  EXPECT_EQ(apart.info.declared_faces, whole.info.declared_faces);
+  EXPECT_EQ(apart.attributes.metadata, whole.attributes.metadata);
+  EXPECT_EQ(apart.attributes.face_objects, whole.attributes.face_objects);
   EXPECT_EQ(apart.error, pugixml.error);
   EXPECT_EQ(apart.soup.positions, pugixml.soup.positions);
   EXPECT_EQ(apart.soup.corner_vertices, pugixml.soup.corner_vertices);

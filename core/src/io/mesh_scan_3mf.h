@@ -25,4 +25,14 @@ bool scan_vertices(const char* begin, const char* end, std::vector<float>& posit
 bool scan_triangles(const char* begin, const char* end, std::size_t vertex_count,
                     std::vector<std::uint32_t>& corners);
 
+//! As scan_vertices(), for text that may go on past `end` (a chunk of a stream): appends every
+//! vertex of [begin, end) up to the first element it does not read whole, and returns where that
+//! element begins (`end` when it read them all). The element may be one `end` cuts off, the end
+//! tag of the list, or one that leaves the narrow form; the caller tells them apart.
+const char* scan_vertices_until(const char* begin, const char* end, std::vector<float>& positions);
+
+//! As scan_triangles(), for text that may go on past `end`, as scan_vertices_until() reads it.
+const char* scan_triangles_until(const char* begin, const char* end, std::size_t vertex_count,
+                                 std::vector<std::uint32_t>& corners);
+
 }  // namespace meshbridge::detail

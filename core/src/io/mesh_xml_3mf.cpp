@@ -10,7 +10,9 @@
 // part, for lib3mf.
 #include "io/mesh_xml_3mf.h"
 
+#include "io/inflate_chunks.h"
 #include "io/mesh_scan_3mf.h"
+#include "io/mesh_stream_3mf.h"
 #include "io/package_3mf.h"
 #include "parallel_parts.h"
 
@@ -57,7 +59,7 @@ bool parse(const char* text, const char* end, Number& value) {
   return result.ec == std::errc() && result.ptr != text && *result.ptr == '\0';
 }
 
-enum class Outcome { read, left_for_lib3mf, refused };
+using Outcome = ListOutcome;
 
 // A list's content in the model part: [begin, end), after its start tag.
 struct Cut {
@@ -276,24 +278,22 @@ std::string without_cuts(std::string_view text, const std::vector<Cut>& cuts, bo
 
 }  // namespace
 
-bool read_meshes_xml(std::string_view text, std::map<std::uint32_t, MeshXml>& meshes,
-                     std::string& stripped) {
-  std::vector<Cut> cuts;
-  find_cuts(text, cuts);
-  // The structure: the model part without any list.
-  std::vector<std::size_t> landed;
-  std::string structure = without_cuts(text, cuts, true, &landed);
+bool read_structure(std::string& structure, const std::vector<std::size_t>& landed,
+                    const ReadMesh& read_mesh, std::map<std::uint32_t, MeshXml>& meshes,
+                    std::vector<bool>& taken) {
+  const std::size_t cut_count = landed.size();
+  taken.assign(cut_count, false);
   pugi::xml_document document;
   // In place, no conversion: only the structure is read here; lib3mf reads it again.
   if (!document.load_buffer_inplace(structure.data(), structure.size(),
                                     pugi::parse_minimal | pugi::parse_cdata, pugi::encoding_utf8)) {
     return false;
   }
-  // The cut whose start tag is the one of `list` (cuts.size() if none).
+  // The cut whose start tag is the one of `list` (cut_count if none).
   const auto cut_of = [&](pugi::xml_node list) {
     const std::size_t tag = static_cast<std::size_t>(list.name() - structure.data()) - 1;
     const auto at = std::lower_bound(landed.begin(), landed.end(), tag);
-    return at != landed.end() && *at == tag ? std::size_t(at - landed.begin()) : cuts.size();
+    return at != landed.end() && *at == tag ? std::size_t(at - landed.begin()) : cut_count;
   };
   for (pugi::xml_node resources : document.child("model").children("resources")) {
     for (pugi::xml_node object : resources.children("object")) {
@@ -303,37 +303,58 @@ bool read_meshes_xml(std::string_view text, std::map<std::uint32_t, MeshXml>& me
       if (!mesh || !parse(id_text, id_text + std::strlen(id_text), id) || meshes.count(id) != 0)
         continue;  // lib3mf's to read (and to refuse)
       // Its lists, both cut, and nothing else in it.
-      std::size_t lists[2] = {cuts.size(), cuts.size()};
+      std::size_t lists[2] = {cut_count, cut_count};
       bool other = false;
       for (pugi::xml_node child : mesh.children()) {
         const bool vertices = std::strcmp(child.name(), "vertices") == 0;
         const bool triangles = std::strcmp(child.name(), "triangles") == 0;
-        const std::size_t c = vertices || triangles ? cut_of(child) : cuts.size();
-        if (c == cuts.size() || lists[triangles ? 1 : 0] != cuts.size() || child.first_child())
+        const std::size_t c = vertices || triangles ? cut_of(child) : cut_count;
+        if (c == cut_count || lists[triangles ? 1 : 0] != cut_count || child.first_child())
           other = true;
         else
           lists[triangles ? 1 : 0] = c;
       }
-      if (other || lists[0] == cuts.size() || lists[1] == cuts.size())
+      if (other || lists[0] == cut_count || lists[1] == cut_count)
         continue;
       MeshXml read;
-      const Cut& vertices = cuts[lists[0]];
-      const Cut& triangles = cuts[lists[1]];
-      const std::vector<std::string> prefixes = declared_prefixes(mesh);
-      Outcome outcome = read_list(false, text.data() + vertices.begin, text.data() + vertices.end,
-                                  0, prefixes, read);
-      if (outcome == Outcome::read) {
-        outcome = read_list(true, text.data() + triangles.begin, text.data() + triangles.end,
-                            read.positions.size() / 3, prefixes, read);
-      }
-      if (outcome == Outcome::refused)
+      const ListOutcome outcome = read_mesh(lists[0], lists[1], declared_prefixes(mesh), read);
+      if (outcome == ListOutcome::refused)
         return false;
-      if (outcome == Outcome::left_for_lib3mf)
+      if (outcome == ListOutcome::left_for_lib3mf)
         continue;
-      cuts[lists[0]].taken = cuts[lists[1]].taken = true;
+      taken[lists[0]] = taken[lists[1]] = true;
       meshes.emplace(id, std::move(read));
     }
   }
+  return true;
+}
+
+bool read_meshes_xml(std::string_view text, std::map<std::uint32_t, MeshXml>& meshes,
+                     std::string& stripped) {
+  std::vector<Cut> cuts;
+  find_cuts(text, cuts);
+  // The structure: the model part without any list.
+  std::vector<std::size_t> landed;
+  std::string structure = without_cuts(text, cuts, true, &landed);
+  std::vector<bool> taken;
+  const bool read = read_structure(
+      structure, landed,
+      [&](std::size_t v, std::size_t t, const std::vector<std::string>& prefixes, MeshXml& mesh) {
+        const Cut& vertices = cuts[v];
+        const Cut& triangles = cuts[t];
+        ListOutcome outcome = read_list(false, text.data() + vertices.begin,
+                                        text.data() + vertices.end, 0, prefixes, mesh);
+        if (outcome == ListOutcome::read) {
+          outcome = read_list(true, text.data() + triangles.begin, text.data() + triangles.end,
+                              mesh.positions.size() / 3, prefixes, mesh);
+        }
+        return outcome;
+      },
+      meshes, taken);
+  if (!read)
+    return false;
+  for (std::size_t c = 0; c < cuts.size(); ++c)
+    cuts[c].taken = taken[c];
   stripped = without_cuts(text, cuts, false, nullptr);
   return true;
 }
@@ -344,13 +365,29 @@ std::vector<unsigned char> package_without_meshes_or_throw(
     const void* data, std::size_t size, std::map<std::uint32_t, MeshXml>& meshes) {
   Package3mf package(data, size);
   std::string root, stripped;
-  PartBytes xml;
-  if (!package.is_open() || (root = package.root_model()).empty() || !package.read(root, xml) ||
-      !read_meshes_xml(xml.view(), meshes, stripped) || meshes.empty()) {
+  if (!package.is_open() || (root = package.root_model()).empty())
+    return {};
+  // Read while it is inflated (mesh_stream_3mf.h), else inflated whole and read: the same
+  // meshes. MESHBRIDGE_3MF_MESHES=whole (or pugixml) reads it whole.
+  const char* route = std::getenv("MESHBRIDGE_3MF_MESHES");
+  bool read = false;
+  if (can_inflate_in_chunks() && (route == nullptr || (std::strcmp(route, "whole") != 0 &&
+                                                       std::strcmp(route, "pugixml") != 0))) {
+    PartStat part;
+    PartBytes compressed;
+    read = package.read_deflated(root, part, compressed) &&
+           read_meshes_streamed(reinterpret_cast<const unsigned char*>(compressed.data.get()),
+                                compressed.size, part.size, part.crc, meshes, stripped);
+  }
+  if (!read) {
+    meshes.clear();
+    PartBytes xml;
+    read = package.read(root, xml) && read_meshes_xml(xml.view(), meshes, stripped);
+  }  // the part freed before lib3mf's turn
+  if (!read || meshes.empty()) {
     meshes.clear();
     return {};
   }
-  xml = PartBytes();  // freed before lib3mf's turn
   std::vector<unsigned char> without = package.replaced(root, stripped);
   if (without.empty())
     meshes.clear();

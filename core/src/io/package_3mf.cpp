@@ -67,7 +67,7 @@ std::string Package3mf::root_model() const {
   return root;
 }
 
-bool Package3mf::read(const std::string& name, PartBytes& bytes) const {
+bool Package3mf::stat(const std::string& name, PartStat& part) const {
   const zip_int64_t index = zip_name_locate(archive_, name.c_str(), 0);
   zip_stat_t stat;
   if (index < 0 || zip_stat_index(archive_, static_cast<zip_uint64_t>(index), 0, &stat) != 0 ||
@@ -80,37 +80,60 @@ bool Package3mf::read(const std::string& name, PartBytes& bytes) const {
   // lib3mf rather than allocated.
   if (stat.comp_method == ZIP_CM_DEFLATE && stat.size > 1032 * stat.comp_size + 1024)
     return false;
-  bytes.size = static_cast<std::size_t>(stat.size);
+  part.index = static_cast<std::uint64_t>(index);
+  part.size = stat.size;
+  part.compressed_size = stat.comp_size;
+  part.crc = stat.crc;
+  part.deflated = stat.comp_method == ZIP_CM_DEFLATE;
+  return true;
+}
+
+bool Package3mf::read_raw(const PartStat& part, bool compressed, char* out) const {
+  const std::size_t wanted =
+      static_cast<std::size_t>(compressed ? part.compressed_size : part.size);
+  zip_file_t* file = zip_fopen_index(archive_, part.index, compressed ? ZIP_FL_COMPRESSED : 0);
+  if (file == nullptr)
+    return false;
+  const zip_int64_t got = wanted == 0 ? 0 : zip_fread(file, out, wanted);
+  zip_fclose(file);
+  return got >= 0 && static_cast<std::size_t>(got) == wanted;
+}
+
+bool Package3mf::read_deflated(const std::string& name, PartStat& part,
+                               PartBytes& compressed) const {
+  if (!stat(name, part) || !part.deflated)
+    return false;
+  compressed.size = static_cast<std::size_t>(part.compressed_size);
+  compressed.data.reset(new char[compressed.size + 1]);
+  compressed.data[compressed.size] = '\0';
+  return read_raw(part, true, compressed.data.get());
+}
+
+bool Package3mf::read(const std::string& name, PartBytes& bytes) const {
+  PartStat part;
+  if (!stat(name, part))
+    return false;
+  bytes.size = static_cast<std::size_t>(part.size);
   bytes.data.reset(new char[bytes.size + 1]);
   bytes.data[bytes.size] = '\0';
   // Deflated parts are inflated whole by libdeflate (about twice zlib's speed), the rest by
   // libzip.
-  const bool deflated = stat.comp_method == ZIP_CM_DEFLATE;
-  const std::size_t wanted = static_cast<std::size_t>(deflated ? stat.comp_size : stat.size);
-  std::unique_ptr<char[]> compressed(deflated ? new char[wanted + 1] : nullptr);
-  zip_file_t* file =
-      zip_fopen_index(archive_, static_cast<zip_uint64_t>(index), deflated ? ZIP_FL_COMPRESSED : 0);
-  if (file == nullptr)
+  if (!part.deflated)
+    return read_raw(part, false, bytes.data.get());
+  PartBytes compressed;
+  compressed.size = static_cast<std::size_t>(part.compressed_size);
+  compressed.data.reset(new char[compressed.size + 1]);
+  if (!read_raw(part, true, compressed.data.get()))
     return false;
-  const zip_int64_t got =
-      wanted == 0 ? 0 : zip_fread(file, deflated ? compressed.get() : bytes.data.get(), wanted);
-  zip_fclose(file);
-  if (got < 0 || static_cast<std::size_t>(got) != wanted)
+  libdeflate_decompressor* inflater = libdeflate_alloc_decompressor();
+  if (inflater == nullptr)
     return false;
-  if (deflated) {
-    libdeflate_decompressor* inflater = libdeflate_alloc_decompressor();
-    if (inflater == nullptr)
-      return false;
-    std::size_t size = 0;
-    const libdeflate_result result = libdeflate_deflate_decompress(
-        inflater, compressed.get(), wanted, bytes.data.get(), bytes.size, &size);
-    libdeflate_free_decompressor(inflater);
-    if (result != LIBDEFLATE_SUCCESS || size != bytes.size ||
-        libdeflate_crc32(0, bytes.data.get(), size) != stat.crc) {
-      return false;
-    }
-  }
-  return true;
+  std::size_t size = 0;
+  const libdeflate_result result = libdeflate_deflate_decompress(
+      inflater, compressed.data.get(), compressed.size, bytes.data.get(), bytes.size, &size);
+  libdeflate_free_decompressor(inflater);
+  return result == LIBDEFLATE_SUCCESS && size == bytes.size &&
+         libdeflate_crc32(0, bytes.data.get(), size) == part.crc;
 }
 
 std::vector<unsigned char> Package3mf::replaced(const std::string& name,

@@ -2,9 +2,11 @@
 #pragma once
 // A 3MF package (a zip archive, 3MF Core Specification 1.2, chapter 2) held in memory, through
 // libzip: its root model part found through the package relationships, read whole (inflated by
-// libdeflate), and a copy of the package with that part replaced, for lib3mf to read the rest.
+// libdeflate) or as stored (for inflate_chunks.h), and a copy of the package with that part
+// replaced, for lib3mf to read the rest.
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -20,6 +22,15 @@ struct PartBytes {
   std::unique_ptr<char[]> data;  // not initialised before it is filled: no pass to clear it
   std::size_t size = 0;
   std::string_view view() const { return {data.get(), size}; }
+};
+
+//! Where a part is in the package and what its header says.
+struct PartStat {
+  std::uint64_t index = 0;
+  std::uint64_t size = 0;             //!< inflated
+  std::uint64_t compressed_size = 0;  //!< as stored
+  std::uint32_t crc = 0;              //!< CRC-32 of the inflated bytes
+  bool deflated = false;              //!< else stored
 };
 
 class Package3mf {
@@ -38,11 +49,18 @@ class Package3mf {
   //! The whole part `name` into `bytes`; false if it cannot be read (or its CRC-32 does not
   //! match).
   bool read(const std::string& name, PartBytes& bytes) const;
+  //! The stored (deflated) bytes of part `name` into `compressed`, what its header says into
+  //! `part`; false if it cannot be read, is not deflated, or claims more than deflate can give.
+  bool read_deflated(const std::string& name, PartStat& part, PartBytes& compressed) const;
   //! The whole package with part `name` replaced by `content` (stored, not compressed), every
   //! other part as it was; empty on failure. Closes the package (is_open() is false after it).
   std::vector<unsigned char> replaced(const std::string& name, const std::string& content);
 
  private:
+  bool stat(const std::string& name, PartStat& part) const;
+  // The part's bytes as stored (`compressed`) or inflated by libzip into `out`.
+  bool read_raw(const PartStat& part, bool compressed, char* out) const;
+
   ::zip* archive_ = nullptr;
   ::zip_source* source_ = nullptr;
 };

@@ -162,22 +162,27 @@ class Reader {
       const float* p = positions + 3 * v;
       soup_.add_vertex(transformed ? apply(placement, p) : Point(p[0], p[1], p[2]));
     }
-    soup_.corner_vertices.reserve(soup_.num_corners() + 3 * triangle_count);
-    soup_.face_begin.reserve(soup_.num_faces() + 1 + triangle_count);
+    for (std::size_t c = 0; c < 3 * triangle_count; ++c) {
+      if (corners[c] >= vertex_count) {
+        throw ReadError(path_ + ": 3MF triangle " + std::to_string(soup_.num_faces() + c / 3) +
+                        " uses vertex " + std::to_string(corners[c]) + " of an object with " +
+                        std::to_string(vertex_count) + " vertices");
+      }
+    }
+    // Appended whole, not a triangle at a time (a tenth of a 1M-triangle 3MF's read).
+    const std::size_t first = soup_.num_corners();
+    soup_.corner_vertices.resize(first + 3 * triangle_count);
+    Index* out = soup_.corner_vertices.data() + first;
     for (std::size_t t = 0; t < triangle_count; ++t) {
       const std::uint32_t* i = corners + 3 * t;
-      for (int c = 0; c < 3; ++c) {
-        if (i[c] >= vertex_count) {
-          throw ReadError(path_ + ": 3MF triangle " + std::to_string(soup_.num_faces()) +
-                          " uses vertex " + std::to_string(i[c]) + " of an object with " +
-                          std::to_string(vertex_count) + " vertices");
-        }
-      }
-      if (reversed)
-        soup_.add_polygon({offset + i[0], offset + i[2], offset + i[1]});
-      else
-        soup_.add_polygon({offset + i[0], offset + i[1], offset + i[2]});
+      out[3 * t] = offset + i[0];
+      out[3 * t + 1] = offset + i[reversed ? 2 : 1];
+      out[3 * t + 2] = offset + i[reversed ? 1 : 2];
     }
+    const std::size_t faces = soup_.num_faces();
+    soup_.face_begin.resize(faces + 1 + triangle_count);
+    for (std::size_t t = 1; t <= triangle_count; ++t)
+      soup_.face_begin[faces + t] = static_cast<Index>(first + 3 * t);
     count_properties(object, triangle_count, from_xml);
   }
 
