@@ -55,11 +55,13 @@ struct WriteBackOptions {
 
 //! What write_repaired() did besides copying the core's result.
 struct WriteBackReport {
-  std::size_t faces_in = 0;              //!< live faces of `m` before
-  std::size_t faces_out = 0;             //!< faces of `m` after
-  std::size_t vertices_in = 0;           //!< live vertices of `m` before
-  std::size_t vertices_out = 0;          //!< vertices of `m` after
-  std::size_t set_aside_faces_kept = 0;  //!< faces the core set aside, put back unchanged
+  std::size_t faces_in = 0;      //!< live faces of `m` before
+  std::size_t faces_out = 0;     //!< faces of `m` after
+  std::size_t vertices_in = 0;   //!< live vertices of `m` before
+  std::size_t vertices_out = 0;  //!< vertices of `m` after
+  //! faces the core set aside (in a triangle layer: degenerate, a vertex repeated), put back
+  //! unchanged
+  std::size_t degenerate_faces_kept = 0;
   //! output polygons with more than 3 corners, cut into triangles as the STL and 3MF writers cut
   //! them (triangles_as_written(): ear clipping, no diagonal on an existing edge)
   std::size_t polygons_triangulated = 0;

@@ -283,8 +283,8 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
   out.log += "\nLayer now: " + std::to_string(mesh.vn) + " vertices, " + std::to_string(mesh.fn) +
              " faces (was " + std::to_string(w.vertices_in) + " vertices, " +
              std::to_string(w.faces_in) + " faces)";
-  if (w.set_aside_faces_kept != 0) {
-    out.log += "\nKept " + std::to_string(w.set_aside_faces_kept) +
+  if (w.degenerate_faces_kept != 0) {
+    out.log += "\nKept " + std::to_string(w.degenerate_faces_kept) +
                " degenerate faces unchanged (they repeat a vertex and cannot be manifold; "
                "'Remove degenerate faces' drops them)";
   }
@@ -310,7 +310,7 @@ RepairOutcome repair_singular_defects(CMeshO& mesh, const std::string& label,
   // the layer (triangles, degenerate faces kept).
   set_count(out.counts, "vertices_out", w.vertices_out);
   set_count(out.counts, "faces_out", w.faces_out);
-  add_counts(out.counts, {{"degenerate_faces_kept", w.set_aside_faces_kept},
+  add_counts(out.counts, {{"degenerate_faces_kept", w.degenerate_faces_kept},
                           {"polygons_triangulated", w.polygons_triangulated}});
   if (out.reread)
     append_counts(out.counts, *out.reread, "reread.");

@@ -200,7 +200,7 @@ void WriteBack::plan_set_aside_before(Index origin) {
     for (int k = 0; k < 3; ++k)
       t.vertex[k] = first_copy_[poly[std::size_t(k)]];
     plan_.push_back(t);
-    ++report_.set_aside_faces_kept;
+    ++report_.degenerate_faces_kept;
   }
 }
 

@@ -254,7 +254,7 @@ void RepairRun::count() {
   report.faces_flipped = counts.faces_flipped;
   report.sides_cut_to_stay_manifold = counts.sides_cut_to_stay_manifold;
   report.sides_paired_with_copies = counts.sides_paired_with_copies;
-  report.edges_split_to_stay_manifold = counts.edges_split_at_midpoint;
+  report.edges_split_to_stay_manifold = counts.edges_split_to_stay_manifold;
   report.nonorientable_after_pairing = counts.nonorientable_components;
   report.ambiguous_nested_shells = counts.ambiguous_nested_shells;
   balance_.open_edges_out = counts.open_sides;

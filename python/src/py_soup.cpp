@@ -45,7 +45,9 @@ py::bytes raw_bytes(const std::vector<T>& values) {
   return py::bytes(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
 }
 
-//! (positions, corner_vertices, face_begin as raw bytes, path, 12 ReadInfo counts, not_held).
+//! (positions, corner_vertices, face_begin as raw bytes, path, the 15 values of ReadInfo,
+//! not_held). Every ReadInfo value counts: check and repair read faces_without_corners, and repair
+//! takes float_coordinates for the weld tolerance.
 py::tuple pickle_state(const PySoup& s) {
   const ReadInfo& i = s.info;
   return py::make_tuple(
@@ -53,7 +55,9 @@ py::tuple pickle_state(const PySoup& s) {
       s.path,
       py::make_tuple(i.declared_vertices, i.declared_faces, i.faces_kept, i.faces_split,
                      i.faces_set_aside, i.dangling_edges, i.lone_points, i.strip_joins,
-                     i.unknown_records, i.color_map_indices, i.empty_records, i.trailing_bytes),
+                     i.unknown_records, i.color_map_indices, i.empty_records, i.trailing_bytes,
+                     i.faces_without_corners, i.vertices_welded_by_position,
+                     std::size_t(i.float_coordinates ? 1 : 0)),
       s.not_held);
 }
 
@@ -66,8 +70,9 @@ void unpack_bytes(const py::handle& item, std::vector<T>& values) {
   std::memcpy(static_cast<void*>(values.data()), bytes.data(), bytes.size());
 }
 
-//! The inverse of pickle_state() (5 items from before not_held was pickled); the soup is
-//! validated. \throws InvalidSoupError on a state of another shape
+//! The inverse of pickle_state() (also of older states: 5 items from before not_held was pickled,
+//! 12 ReadInfo values from before the last three); the soup is validated.
+//! \throws InvalidSoupError on a state of another shape
 std::shared_ptr<PySoup> unpickle(const py::tuple& state) {
   if (state.size() != 5 && state.size() != 6)
     throw InvalidSoupError("Soup: bad pickle state");
@@ -77,7 +82,7 @@ std::shared_ptr<PySoup> unpickle(const py::tuple& state) {
   unpack_bytes(state[2], soup->soup.face_begin);
   soup->path = state[3].cast<std::string>();
   const auto i = state[4].cast<std::vector<std::size_t>>();
-  if (i.size() != 12)
+  if (i.size() != 12 && i.size() != 15)
     throw InvalidSoupError("Soup: bad pickle state");
   ReadInfo& info = soup->info;
   info.declared_vertices = i[0], info.declared_faces = i[1];
@@ -85,6 +90,10 @@ std::shared_ptr<PySoup> unpickle(const py::tuple& state) {
   info.dangling_edges = i[5], info.lone_points = i[6], info.strip_joins = i[7];
   info.unknown_records = i[8], info.color_map_indices = i[9], info.empty_records = i[10];
   info.trailing_bytes = i[11];
+  if (i.size() == 15) {
+    info.faces_without_corners = i[12], info.vertices_welded_by_position = i[13];
+    info.float_coordinates = i[14] != 0;
+  }
   if (state.size() == 6)
     soup->not_held = state[5].cast<std::vector<std::string>>();
   validate_soup(soup->soup);

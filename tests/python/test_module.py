@@ -14,6 +14,7 @@ import meshbridge
 import mesh_models
 
 MODELS = Path(os.environ.get("MESHBRIDGE_SOURCE_DIR", Path(__file__).parents[2])) / "resources" / "models"
+REALWORLD2 = MODELS.parents[1] / "tests" / "data" / "realworld2"
 
 
 def manifold_edges(faces):
@@ -422,6 +423,24 @@ def test_soup_and_result_pickle_exactly():
     assert again.report == result.report
     np.testing.assert_array_equal(again.vertex_origin, result.vertex_origin)
     np.testing.assert_array_equal(again.vertices, result.vertices)
+
+
+def test_a_pickled_soup_checks_and_repairs_as_the_file(tmp_path):
+    """Every reading count survives pickling (Dask sends soups between processes): face records
+    without corners (counted by check and repair), the position weld of a per-face-vertex file,
+    and float32 coordinates (repair's weld tolerance)."""
+    import pickle
+
+    path = tmp_path / "records.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf\nf 1 3 4\n")
+    for soup in (meshbridge.read(path), meshbridge.read(REALWORLD2 / "cura_weedo_x40.3mf")):
+        back = pickle.loads(pickle.dumps(soup))
+        assert back.read_info == soup.read_info
+        assert meshbridge.check(back) == meshbridge.check(soup)
+        assert meshbridge.repair(back).report == meshbridge.repair(soup).report
+    assert meshbridge.check(meshbridge.read(path))["read"]["faces_kept"] == 2
+    cura = meshbridge.read(REALWORLD2 / "cura_weedo_x40.3mf").read_info
+    assert cura["vertices_welded_by_position"] > 0
 
 
 def test_weld_closes_a_crack_at_the_distance_given():

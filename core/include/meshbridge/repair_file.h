@@ -3,8 +3,10 @@
 //! \file repair_file.h
 //! The one route from a mesh file to a repaired mesh file: read, repair, move STL copies apart,
 //! write atomically, and detect what a reader of the written file gets. `meshbridge repair`,
-//! `meshbridge batch` (run_file_job()), Python's `meshbridge.repair_file` and the Dask batch
-//! all take it, so one file gives the same output and counts on every route.
+//! `meshbridge batch` (run_file_job()), Python's `meshbridge.batch` (run_file_job() too) and
+//! the Dask batch all take it, so one file gives the same output and counts on every route.
+//! (Python's meshbridge.read/repair/write work on soups in memory; write() moves an STL's
+//! split copies apart with the same separate_copies_for_stl().)
 
 #include "meshbridge/io.h"
 #include "meshbridge/repair.h"

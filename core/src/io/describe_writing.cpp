@@ -127,7 +127,7 @@ const char* object_type_name(ObjectType type) {
 std::vector<std::string> describe_unwritten(const std::string& path,
                                             const MeshAttributes& attributes) {
   using detail::Format;
-  const Format format = detail::format_of(path);
+  const Format format = mesh_format(path);
   const std::string name = name_of(format);
   std::vector<std::string> lost;
   // OBJ writes the records it kept (CornerAttributes); the other formats hold none per corner.
@@ -263,7 +263,7 @@ WrittenOutput describe_written(const std::string& path, const Soup& soup,
                                const std::vector<Index>& face_origin,
                                const MeshAttributes& attributes, std::size_t vertices_welded) {
   WrittenOutput written;
-  const detail::Format format = detail::format_of(path);
+  const detail::Format format = mesh_format(path);
   written.left_out = describe_unwritten(path, attributes);
   if (vertices_welded > 0 && !attributes.vertex_colors.empty()) {
     written.left_out.push_back("colours of " + counted(vertices_welded, "welded vertex") +

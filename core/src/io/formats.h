@@ -48,9 +48,6 @@ namespace meshbridge::detail {
 
 //! The file formats, by extension (mesh_format()).
 using Format = MeshFormat;
-inline Format format_of(const std::string& path) {
-  return mesh_format(path);
-}
 //! For a file (its whole bytes) that the reader of `format` cannot read or finds no polygon in:
 //! what it looks like instead, as "; it begins with 'ply': a PLY file under another name?" (other
 //! formats' first words, a zip archive's magic bytes, a binary STL's size, NUL bytes in text),

@@ -44,7 +44,6 @@ MeshFormat mesh_format(const std::string& path) {
 namespace {
 
 using detail::Format;
-using detail::format_of;
 
 // Attributes belong to the input soup: every origin the mesh refers to must have its colour.
 void check_attributes(const std::string& path, const IndexedMesh& mesh,
@@ -111,12 +110,12 @@ void name_index_out_of_range(const detail::MappedFile& file, Format format, cons
 }  // namespace
 
 bool is_supported_mesh_file(const std::string& path) {
-  return format_of(path) != Format::unknown;
+  return mesh_format(path) != Format::unknown;
 }
 
 Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attributes) {
   const detail::MappedFile file(path);  // missing, directory, empty: ReadError
-  const Format format = format_of(path);
+  const Format format = mesh_format(path);
   if (format == Format::unknown)
     throw ReadError(path + ": unknown format (expected .obj, .off, .ply, .stl or .3mf)");
 
@@ -200,7 +199,7 @@ void write_bytes_atomically(const std::string& path, std::string_view bytes) {
 
 void write_mesh(const std::string& path, const IndexedMesh& mesh, const MeshAttributes* attributes,
                 const WriteOptions& options) {
-  const Format format = format_of(path);
+  const Format format = mesh_format(path);
   if (format == Format::unknown)
     throw WriteError(path + ": unknown format (expected .obj, .off, .ply, .stl or .3mf)");
   // A writer indexes positions by every corner: an index out of range would write (or crash on)

@@ -211,7 +211,7 @@ std::size_t weld_repeated_vertices(Soup& soup, MeshAttributes* attributes) {
     new_index[v] = v;
   }
   const bool colors = attributes != nullptr && !attributes->vertex_colors.empty();
-  const auto same_colour = [&](Index a, Index b) {
+  const auto same_color = [&](Index a, Index b) {
     if (!colors)
       return true;
     const bool has_a =
@@ -222,7 +222,7 @@ std::size_t weld_repeated_vertices(Soup& soup, MeshAttributes* attributes) {
   };
   // Each used vertex marked with its survivor: the first at its position.
   const std::unique_ptr<Record[]> scratch =
-      mark_first_at_position(soup, new_index, soup.num_corners(), same_colour);
+      mark_first_at_position(soup, new_index, soup.num_corners(), same_color);
   // The survivors (and unused vertices) numbered in order; a welded vertex takes its survivor's
   // number, which comes before it.
   std::size_t removed = 0;

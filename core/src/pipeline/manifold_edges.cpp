@@ -203,7 +203,7 @@ std::size_t resolve_crowding_pairs(const Soup& soup, const GroupedSides& grouped
           ++taken;
           if (how == Crowding::split_at_midpoint) {
             pairing.midpoint[p] = pairing.midpoint[mate[p]] = 1;
-            ++counts.pairs_split;
+            ++counts.edges_split_to_stay_manifold;
             continue;
           }
           (stitched[p] ? counts.unstitched : counts.pairs_cut) += 2;

@@ -12,7 +12,8 @@ struct ManifoldEdgeCounts {
   std::size_t implicitly_stitched = 0;  //!< sides of open pairs that the output glued anyway
   std::size_t unstitched = 0;           //!< sides whose stitch was undone
   std::size_t pairs_cut = 0;            //!< sides of pairs cut and glued again in their new fans
-  std::size_t pairs_split = 0;          //!< pairs split at their midpoint (one new vertex each)
+  std::size_t edges_split_to_stay_manifold =
+      0;  //!< pairs split at their midpoint (one new vertex each)
   std::size_t sides_paired_with_copies = 0;  //!< sides given a new mate by exchanges (4 each)
   std::size_t rounds = 0;  //!< rounds of exchanges or cuts (each changed at least one pair)
 };

@@ -4,6 +4,7 @@
 #include "geometry/newell_normal.h"
 #include "geometry/signed_volume.h"
 #include "pipeline/nesting.h"
+#include "pipeline/side_pairing.h"
 #include "pipeline/singular_conflicts.h"
 
 #include "union_find.h"
@@ -19,11 +20,6 @@ namespace {
 // Rounding-error scales are multiplied by this before a value is trusted over them: a few
 // thousand times the double precision epsilon, so far above any real accumulated error.
 constexpr double kRoundingMargin = 1e-12;
-
-// Two paired sides run the same way iff they start at the same vertex.
-bool same_way(const Soup& soup, Index c, Index m) {
-  return soup.corner_vertices[c] == soup.corner_vertices[m];
-}
 
 // The state of orient_components(), after CGAL's Polygon_soup_orienter: the paired faces'
 // components, their volumes, and the decision per component, built in named steps.

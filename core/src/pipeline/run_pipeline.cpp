@@ -71,7 +71,7 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
   counts.sides_stitched += crowded.implicitly_stitched;
   counts.sides_stitched -= crowded.unstitched;
   counts.sides_paired_with_copies = crowded.sides_paired_with_copies;
-  counts.edges_split_at_midpoint = crowded.pairs_split;
+  counts.edges_split_to_stay_manifold = crowded.edges_split_to_stay_manifold;
   // Cuts (glued again in their new fans) can leave a closed part of a component that was open:
   // orient again (fans do not depend on orientation).
   if (crowded.rounds > 0 && options.orient)

@@ -29,14 +29,14 @@ struct PipelineOptions {
 
 //! What the pipeline did, counted in sides (polygon sides) or faces.
 struct PipelineCounts {
-  std::size_t sides_cut = 0;                   //!< singular-edge contenders pairing left unpaired
-  std::size_t sides_cut_for_orientation = 0;   //!< pairs cut because orientation conflicts
-  std::size_t sides_stitched = 0;              //!< net: stitched, implicitly stitched, unstitched
-  std::size_t faces_flipped = 0;               //!< faces reversed
-  std::size_t sides_cut_to_stay_manifold = 0;  //!< always 0 (make_output_edges_manifold())
-  std::size_t sides_paired_with_copies = 0;    //!< re-paired so copies of a face glue, not cut
-  std::size_t edges_split_at_midpoint = 0;     //!< pairs given a midpoint vertex, not cut
-  std::size_t vertices_split = 0;              //!< vertex copies added
+  std::size_t sides_cut = 0;                     //!< singular-edge contenders pairing left unpaired
+  std::size_t sides_cut_for_orientation = 0;     //!< pairs cut because orientation conflicts
+  std::size_t sides_stitched = 0;                //!< net: stitched, implicitly stitched, unstitched
+  std::size_t faces_flipped = 0;                 //!< faces reversed
+  std::size_t sides_cut_to_stay_manifold = 0;    //!< always 0 (make_output_edges_manifold())
+  std::size_t sides_paired_with_copies = 0;      //!< re-paired so copies of a face glue, not cut
+  std::size_t edges_split_to_stay_manifold = 0;  //!< pairs given a midpoint vertex, not cut
+  std::size_t vertices_split = 0;                //!< vertex copies added
   std::size_t nonorientable_components = 0;
   std::size_t ambiguous_nested_shells = 0;  //!< closed shells wound like their container
   std::size_t open_sides = 0;               //!< sides left unpaired: the output's boundary edges

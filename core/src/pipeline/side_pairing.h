@@ -21,6 +21,12 @@ struct SidePairing {
   std::vector<char> midpoint;
 };
 
+//! Two paired sides c and m run the same way (their faces disagree in orientation) iff they
+//! start at the same vertex.
+inline bool same_way(const Soup& soup, Index c, Index m) {
+  return soup.corner_vertices[c] == soup.corner_vertices[m];
+}
+
 //! Output vertices: one per fan of every input vertex.
 struct VertexSplit {
   std::vector<Index> corner_vertex;  //!< #C: output vertex of each corner

@@ -3,6 +3,7 @@
 
 #include "pipeline/angular_order.h"
 #include "pipeline/grouping.h"
+#include "pipeline/side_pairing.h"
 
 #include <algorithm>
 #include <tuple>
@@ -20,10 +21,6 @@ struct Link {
   Index edge;  // its edge in the bridges
   Index side;  // one of its sides (the smaller)
 };
-
-bool same_way(const Soup& soup, Index c, Index m) {
-  return soup.corner_vertices[c] == soup.corner_vertices[m];
-}
 
 void cut(std::vector<Index>& mate, Index c) {
   mate[mate[c]] = kNoIndex;
