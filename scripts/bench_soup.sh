@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Per-face-vertex soups against the indexed file (DESIGN 8a, soups; issue "No new defects"):
-# `meshbridge check` and `meshbridge repair` on the 1M checkerboard written as an indexed OBJ,
-# as a per-face-vertex OBJ in file order and with its faces shuffled, each its own process, side
-# by side in one run: ROUNDS rounds (default 5), the order of the six runs shuffled in each; the
-# best wall and the best CPU time (user + sys) of each, and their ratios to the indexed file's.
+# `meshbridge check` and `meshbridge repair` on the 1M checkerboard written as an indexed OBJ
+# (in file order and with its faces shuffled) and as a per-face-vertex OBJ (the same two orders),
+# each its own process, side by side in one run: ROUNDS rounds (default 5), the order of the eight
+# runs shuffled in each; the best wall and the best CPU time (user + sys) of each, their ratios
+# to the indexed file's, and each soup's ratio to the indexed file in the same face order (a
+# shuffled face order costs every stage after reading, indexed or not).
 #
 # Usage: scripts/bench_soup.sh BUILD_DIR   (BUILD_DIR has cli/meshbridge and
 #        bench/meshbridge-io-bench)
@@ -21,10 +23,15 @@ for tool in "$meshbridge" "$iobench" /usr/bin/time; do
 done
 mkdir -p "$data"
 [ -f "$data/checkerboard_1m_soup_shuffled.obj" ] || "$iobench" make-soup "$data" >&2
+if [ ! -f "$data/checkerboard_1m_shuffled.obj" ]; then  # the indexed file, faces shuffled
+  { grep -v '^f ' "$data/checkerboard_1m.obj"
+    grep '^f ' "$data/checkerboard_1m.obj" | shuf --random-source=<(yes 1); } \
+    >"$data/checkerboard_1m_shuffled.obj"
+fi
 tmp="$(mktemp -d /tmp/meshbridge_bench_soup_run.XXXXXX)"
 trap 'rm -rf "$tmp"' EXIT
 
-files="checkerboard_1m checkerboard_1m_soup checkerboard_1m_soup_shuffled"
+files="checkerboard_1m checkerboard_1m_shuffled checkerboard_1m_soup checkerboard_1m_soup_shuffled"
 for round in $(seq "$rounds"); do
   for job in $(for f in $files; do echo "check:$f"; echo "repair:$f"; done | shuf); do
     what="${job%%:*}"
@@ -41,8 +48,8 @@ for round in $(seq "$rounds"); do
       'BEGIN { print w, f, t, u + s }' >>"$tmp/raw"
   done
 done
-echo "| command | file | best wall s | best CPU s | wall / indexed | CPU / indexed |"
-echo "|---|---|---|---|---|---|"
+echo "| command | file | best wall s | best CPU s | wall / indexed | CPU / indexed | wall (CPU) / indexed in the same order |"
+echo "|---|---|---|---|---|---|---|"
 for what in check repair; do
   awk -v what="$what" -v files="$files" '
     $1 == what {
@@ -51,9 +58,12 @@ for what in check repair; do
     }
     END {
       n = split(files, f, " ")
-      for (i = 1; i <= n; ++i)
-        printf "| %s | %s | %.2f | %.2f | %.2f | %.2f |\n", what, f[i], wall[f[i]], cpu[f[i]],
-               wall[f[i]] / wall[f[1]], cpu[f[i]] / cpu[f[1]]
+      for (i = 1; i <= n; ++i) {
+        same = f[i] ~ /shuffled/ ? f[2] : f[1]  # the indexed file in the same face order
+        printf "| %s | %s | %.2f | %.2f | %.2f | %.2f | %.2f (%.2f) |\n", what, f[i], wall[f[i]],
+               cpu[f[i]], wall[f[i]] / wall[f[1]], cpu[f[i]] / cpu[f[1]],
+               wall[f[i]] / wall[same], cpu[f[i]] / cpu[same]
+      }
     }' "$tmp/raw"
 done
 echo "($rounds rounds, runs shuffled in each; $(nproc) CPUs)"
