@@ -41,6 +41,7 @@ int run_check(const CheckArguments& arguments) {
   DefectReport report;
   CloseGapsReport gaps;
   OrientationPreview orientation;  // what repair would reverse, on a watertight file
+  RepairPreview preview;           // what repair with the default options would change
   std::string weld_hint;           // what a wider weld would close, when boundary edges are left
   std::unique_ptr<SelfIntersectionReport> crossings;  // with --self-intersections
   {
@@ -52,8 +53,13 @@ int run_check(const CheckArguments& arguments) {
     progress.stage(Stage::detect, 0);
     report = detect_defects(soup, &orientation, arguments.nested);
     count_records_without_corners(info, report);  // face records with no corner: set aside too
-    // What repair's gap closing would do (the report is of the file as read).
-    gaps = preview_close_gaps(soup, weld, &report);
+    // What repair would do (the report is of the file as read): on a watertight file from
+    // detection, on any other by repairing in memory (gap closing as repair keeps or refuses it).
+    RepairOptions repair_options;
+    repair_options.close_gaps = weld;
+    repair_options.nested_shells = arguments.nested;
+    preview = preview_repair(soup, report, orientation, repair_options);
+    gaps = preview.ran_repair ? preview.report.gaps : preview_close_gaps(soup, weld, &report);
     if (!arguments.json)
       weld_hint = wider_weld_hint(soup, weld, gaps, report);
     if (arguments.self_intersections)
@@ -64,7 +70,8 @@ int run_check(const CheckArguments& arguments) {
   if (arguments.json) {
     ReportJsonOptions json;
     json.elements = arguments.elements;
-    std::cout << check_report_json(path, report, &info, json, &gaps, crossings.get(), &orientation)
+    std::cout << check_report_json(path, report, &info, json, &gaps, crossings.get(), &orientation,
+                                   &preview)
               << "\n";
   } else {
     std::cout << path << "\n"
@@ -87,6 +94,7 @@ int run_check(const CheckArguments& arguments) {
                 << counted(orientation.faces_flipped, "face")
                 << " (closed shells face outward, cavities toward the void)\n";
     }
+    std::cout << to_text(preview);
     if (orientation.ambiguous_nested_shells != 0) {
       std::cout << "nested shells: " << orientation.ambiguous_nested_shells
                 << " wound like the shell around them (an insert, or a cavity wound the wrong "
@@ -95,13 +103,13 @@ int run_check(const CheckArguments& arguments) {
     if (report.has_defects() || (crossings && crossings->has_self_intersections()))
       std::cout << "(`meshbridge explain` tells what these terms mean)\n";
   }
-  // Every record not kept as a simple polygon is in the soup as a degenerate face, so
-  // has_defects() covers it; dangling edges and lone points are not surface defects (warned).
-  // A watertight file that repair would still turn (inside out, a cavity wound outward) is no
-  // clean file: check exits 0 exactly when repair would change nothing on it. Self-intersections,
-  // when looked for, are defects too.
+  // check exits 0 exactly when repair (default options, check's --weld and --nested-shells)
+  // would change nothing (DESIGN 8a): an open sheet it leaves as it is passes, a watertight file
+  // it would turn inside out does not. Self-intersections, when looked for, are defects too.
+  // Records the reader did not keep as one simple polygon (split, set aside, dangling edges,
+  // trailing bytes...) are changes too: the written file holds the surface only.
   const bool crossing = crossings && crossings->has_self_intersections();
-  return report.has_defects() || crossing || orientation.faces_flipped > 0 ? kDefectsFound : kOk;
+  return preview.changes || info.changed_anything() || crossing ? kDefectsFound : kOk;
 }
 
 //! run_check; with --json, an error is also a JSON object on stdout (for scripts that parse it),
@@ -126,8 +134,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
   auto arguments = std::make_shared<CheckArguments>();
   CLI::App* command = app.add_subcommand(
       "check",
-      "Report singular edges and vertices, boundaries and other defects of FILE.\n"
-      "Exit 0 = no defect, 1 = defects found, 2 = error.");
+      "Report singular edges and vertices, boundaries and other defects of FILE, and what\n"
+      "repair would change. Exit 0 = repair would change nothing, 1 = it would (or, with\n"
+      "--self-intersections, faces cross), 2 = error.");
   command->add_option("FILE", arguments->file, "mesh to check (.obj, .off, .ply, .stl, .3mf)")
       ->required();
   command->add_flag(

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/preview_repair.h"
 
+#include "meshbridge/counted.h"
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/validate.h"
 
@@ -8,6 +9,9 @@
 #include "pipeline/orientation.h"
 #include "working_soup.h"
 
+#include <algorithm>
+#include <iterator>
+#include <sstream>
 #include <vector>
 
 namespace meshbridge {
@@ -32,6 +36,115 @@ DefectReport detect_defects(const Soup& soup, OrientationPreview* orientation,
   for (char f : pairing.flipped)
     orientation->faces_flipped += f;
   return report;
+}
+
+bool repair_changes_input(const RepairReport& r) {
+  const std::size_t changes[] = {r.faces_set_aside,
+                                 r.faces_split,
+                                 r.slits_set_aside,
+                                 r.duplicate_faces_removed,
+                                 r.degenerate_faces_removed,
+                                 r.zero_area_faces_removed,
+                                 r.isolated_vertices_removed,
+                                 r.vertices_split,
+                                 r.sides_cut,
+                                 r.sides_cut_for_orientation,
+                                 r.sides_cut_to_stay_manifold,
+                                 r.sides_paired_with_copies,
+                                 r.edges_split_to_stay_manifold,
+                                 r.faces_flipped,
+                                 r.holes.faces_added};
+  return r.gaps.changed() || r.faces_out != r.faces_in || r.vertices_out != r.vertices_in ||
+         std::any_of(std::begin(changes), std::end(changes), [](std::size_t n) { return n != 0; });
+}
+
+RepairPreview preview_repair(const Soup& soup, const DefectReport& before,
+                             const OrientationPreview& orientation, const RepairOptions& options) {
+  RepairPreview preview;
+  const bool removes = (options.remove_duplicate_faces && !before.duplicate_faces.empty()) ||
+                       (options.remove_zero_area_faces && !before.zero_area_faces.empty()) ||
+                       (options.remove_isolated_vertices && !before.isolated_vertices.empty());
+  if (orientation.computed && options.orient && !removes && options.fill_holes.max_edges == 0) {
+    // Watertight, simple polygons only: pairing takes the two sides of every edge and changes
+    // nothing, as repair()'s own shortcut (report_if_unchanged() in repair.cpp) finds.
+    RepairReport& r = preview.report;
+    r.faces_in = r.faces_out = soup.num_faces();
+    r.vertices_in = r.vertices_out = soup.num_vertices();
+    r.faces_flipped = orientation.faces_flipped;
+    r.ambiguous_nested_shells = orientation.ambiguous_nested_shells;
+    r.components_before = r.components_after = before.num_components;
+    r.before = r.after = before;
+  } else {
+    RepairOptions quiet = options;
+    quiet.progress = nullptr;
+    quiet.detect_before_after = false;  // the input's detection is `before`; no result's
+    preview.report = repair(soup, quiet).report;
+    preview.report.before = before;
+    preview.report.boundary_edges_before = before.boundary_edges.size();
+    preview.report.components_before = before.num_components;
+    preview.ran_repair = true;
+  }
+  preview.changes = repair_changes_input(preview.report);
+  return preview;
+}
+
+namespace {
+
+// "13 vertex copies" and the like, each only when its count is not 0.
+void add(std::vector<std::string>& parts, std::size_t n, const std::string& what) {
+  if (n != 0)
+    parts.push_back(what);
+}
+
+}  // namespace
+
+std::string to_text(const RepairPreview& preview) {
+  const RepairReport& r = preview.report;
+  std::vector<std::string> parts;
+  const CloseGapsReport& g = r.gaps;
+  add(parts, g.vertices_welded, "weld " + counted(g.vertices_welded, "vertex"));
+  add(parts, g.t_junctions_closed, "close " + counted(g.t_junctions_closed, "T-junction"));
+  add(parts, r.faces_set_aside,
+      "set aside " + counted(r.faces_set_aside, "face") + " with < 3 distinct corners");
+  add(parts, r.faces_split,
+      "split " + counted(r.faces_split, "pinched polygon") + " into " +
+          std::to_string(r.faces_split + r.faces_added_by_split) + " pieces");
+  add(parts, r.slits_set_aside, "set aside " + counted(r.slits_set_aside, "slit"));
+  add(parts, r.duplicate_faces_removed,
+      "remove " + counted(r.duplicate_faces_removed, "duplicate face"));
+  add(parts, r.degenerate_faces_removed,
+      "remove " + counted(r.degenerate_faces_removed, "degenerate face"));
+  add(parts, r.zero_area_faces_removed,
+      "remove " + counted(r.zero_area_faces_removed, "zero-area face"));
+  add(parts, r.isolated_vertices_removed,
+      "remove " + counted(r.isolated_vertices_removed, "isolated vertex"));
+  add(parts, r.vertices_split,
+      "make " + counted(r.vertices_split, "vertex copy") + " (split fans)");
+  const std::size_t cut = r.sides_cut + r.sides_cut_for_orientation + r.sides_cut_to_stay_manifold;
+  add(parts, cut, "cut " + counted(cut, "side") + " open");
+  add(parts, r.edges_split_to_stay_manifold,
+      "split " + counted(r.edges_split_to_stay_manifold, "edge") + " at the midpoint");
+  add(parts, r.faces_flipped, "reverse " + counted(r.faces_flipped, "face"));
+  add(parts, r.holes.faces_added,
+      "fill " + counted(r.holes.holes_filled, "hole") + " with " +
+          counted(r.holes.faces_added, "triangle"));
+  std::ostringstream out;
+  if (parts.empty()) {
+    out << "repair would change nothing";
+  } else {
+    out << "repair would:";
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      out << (i == 0 ? " " : ", ") << parts[i];
+  }
+  if (r.ambiguous_nested_shells != 0) {
+    out << (parts.empty() ? " (" : "; ") << "it keeps "
+        << counted(r.ambiguous_nested_shells, "ambiguous nested shell") << " as written"
+        << (parts.empty() ? ")" : "");
+  }
+  if (parts.empty() && r.boundary_edges_before != 0)
+    out << " (" << counted(r.boundary_edges_before, "boundary edge") << " stay open)";
+  out << "\n";
+  return out.str();
 }
 
 }  // namespace meshbridge

@@ -261,7 +261,7 @@ ReportTree check_report_tree(const std::string& file, const DefectReport& report
                              const ReadInfo* read, const ReportJsonOptions& options,
                              const CloseGapsReport* gaps,
                              const SelfIntersectionReport* self_intersections,
-                             const OrientationPreview* orientation) {
+                             const OrientationPreview* orientation, const RepairPreview* preview) {
   Json out = header("check", file);
   if (read)
     out["read"] = read_json(*read);
@@ -272,6 +272,18 @@ ReportTree check_report_tree(const std::string& file, const DefectReport& report
     out["orientation"] = Json{{"faces_flipped", orientation->faces_flipped},
                               {"ambiguous_nested_shells", orientation->ambiguous_nested_shells}};
   }
+  if (preview != nullptr) {
+    Json would = Json::object();
+    would["changes"] = preview->changes;
+    would["ran_repair"] = preview->ran_repair;
+    add_repair(would, preview->report, false, nullptr);
+    // Not what repair would change: the check's own `gaps` and counts (the input's), and the
+    // result's detection, which preview_repair() does not make.
+    for (const char* key : {"gaps", "before", "after", "components_before", "components_after",
+                            "boundary_edges_before", "boundary_edges_after"})
+      would.erase(key);
+    out["repair"] = std::move(would);
+  }
   if (self_intersections)
     out["self_intersections"] = self_intersections_json(*self_intersections, options.elements);
   return tree_of(std::move(out));
@@ -281,8 +293,9 @@ std::string check_report_json(const std::string& file, const DefectReport& repor
                               const ReadInfo* read, const ReportJsonOptions& options,
                               const CloseGapsReport* gaps,
                               const SelfIntersectionReport* self_intersections,
-                              const OrientationPreview* orientation) {
-  return check_report_tree(file, report, read, options, gaps, self_intersections, orientation)
+                              const OrientationPreview* orientation, const RepairPreview* preview) {
+  return check_report_tree(file, report, read, options, gaps, self_intersections, orientation,
+                           preview)
       .text(options.indent);
 }
 

@@ -96,9 +96,21 @@ case "$case_name" in
 check_exit_codes)
   expect_exit 0 "$mb" check "$models/icosphere.obj"
   expect_in "$work/out" "watertight yes"
-  for m in twocubes hourglass bowtie book_of_three t_junction_rib plate_box_rib prisms24 moebius cube_with_hole; do
+  # check exits 1 exactly when repair would change the mesh (DESIGN 8a: check predicts repair).
+  for m in twocubes hourglass bowtie book_of_three t_junction_rib plate_box_rib prisms24 moebius; do
     expect_exit 1 "$mb" check "$models/$m.obj"
+    grep -q "^repair would: " "$work/out" || fail "$m: no 'repair would:' line"
+    "$mb" repair "$models/$m.obj" "$work/predicted.obj" >"$work/repaired.txt" || fail "$m: repair"
+    copies=$(sed -n 's/^repair would: .*make \([0-9]*\) vertex cop.*/\1/p' "$work/out")
+    expect_in "$work/repaired.txt" "(${copies:-0} cop"
   done
+  # An open box with nothing to close: defects listed, but repair would leave it as it is.
+  expect_exit 0 "$mb" check "$models/cube_with_hole.obj"
+  expect_in "$work/out" "boundary edges: 4"
+  expect_in "$work/out" "repair would change nothing (4 boundary edges stay open)"
+  "$mb" repair "$models/cube_with_hole.obj" "$work/hole.obj" >/dev/null || fail "repair of cube_with_hole"
+  cmp -s <(grep -E '^(v|f) ' "$models/cube_with_hole.obj") <(grep -E '^(v|f) ' "$work/hole.obj") ||
+    fail "repair changed cube_with_hole, which check said it would not"
   expect_exit 1 "$mb" check "$models/twocubes.obj"
   expect_in "$work/out" "singular edges: 1"
   expect_exit 2 "$mb" check "$work/missing.obj"
@@ -198,10 +210,10 @@ check_json)
   [ "$(json_field "$work/out" read.empty_records)" = 2 ] || fail "read.empty_records"
   # Faults among what the reader reads past: check names them as repair does.
   printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/9 2/1 3/1\n' >"$work/bad_vt.obj"
-  expect_exit 1 "$mb" check "$work/bad_vt.obj"
+  expect_exit 0 "$mb" check "$work/bad_vt.obj"  # one triangle: repair would change nothing
   expect_in "$work/err" "meshbridge: warning: $work/bad_vt.obj: OBJ texture coordinate (vt) or normal (vn) indices the file has no record for, on 3 corners"
   printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0 255 9\n' >"$work/junk.off"
-  expect_exit 1 "$mb" check "$work/junk.off"
+  expect_exit 0 "$mb" check "$work/junk.off"  # one triangle: repair would change nothing
   expect_in "$work/err" "OFF values after a face's corners that are no colour (not 1, 3 or 4 numbers), on 1 face line"
   # Words that are no number after an OFF vertex or face, and colours clamped into range: warned
   # by check, and by repair, which writes the clamped colour.
@@ -212,7 +224,7 @@ check_json)
 0 1 0
 3 0 1 2 hello
 ' >"$work/words.off"
-  expect_exit 1 "$mb" check "$work/words.off"
+  expect_exit 0 "$mb" check "$work/words.off"  # one triangle: repair would change nothing
   expect_in "$work/err" "meshbridge: warning: $work/words.off: OFF words after a vertex's numbers that are no number (read past), on 1 vertex line"
   expect_in "$work/err" "OFF words after a face's numbers that are no number (read past), on 1 face line"
   expect_in "$work/err" "OFF vertex colour values outside 0-1 (or 0-255) or not finite, clamped to the range, on 1 vertex"
@@ -1047,7 +1059,8 @@ messages)
   # A crack of 2e-6 in a unit tetrahedron (each face written with its own corners) is wider than
   # the automatic weld tolerance: check says what a wider one would weld, and it does.
   printf 'v 0 0 0\nv 0 1 0\nv 1 0 0\nv 0.000002 0 0\nv 1.000002 0 0\nv 0 0 1\nv 0 0.000002 0\nv 0 0 1.000002\nv 0 1.000002 0\nv 1 0.000002 0\nv 0 1 0.000002\nv 0 0.000002 1\nf 1 2 3\nf 4 5 6\nf 7 8 9\nf 10 11 12\n' >"$work/crack.obj"
-  expect_exit 1 "$mb" check "$work/crack.obj"
+  expect_exit 0 "$mb" check "$work/crack.obj"  # repair (automatic tolerance) would change nothing
+  expect_in "$work/out" "repair would change nothing (12 boundary edges stay open)"
   expect_in "$work/out" "hint: 12 boundary edges; cracks wider than the automatic tolerance stay open: --weld 5e-05 would weld 8 vertices (largest move 2e-06)"
   expect_exit 0 "$mb" repair "$work/crack.obj" "$work/crack_out.obj" --weld 5e-05
   expect_in "$work/out" "after: singular edges 0, singular vertices 0, non-orientable components 0, watertight yes"
@@ -1388,7 +1401,7 @@ interop)
   # A PLY header line that is neither a keyword nor a comment (Blender 2.47) is read past with a
   # warning naming it, as MeshLab and Blender read it.
   printf 'ply\nformat ascii 1.0\nCreated by Blender3D 247 - www.blender.org, source file: ""\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar uint vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$work/blender.ply"
-  expect_exit 1 "$mb" check "$work/blender.ply"
+  expect_exit 0 "$mb" check "$work/blender.ply"  # one triangle: repair would change nothing
   expect_in "$work/out" "vertices 3, faces 1"
   expect_in "$work/err" "meshbridge: warning: $work/blender.ply: PLY header lines that are neither keywords nor comments, read past (the first, line 3: 'Created by Blender3D 247 - www.blender.org, source file: \"\"'), on 1 line"
   expect_exit 0 "$mb" repair "$work/blender.ply" "$work/blender_out.ply"

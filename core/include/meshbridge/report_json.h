@@ -42,12 +42,16 @@ struct ReportJsonOptions {
 //! [,"elements":{...}]}`. `file` is written as given. `read` (the read accounting of ReadInfo)
 //! is left out when `read` is null; `gaps` (what repair's gap closing would do, the keys of a
 //! repair report's `gaps`) when `gaps` is null; `self_intersections` (the counts of
-//! find_self_intersections(), its lists under its own `elements` on request) when that is null.
+//! find_self_intersections(), its lists under its own `elements` on request) when that is null;
+//! `orientation` (a watertight file's OrientationPreview) when it is null or not computed;
+//! `repair` (what repair would do: `changes`, `ran_repair`, the counts of a repair report
+//! without `gaps` and `before`, and `after`) when `preview` is null.
 std::string check_report_json(const std::string& file, const DefectReport& report,
                               const ReadInfo* read = nullptr, const ReportJsonOptions& options = {},
                               const CloseGapsReport* gaps = nullptr,
                               const SelfIntersectionReport* self_intersections = nullptr,
-                              const OrientationPreview* orientation = nullptr);
+                              const OrientationPreview* orientation = nullptr,
+                              const RepairPreview* preview = nullptr);
 
 //! `{"schema_version":1,"kind":"check","file":...,"status":"failed","reason":...}`: what
 //! `check --json` prints instead of the report when FILE cannot be checked (`reason`: the error

@@ -58,7 +58,8 @@ ReportTree check_report_tree(const std::string& file, const DefectReport& report
                              const ReadInfo* read = nullptr, const ReportJsonOptions& options = {},
                              const CloseGapsReport* gaps = nullptr,
                              const SelfIntersectionReport* self_intersections = nullptr,
-                             const OrientationPreview* orientation = nullptr);
+                             const OrientationPreview* orientation = nullptr,
+                             const RepairPreview* preview = nullptr);
 
 //! The tree of repair_report_json() (same arguments, same preconditions; `options.indent` unused).
 ReportTree repair_report_tree(const std::string& file, const std::string& output,
