@@ -94,7 +94,8 @@ int main(int argc, char** argv) {
   using namespace meshbridge::cli;
   CLI::App app(
       "Check, repair and picture non-manifold polygon meshes (OBJ, OFF, PLY, STL, 3MF).\n"
-      "Exit codes: 0 = done and no defect, 1 = defects found (check, snapshot), 2 = error.\n"
+      "Exit codes: 0 = done (check: repair would change nothing), 1 = check: repair would change\n"
+      "the mesh, snapshot: defects drawn, 2 = error.\n"
       "`meshbridge COMMAND --help` lists a command's options; `meshbridge explain` tells what\n"
       "the words in the reports mean.",
       "meshbridge");

@@ -64,7 +64,7 @@ run() {
   local status=0
   sync  # the previous run's written file is flushed outside this run's timing
   /usr/bin/time -o "$tmp/time" -f "%e %U %S %M" "$@" >/dev/null 2>"$tmp/err" || status=$?
-  # Exit 1 of `meshbridge check` means "defects found", a successful run.
+  # Exit 1 of `meshbridge check` means "repair would change it", a successful run.
   if [ "$status" -le 1 ] && [ -s "$tmp/time" ]; then
     read -r wall user sys rss < <(tail -n 1 "$tmp/time")
     echo "$name $wall $(awk -v u="$user" -v s="$sys" 'BEGIN { print u + s }') $rss" >>"$tmp/raw"

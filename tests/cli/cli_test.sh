@@ -1448,7 +1448,7 @@ readme_quick_start)
     (cd "$work/user" && eval "$command") >"$work/out" 2>"$work/err"
     code=$?
     case "$command" in
-    *check*) [ "$code" = 1 ] || fail "'$command' exited $code, expected 1 (defects found)" ;;
+    *check*) [ "$code" = 1 ] || fail "'$command' exited $code, expected 1 (repair would change it)" ;;
     *) [ "$code" = 0 ] || fail "'$command' exited $code: $(cat "$work/err")" ;;
     esac
   done <"$work/commands"
