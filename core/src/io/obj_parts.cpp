@@ -138,7 +138,9 @@ RecordCounts estimate_records(const char* first, const char* last) {
 }
 
 bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
-  const std::int64_t vertices_before = static_cast<std::int64_t>(soup.num_vertices());
+  // The vertices read before the part (not soup.num_vertices(): a welding read keeps them out of
+  // the soup, see PositionTable).
+  const std::int64_t vertices_before = static_cast<std::int64_t>(info.declared_vertices);
   if (vertices_before + part.relative.lowest < 0)
     return false;
   const Index corner_base = static_cast<Index>(soup.num_corners());
