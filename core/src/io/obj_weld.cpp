@@ -12,11 +12,19 @@ namespace meshbridge::detail {
 namespace {
 
 constexpr std::size_t kFirstSlots = std::size_t(1) << 12;
+constexpr std::size_t kMostReserved = std::size_t(1) << 20;  // 32 MB
 
 }  // namespace
 
 void PositionTable::reserve(std::size_t vertices) {
   reserve_huge(ids_, vertices);
+  // Slots for a closed surface's positions (about one per 6 corners) at the start: a table that
+  // grows writes all its slots again each time.
+  std::size_t slots = kFirstSlots;
+  while (slots < vertices / 8 && slots < kMostReserved)
+    slots *= 2;
+  if (slots > slots_.size())
+    rehash(slots);
 }
 
 Index PositionTable::insert(const Point& p, std::uint64_t hash) {
@@ -39,12 +47,13 @@ void PositionTable::flush() {
   for (std::size_t k = 0; k < pending_count_; ++k)
     ids_.push_back(insert(pending_[k].p, pending_[k].hash));
   pending_count_ = 0;
-  if (2 * (positions_.size() + kBatch) > slots_.size())
-    grow();  // room for the next batch, whose slots are prefetched from this table
+  if (4 * (positions_.size() + kBatch) > 3 * slots_.size())
+    rehash(2 *
+           slots_.size());  // room for the next batch, whose slots are prefetched from this table
 }
 
-void PositionTable::grow() {
-  std::vector<Slot> slots(std::max(kFirstSlots, 2 * slots_.size()), Slot{{0, 0, 0}, 0, 0});
+void PositionTable::rehash(std::size_t size) {
+  std::vector<Slot> slots(size, Slot{{0, 0, 0}, 0, 0});
   const std::size_t mask = slots.size() - 1;
   for (std::size_t id = 0; id < positions_.size(); ++id) {
     const Point& p = positions_[id];
@@ -63,8 +72,8 @@ void PositionTable::append(PositionTable& other) {
   other.flush();
   std::vector<Index> id(other.positions_.size());
   for (std::size_t k = 0; k < other.positions_.size(); ++k) {
-    if (2 * (positions_.size() + 1) > slots_.size())
-      grow();
+    if (4 * (positions_.size() + 1) > 3 * slots_.size())
+      rehash(2 * slots_.size());
     id[k] = insert(other.positions_[k], position_hash(other.positions_[k]));
   }
   ids_.reserve(ids_.size() + other.ids_.size());

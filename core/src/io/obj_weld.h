@@ -40,7 +40,7 @@ class PositionTable {
   //! Adds the next vertex, at `p` (takes(p)).
   void add(const Point& p) {
     if (slots_.empty())
-      grow();
+      rehash(kBatch * 256);
     const std::uint64_t hash = position_hash(p);
     __builtin_prefetch(&slots_[hash & (slots_.size() - 1)]);
     pending_[pending_count_] = {p, hash};
@@ -76,7 +76,8 @@ class PositionTable {
   Index insert(const Point& p, std::uint64_t hash);
   //! Inserts the pending vertices.
   void flush();
-  void grow();
+  //! Makes the table `size` slots (a power of 2) large.
+  void rehash(std::size_t size);
 
   struct alignas(32) Slot {
     double xyz[3];
@@ -91,7 +92,7 @@ class PositionTable {
 
   std::vector<Point> positions_;  // the distinct positions, in order of first appearance
   std::vector<Index> ids_;        // each vertex's position
-  std::vector<Slot> slots_;       // open addressing, at most half full
+  std::vector<Slot> slots_;       // open addressing, at most 3/4 full
   Pending pending_[kBatch];
   std::size_t pending_count_ = 0;
 };
