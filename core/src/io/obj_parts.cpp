@@ -182,10 +182,17 @@ bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attr
   }
   soup.positions.insert(soup.positions.end(), part.soup.positions.begin(),
                         part.soup.positions.end());
-  soup.corner_vertices.insert(soup.corner_vertices.end(), part.soup.corner_vertices.begin(),
-                              part.soup.corner_vertices.end());
-  for (std::size_t f = 1; f < part.soup.face_begin.size(); ++f)
-    soup.face_begin.push_back(corner_base + part.soup.face_begin[f]);
+  if (soup.num_faces() == 0 && soup.num_corners() == 0) {
+    // No face before the part (a file of all its v records first, in parts of about one MB):
+    // its arrays are taken as they are, not copied.
+    soup.corner_vertices = std::move(part.soup.corner_vertices);
+    soup.face_begin = std::move(part.soup.face_begin);
+  } else {
+    soup.corner_vertices.insert(soup.corner_vertices.end(), part.soup.corner_vertices.begin(),
+                                part.soup.corner_vertices.end());
+    for (std::size_t f = 1; f < part.soup.face_begin.size(); ++f)
+      soup.face_begin.push_back(corner_base + part.soup.face_begin[f]);
+  }
   info.declared_vertices += part.info.declared_vertices;
   info.declared_faces += part.info.declared_faces;
   info.faces_without_corners += part.info.faces_without_corners;
