@@ -24,10 +24,12 @@ namespace meshbridge::detail {
 //! holds its position, so that a probe reads one cache line.
 class PositionTable {
  public:
-  //! Whether the file looks written per face vertex (about one `v` record per face corner), so
-  //! that welding while reading pays.
+  //! Whether the file looks written per face vertex (about one `v` record per face corner: from
+  //! half as many to twice as many), so that welding while reading pays. An indexed mesh has far
+  //! fewer (a closed triangle mesh about one per 6 corners), a point cloud far more.
   static bool pays_for(const RecordCounts& counts) {
-    return counts.vertices >= 3 && 2 * counts.vertices >= counts.corners;
+    return counts.vertices >= 3 && 2 * counts.vertices >= counts.corners &&
+           counts.vertices <= 2 * counts.corners;
   }
 
   void reserve(std::size_t vertices);
