@@ -175,7 +175,8 @@ Soup read_soup(const std::string& path, ReadInfo* info, MeshAttributes* attribut
         looks_like);
   }
   counts.float_coordinates = format == Format::stl || format == Format::threemf;
-  if (format != Format::stl)  // STL corners are welded by position already
+  // STL corners are welded by position already, and an OBJ soup may be welded while read.
+  if (format != Format::stl && counts.vertices_welded_by_position == 0)
     counts.vertices_welded_by_position = detail::weld_repeated_vertices(soup, attributes);
   try {
     detail::account_faces(soup, counts);  // validates the soup on the way

@@ -138,7 +138,9 @@ RecordCounts estimate_records(const char* first, const char* last) {
 }
 
 bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attributes) {
-  const std::int64_t vertices_before = static_cast<std::int64_t>(soup.num_vertices());
+  // The vertices read before the part (not soup.num_vertices(): a welding read keeps them out of
+  // the soup, see PositionTable).
+  const std::int64_t vertices_before = static_cast<std::int64_t>(info.declared_vertices);
   if (vertices_before + part.relative.lowest < 0)
     return false;
   const Index corner_base = static_cast<Index>(soup.num_corners());
@@ -180,10 +182,17 @@ bool append_part(ObjPart& part, Soup& soup, ReadInfo& info, MeshAttributes* attr
   }
   soup.positions.insert(soup.positions.end(), part.soup.positions.begin(),
                         part.soup.positions.end());
-  soup.corner_vertices.insert(soup.corner_vertices.end(), part.soup.corner_vertices.begin(),
-                              part.soup.corner_vertices.end());
-  for (std::size_t f = 1; f < part.soup.face_begin.size(); ++f)
-    soup.face_begin.push_back(corner_base + part.soup.face_begin[f]);
+  if (soup.num_faces() == 0 && soup.num_corners() == 0) {
+    // No face before the part (a file of all its v records first, in parts of about one MB):
+    // its arrays are taken as they are, not copied.
+    soup.corner_vertices = std::move(part.soup.corner_vertices);
+    soup.face_begin = std::move(part.soup.face_begin);
+  } else {
+    soup.corner_vertices.insert(soup.corner_vertices.end(), part.soup.corner_vertices.begin(),
+                                part.soup.corner_vertices.end());
+    for (std::size_t f = 1; f < part.soup.face_begin.size(); ++f)
+      soup.face_begin.push_back(corner_base + part.soup.face_begin[f]);
+  }
   info.declared_vertices += part.info.declared_vertices;
   info.declared_faces += part.info.declared_faces;
   info.faces_without_corners += part.info.faces_without_corners;

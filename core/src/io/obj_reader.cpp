@@ -58,7 +58,7 @@ void ObjReader::read() {
     }
     in_.next_line();  // anything else (mtllib, s, curves...): skipped
   }
-  info_.declared_vertices = soup_.num_vertices();
+  info_.declared_vertices = vertices();
   if (attributes_ != nullptr) {
     attributes_->vertex_color_channels = alpha_given_ ? kRgbaChannels : kRgbChannels;
     attributes_->texture_coordinates = texture_coordinates_;
@@ -80,8 +80,7 @@ void ObjReader::read() {
     }
     attributes_->normals = normals_;
     if (!attributes_->vertex_colors.empty())
-      pad_missing_colors(attributes_->vertex_colors, attributes_->vertex_color_missing,
-                         soup_.num_vertices());
+      pad_missing_colors(attributes_->vertex_colors, attributes_->vertex_color_missing, vertices());
     // The corners after the last one with a vt or vn have none.
     for (std::vector<Index>* slots :
          {&attributes_->corners.corner_texture, &attributes_->corners.corner_normal}) {
@@ -101,21 +100,30 @@ void ObjReader::vertex() {
   while (n < 7 && !in_.at_line_end()) {
     if (!in_.number(values[n])) {
       const std::string_view bad = in_.word();
-      fail("vertex " + std::to_string(soup_.num_vertices() + 1) + ": '" + clip(bad) +
+      fail("vertex " + std::to_string(vertices() + 1) + ": '" + clip(bad) +
            "' is not a number a double can hold (expected 'v x y z')");
     }
     ++n;
   }
   if (n < 3) {
-    fail("vertex " + std::to_string(soup_.num_vertices() + 1) + " has " + std::to_string(n) +
+    fail("vertex " + std::to_string(vertices() + 1) + " has " + std::to_string(n) +
          " coordinate(s), expected 3");
   }
   if (!std::isfinite(values[0]) || !std::isfinite(values[1]) || !std::isfinite(values[2])) {
     throw InvalidSoupError(file_.path() + ": line " + std::to_string(in_.line()) + ": vertex " +
-                           std::to_string(soup_.num_vertices() + 1) +
+                           std::to_string(vertices() + 1) +
                            " has a non-finite coordinate (nan or inf)");
   }
-  soup_.positions.push_back(Point(values[0], values[1], values[2]));
+  const Point p(values[0], values[1], values[2]);
+  if (weld_ != nullptr) {
+    if (n == 3 && PositionTable::takes(p)) {
+      weld_->add(p);  // no w, no colour: nothing more to note
+      return;
+    }
+    weld_->put_back(soup_.positions);
+    weld_ = nullptr;
+  }
+  soup_.positions.push_back(p);
   if (attributes_ == nullptr)
     return;
   // x y z r g b [a]: colours as floats in [0, 1], or 0..255 where they are whole numbers
@@ -242,7 +250,7 @@ Index ObjReader::corner(const char* what) {
   if (end != last)
     fail(std::string(what) + " corner '" + clip(text) +
          "' is not 'v', 'v/vt', 'v//vn' or 'v/vt/vn'");
-  const std::int64_t count = static_cast<std::int64_t>(soup_.num_vertices());
+  const std::int64_t count = static_cast<std::int64_t>(vertices());
   if (index == 0)
     fail(std::string(what) + " corner '" + clip(text) + "': OBJ indices start at 1 (or -1)");
   if (index > 0) {

@@ -9,6 +9,7 @@
 #include "io/formats.h"
 #include "io/mapped_file.h"
 #include "io/obj_parts.h"
+#include "io/obj_weld.h"
 #include "io/text_scanner.h"
 #include "meshbridge/io.h"
 #include "meshbridge/soup.h"
@@ -58,8 +59,19 @@ class ObjReader {
   //! Reads every line into the soup, the info and (if given) the attributes.
   void read();
 
+  //! Puts the `v` records into `table` instead of the soup's positions (obj_weld.h), until one
+  //! is not a plain "v x y z" the table takes: then the positions read so far are put back into
+  //! the soup and the table emptied (welding() false).
+  void weld_into(PositionTable* table) { weld_ = table; }
+  //! Whether the `v` records all went into the table given to weld_into().
+  bool welding() const { return weld_ != nullptr; }
+
  private:
   [[noreturn]] void fail(const std::string& what) const;
+  //! The `v` records read so far.
+  std::size_t vertices() const {
+    return weld_ != nullptr ? weld_->vertices() : soup_.num_vertices();
+  }
   void vertex();
   //! A `vt` (slot 0) or `vn` (slot 1) record: counted, and with attributes kept.
   void attribute_record(int slot);
@@ -93,6 +105,7 @@ class ObjReader {
   ReadInfo& info_;
   MeshAttributes* attributes_;
   RelativeCorners* relative_;
+  PositionTable* weld_ = nullptr;  // see weld_into()
   TextScanner in_;
   std::vector<Index> corners_;
   //! The vt (0) and vn (1) records of the face's corners being read: empty while no corner of

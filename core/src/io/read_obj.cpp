@@ -6,6 +6,7 @@
 #include "io/huge_pages.h"
 #include "io/obj_parts.h"
 #include "io/obj_reader.h"
+#include "io/obj_weld.h"
 #include "meshbridge/errors.h"
 #include "parallel_parts.h"
 
@@ -19,10 +20,12 @@ namespace {
 
 //! Reads the file in `n` parts side by side: part 0 into `soup`, the others into their own soups
 //! appended in file order. False (outputs to be reset) if a part met an error or a negative
-//! index that reaches before the file's first vertex: the one-thread read names it.
+//! index that reaches before the file's first vertex: the one-thread read names it. Where the
+//! file looks written per face vertex, each part welds its positions as it reads them; if every
+//! part did, `weld` holds the file's vertices and `soup` no positions (PositionTable::finish).
 bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& info,
                    MeshAttributes* attributes, AttributeIndices& attribute_indices,
-                   ColorScale& color_scale) {
+                   ColorScale& color_scale, PositionTable& weld, bool& welding) {
   std::vector<ObjPart> parts(n);
   for (unsigned k = 0; k < n; ++k) {
     parts[k].first = k == 0 ? after_byte_order_mark(file.data(), file.end()) : parts[k - 1].last;
@@ -42,20 +45,34 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
     total.faces += part.counts.faces;
     total.corners += part.counts.corners;
   }
-  reserve_huge(soup, total.vertices, total.faces, total.corners);
+  welding = PositionTable::pays_for(total);
+  std::vector<PositionTable> tables(welding ? n : 0);
+  std::vector<char> welded(n, 0);  // whether part k's reader welded all its vertices
+  reserve_huge(soup, welding ? 0 : total.vertices, total.faces, total.corners);
   run_parts(n, [&](unsigned k) {
     ObjPart& part = parts[k];
     try {
       if (k == 0) {
         ObjReader reader(file, part.first, part.last, soup, info, attributes);
+        if (welding) {
+          tables[0].reserve(total.vertices);
+          reader.weld_into(&tables[0]);
+        }
         reader.read();
+        welded[0] = reader.welding();
         part.attribute_indices = reader.attribute_indices();
         part.color_scale = reader.take_color_scale();
       } else {
-        reserve_huge(part.soup, part.counts.vertices, part.counts.faces, part.counts.corners);
+        reserve_huge(part.soup, welding ? 0 : part.counts.vertices, part.counts.faces,
+                     part.counts.corners);
         ObjReader reader(file, part.first, part.last, part.soup, part.info,
                          attributes != nullptr ? &part.attributes : nullptr, &part.relative);
+        if (welding) {
+          tables[k].reserve(part.counts.vertices);
+          reader.weld_into(&tables[k]);
+        }
         reader.read();
+        welded[k] = reader.welding();
         part.attribute_indices = reader.attribute_indices();
         part.color_scale = reader.take_color_scale();
       }
@@ -63,6 +80,18 @@ bool read_in_parts(const MappedFile& file, unsigned n, Soup& soup, ReadInfo& inf
       failed[k] = 1;
     }
   });
+  // Welded while read only if every part was: else each part's positions are put back.
+  welding = welding && std::all_of(welded.begin(), welded.end(), [](char w) { return w != 0; });
+  for (unsigned k = 0; k < tables.size(); ++k) {
+    if (welding && k > 0)
+      tables[0].append(tables[k]);
+    else if (!welding && welded[k])
+      tables[k].put_back(k == 0 ? soup.positions : parts[k].soup.positions);
+    if (k > 0)
+      tables[k] = PositionTable();
+  }
+  if (welding)
+    weld = std::move(tables[0]);
   // The vt/vn indices of the whole file: relative ones of a part from the records before it.
   std::int64_t before[2] = {0, 0};
   for (unsigned k = 0; k < n; ++k) {
@@ -114,9 +143,14 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   bool read = false;
   AttributeIndices attribute_indices;
   ColorScale color_scale;
+  PositionTable weld;  // the vertices, where the file is welded while read
+  bool welding = false;
   if (n > 1) {
-    read = read_in_parts(file, n, soup, info, attributes, attribute_indices, color_scale);
+    read = read_in_parts(file, n, soup, info, attributes, attribute_indices, color_scale, weld,
+                         welding);
     if (!read) {
+      weld = PositionTable();
+      welding = false;
       soup = Soup();
       info = ReadInfo();
       attribute_indices = AttributeIndices();
@@ -127,21 +161,32 @@ void read_obj(const MappedFile& file, Soup& soup, ReadInfo& info, MeshAttributes
   }
   if (!read) {
     const RecordCounts counts = estimate_records(file.data(), file.end());
-    reserve_huge(soup, counts.vertices, counts.faces, counts.corners);
+    welding = PositionTable::pays_for(counts);
+    reserve_huge(soup, welding ? 0 : counts.vertices, counts.faces, counts.corners);
     ObjReader reader(file, after_byte_order_mark(file.data(), file.end()), file.end(), soup, info,
                      attributes);
+    if (welding) {
+      weld.reserve(counts.vertices);
+      reader.weld_into(&weld);
+    }
     reader.read();
+    welding = reader.welding();
     attribute_indices = reader.attribute_indices();
     color_scale = reader.take_color_scale();
   }
   // An l or p corner past the last vertex: an error naming its line, as for faces.
-  if (attribute_indices.highest_element_vertex > std::int64_t(soup.num_vertices())) {
+  const std::size_t vertices = welding ? weld.vertices() : soup.num_vertices();
+  if (attribute_indices.highest_element_vertex > std::int64_t(vertices)) {
     Soup again;
     ReadInfo ignored;
     ObjReader(file, after_byte_order_mark(file.data(), file.end()), file.end(), again, ignored,
               nullptr)
-        .locate_element_vertex_past(soup.num_vertices());
+        .locate_element_vertex_past(vertices);
   }
+  // A file welded while read: the weld done (as weld_repeated_vertices() would), or the positions
+  // as read put back for it.
+  if (welding)
+    info.vertices_welded_by_position = weld.finish(soup);
   if (attributes == nullptr)
     return;
   rescale_unit_colors(color_scale, *attributes);

@@ -198,6 +198,12 @@ bool most_sides_shared(const Soup& soup, const VertexOf& vertex_of, std::size_t 
 
 }  // namespace
 
+bool most_sides_shared_when_welded(const Soup& soup, const Index* welded, std::size_t vertices) {
+  const auto vertex_of = [&](Index c) { return welded[soup.corner_vertices[c]]; };
+  const std::unique_ptr<Index[]> scratch = uninitialised<Index>(soup.num_corners());
+  return most_sides_shared(soup, vertex_of, vertices, scratch.get());
+}
+
 std::size_t weld_repeated_vertices(Soup& soup, MeshAttributes* attributes) {
   const std::size_t n = soup.num_vertices();
   if (soup.num_faces() < 2)

@@ -23,4 +23,9 @@ namespace meshbridge::detail {
 //! validation (nothing is welded).
 std::size_t weld_repeated_vertices(Soup& soup, MeshAttributes* attributes);
 
+//! The test weld_repeated_vertices() puts to a weld: whether at least half of the polygon sides
+//! (between different vertices) share their edge with another side when corner c is at vertex
+//! `welded[soup.corner_vertices[c]]`, one of `vertices`.
+bool most_sides_shared_when_welded(const Soup& soup, const Index* welded, std::size_t vertices);
+
 }  // namespace meshbridge::detail
