@@ -17,20 +17,8 @@ namespace meshbridge {
 
 namespace {
 
-// Integer cell coordinates of x at cell size `cell`, clamped so the cast is defined.
-std::int64_t cell_coordinate(double x, double cell) {
-  const double c = std::floor(x / cell);
-  constexpr double limit = 4.0e18;
-  return static_cast<std::int64_t>(std::max(-limit, std::min(limit, c)));
-}
-
 using detail::mix;
 using detail::PointTree;
-
-std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
-  return mix(static_cast<std::uint64_t>(x) ^
-             mix(static_cast<std::uint64_t>(y) ^ mix(static_cast<std::uint64_t>(z))));
-}
 
 // Polygons around each vertex (CSR).
 struct VertexFaces {
