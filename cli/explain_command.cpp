@@ -94,7 +94,9 @@ const std::vector<Entry> kEntries = {
      "polygons: 'N split into M more' means N polygons became N + M. A keyhole polygon (an\n"
      "outline and holes joined by slits: it runs a-b and later b-a) is cut into triangles as\n"
      "one polygon with holes, the holes left open ('keyhole polygon triangulated')."},
-    {"degenerate face", "A face that repeats a vertex index. --remove-degenerate drops them."},
+    {"degenerate face",
+     "A face that repeats a vertex index, not a keyhole polygon (counted as one, and\n"
+     "triangulated). --remove-degenerate drops them."},
     {"zero-area face", "A face whose corners lie on one line or one point (area 0)."},
     {"duplicate face",
      "A face whose vertex set an earlier face already has. --remove-duplicates drops them."},

@@ -451,11 +451,12 @@ ClosedGaps close_gaps(const Soup& soup, const CloseGapsOptions& options) {
 CloseGapsReport preview_close_gaps(const Soup& soup, const CloseGapsOptions& options,
                                    const DefectReport* detected) {
   ClosedGaps result;
-  // No degenerate polygon: detection grouped the soup's own sides, so its boundary edges are the
-  // boundary sides gap closing would look for.
+  // No degenerate or keyhole polygon: detection grouped the soup's own sides, so its boundary
+  // edges are the boundary sides gap closing would look for.
   const std::vector<Index> none;
-  const bool closed =
-      detected != nullptr && detected->degenerate_faces.empty() && detected->boundary_edges.empty();
+  const bool closed = detected != nullptr && detected->degenerate_faces.empty() &&
+                      detected->keyhole_polygons_triangulated == 0 &&
+                      detected->boundary_edges.empty();
   detail::close_gaps_if_any(soup, options, result, closed ? &none : nullptr);
   return result.report;
 }

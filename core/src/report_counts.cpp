@@ -53,6 +53,7 @@ void append_counts(ReportCounts& out, const DefectReport& r, const std::string& 
   a.count("nonorientable_components", r.num_nonorientable_components);
   a.count("isolated_vertices", r.isolated_vertices.size());
   a.count("degenerate_faces", r.degenerate_faces.size());
+  a.count("keyhole_polygons", r.keyhole_polygons_triangulated);
   a.count("faces_set_aside", r.num_faces_set_aside());
   a.count("zero_area_faces", r.zero_area_faces.size());
   a.count("duplicate_faces", r.duplicate_faces.size());

@@ -26,6 +26,7 @@ Json read_json(const ReadInfo& info) {
               {"declared_faces", info.declared_faces},
               {"faces_kept", info.faces_kept},
               {"faces_split", info.faces_split},
+              {"keyhole_polygons", info.keyhole_polygons},
               {"faces_set_aside", info.faces_set_aside},
               {"dangling_edges", info.dangling_edges},
               {"lone_points", info.lone_points},
@@ -92,6 +93,7 @@ void add_defects(Json& out, const DefectReport& r, bool elements) {
   out["nonorientable_components"] = r.num_nonorientable_components;
   out["isolated_vertices"] = r.isolated_vertices.size();
   out["degenerate_faces"] = r.degenerate_faces.size();
+  out["keyhole_polygons"] = r.keyhole_polygons_triangulated;
   out["faces_set_aside"] = r.num_faces_set_aside();
   out["zero_area_faces"] = r.zero_area_faces.size();
   out["duplicate_faces"] = r.duplicate_faces.size();

@@ -35,8 +35,10 @@ struct RepairOptions {
   //! or a cavity wound the wrong way): kept as written (material, default) or turned into a
   //! cavity (even-odd nesting). Counted either way in RepairReport::ambiguous_nested_shells.
   AmbiguousNesting nested_shells = AmbiguousNesting::material;
-  bool remove_duplicate_faces = false;   //!< drop polygons whose vertex set an earlier one has
-  bool remove_degenerate_faces = false;  //!< drop polygons that repeat a vertex index
+  bool remove_duplicate_faces = false;  //!< drop polygons whose vertex set an earlier one has
+  //! drop polygons that repeat a vertex index (DefectReport::degenerate_faces: not keyhole
+  //! polygons, which are cut into triangles with their holes open); default false
+  bool remove_degenerate_faces = false;
   //! drop polygons of (near) zero area (DefectReport::zero_area_faces: slivers and needles
   //! whose corners are distinct but on one line or nearly at one point); default false
   bool remove_zero_area_faces = false;
