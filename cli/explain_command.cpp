@@ -47,7 +47,8 @@ const std::vector<Entry> kEntries = {
      "  cut to stay manifold: always 0 now. Where a fan winds twice around a vertex and two\n"
      "    pairs would share one edge, they are glued again in their new fans, or one pair gets a\n"
      "    new vertex in the middle of the edge ('edges split at the midpoint'), so the two\n"
-     "    sheets touch without sharing it and nothing closed is opened\n"
+     "    sheets touch without sharing it and nothing closed is opened; each adds a vertex and\n"
+     "    gives the pair's two faces a corner more (a triangle becomes a quad)\n"
      "  paired with copies instead: where a face is given twice (a sheet written once per side),\n"
      "    the two copies are glued back to back (a closed pillow of no volume) instead of cut\n"
      "  stitched: cut sides glued back in pairs where that stays manifold (--no-stitch: never)"},

@@ -5,8 +5,31 @@
 #include "meshbridge/counted.h"
 
 #include <sstream>
+#include <string>
 
 namespace meshbridge {
+
+namespace {
+
+// What the midpoint splits added ("" when there were none): a vertex each, and a corner to the
+// polygons of each pair split.
+std::string midpoint_note(const RepairReport& r) {
+  const std::size_t edges = r.edges_split_to_stay_manifold;
+  if (edges == 0)
+    return std::string();
+  std::string note = ": " + counted(edges, "vertex") + " added, ";
+  const std::size_t faces = r.faces_given_midpoints, triangles = r.triangles_given_midpoints;
+  if (triangles == faces && faces == 2 * edges)  // each a triangle given one corner
+    return note + std::to_string(triangles) + " triangles became quads";
+  if (triangles == faces)
+    return note + std::to_string(triangles) + " triangles given corners (quads or larger now)";
+  note += counted(faces, "polygon") + " given corners";
+  if (triangles != 0)
+    note += ", " + std::to_string(triangles) + " of them triangles (quads or larger now)";
+  return note;
+}
+
+}  // namespace
 
 std::string to_text(const RepairReport& r) {
   std::ostringstream out;
@@ -51,8 +74,8 @@ std::string to_text(const RepairReport& r) {
   out << "sides: " << r.sides_cut << " cut on singular edges, " << r.sides_cut_for_orientation
       << " cut for orientation, " << r.sides_cut_to_stay_manifold << " cut to stay manifold ("
       << r.sides_paired_with_copies << " paired with copies and "
-      << counted(r.edges_split_to_stay_manifold, "edge") << " split at the midpoint instead), "
-      << r.sides_stitched << " stitched\n";
+      << counted(r.edges_split_to_stay_manifold, "edge") << " split at the midpoint instead"
+      << midpoint_note(r) << "), " << r.sides_stitched << " stitched\n";
   const FillHolesReport& h = r.holes;
   if (h.max_edges > 0) {
     out << "holes (up to " << h.max_edges << " edges): " << h.holes_filled << " filled with "

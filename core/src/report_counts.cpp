@@ -113,6 +113,8 @@ void append_counts(ReportCounts& out, const RepairReport& r) {
   a.count("sides_cut_to_stay_manifold", r.sides_cut_to_stay_manifold);
   a.count("sides_paired_with_copies", r.sides_paired_with_copies);
   a.count("edges_split_to_stay_manifold", r.edges_split_to_stay_manifold);
+  a.count("faces_given_midpoints", r.faces_given_midpoints);
+  a.count("triangles_given_midpoints", r.triangles_given_midpoints);
   a.count("sides_stitched", r.sides_stitched);
   a.count("nonorientable_after_pairing", r.nonorientable_after_pairing);
   a.count("ambiguous_nested_shells", r.ambiguous_nested_shells);

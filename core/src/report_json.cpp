@@ -159,6 +159,8 @@ void add_repair(Json& out, const RepairReport& r, bool elements, const DefectRep
   out["sides_cut_to_stay_manifold"] = r.sides_cut_to_stay_manifold;
   out["sides_paired_with_copies"] = r.sides_paired_with_copies;
   out["edges_split_to_stay_manifold"] = r.edges_split_to_stay_manifold;
+  out["faces_given_midpoints"] = r.faces_given_midpoints;
+  out["triangles_given_midpoints"] = r.triangles_given_midpoints;
   out["sides_stitched"] = r.sides_stitched;
   out["nonorientable_after_pairing"] = r.nonorientable_after_pairing;
   out["ambiguous_nested_shells"] = r.ambiguous_nested_shells;

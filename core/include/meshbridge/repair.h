@@ -102,6 +102,11 @@ struct RepairReport {
   //! Each adds one vertex (its IndexedMesh::vertex_origin is kNoIndex: no input vertex) and one
   //! corner to each of the two faces.
   std::size_t edges_split_to_stay_manifold = 0;
+  //! Polygons given a corner by those midpoint splits (each counted once, however many it got),
+  //! and how many of them were triangles (no longer triangles in the output: one midpoint makes
+  //! a quad). A split pair's two faces usually get one corner each: 2 per edge.
+  std::size_t faces_given_midpoints = 0;
+  std::size_t triangles_given_midpoints = 0;
   std::size_t components_before = 0;  //!< as the user sees the input (through all contenders)
   std::size_t components_after = 0;
   std::size_t boundary_edges_before = 0;
