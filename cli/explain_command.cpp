@@ -80,7 +80,11 @@ const std::vector<Entry> kEntries = {
      "singular edges too, so two cubes on one edge are 1 component before repair and 2 after."},
     {"Euler characteristic",
      "vertices - edges + faces. 2 for each closed sphere-like piece, 0 for a torus; a quick\n"
-     "sanity number, not a defect."},
+     "sanity number, not a defect. 'N component's topology changed by pairing: Euler\n"
+     "characteristic 2 -> -2': a piece of the result whose number differs from that of the\n"
+     "same faces in the input (each vertex and edge counted once, a singular edge too), because\n"
+     "pairing joined two sheets at a singular edge into a handle, or sides were cut or a vertex\n"
+     "split within the piece. Pieces that pairing separates keep theirs."},
     {"inconsistently oriented edge",
      "An edge whose two faces run through it in the same direction, so one of them faces the\n"
      "wrong way. Repair flips faces to fix it ('flipped') unless --no-orient."},

@@ -6,6 +6,7 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace meshbridge {
 
@@ -27,6 +28,23 @@ std::string midpoint_note(const RepairReport& r) {
   if (triangles != 0)
     note += ", " + std::to_string(triangles) + " of them triangles (quads or larger now)";
   return note;
+}
+
+// "1 component's topology changed by pairing: Euler characteristic 2 -> -2" ("" when none),
+// listing the first few changes.
+std::string topology_note(const RepairReport& r) {
+  const std::vector<TopologyChange>& changes = r.topology_changes;
+  if (changes.empty())
+    return std::string();
+  constexpr std::size_t kListed = 5;
+  std::string note = std::to_string(changes.size()) +
+                     (changes.size() == 1 ? " component's" : " components'") +
+                     " topology changed by pairing: Euler characteristic ";
+  for (std::size_t i = 0; i < changes.size() && i < kListed; ++i) {
+    note += (i > 0 ? ", " : "") + std::to_string(changes[i].euler_before) + " -> " +
+            std::to_string(changes[i].euler_after);
+  }
+  return note + (changes.size() > kListed ? ", ...\n" : "\n");
 }
 
 }  // namespace
@@ -92,6 +110,7 @@ std::string to_text(const RepairReport& r) {
       << "; boundary edges: " << r.boundary_edges_before << " -> " << r.boundary_edges_after
       << "; non-orientable components met by orientation: " << r.nonorientable_after_pairing
       << "\n";
+  out << topology_note(r);
   if (r.ambiguous_nested_shells != 0) {
     out << "nested shells: " << r.ambiguous_nested_shells
         << " wound like the shell around them (an insert, or a cavity wound the wrong way): "

@@ -118,6 +118,7 @@ void append_counts(ReportCounts& out, const RepairReport& r) {
   a.count("sides_stitched", r.sides_stitched);
   a.count("nonorientable_after_pairing", r.nonorientable_after_pairing);
   a.count("ambiguous_nested_shells", r.ambiguous_nested_shells);
+  a.count("components_topology_changed", r.topology_changes.size());
   append_counts(out, r.gaps);
   append_counts(out, r.holes);
   append_counts(out, r.before, "before.");

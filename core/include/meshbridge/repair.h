@@ -12,6 +12,7 @@
 #include "meshbridge/soup.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace meshbridge {
 
@@ -55,6 +56,14 @@ struct RepairOptions {
   FillHolesOptions fill_holes;
   //! Told when the stages group, pair and detect start and end (default empty: not called).
   ProgressCallback progress;
+};
+
+//! A component of the repaired mesh whose Euler characteristic is not that of the same faces in
+//! the input (RepairReport::topology_changes).
+struct TopologyChange {
+  Index first_face = 0;        //!< the component's first face in the output
+  long long euler_before = 0;  //!< V - E + F of its faces in the input, every edge counted once
+  long long euler_after = 0;   //!< V - E + F of the component in the output
 };
 
 //! What repair changed. Every count is exact.
@@ -119,6 +128,15 @@ struct RepairReport {
   //! Closed shells nested in a closed shell and wound like it as written (see
   //! RepairOptions::nested_shells): ambiguous between an insert and a wrongly wound cavity.
   std::size_t ambiguous_nested_shells = 0;
+  //! Components of the output (before hole filling) whose Euler characteristic V - E + F differs
+  //! from that of the same faces as pairing got them (after gap closing, a keyhole polygon as
+  //! its triangles), where every vertex and every edge counts once, a singular edge too: pairing
+  //! that joins two sheets at a singular edge into a handle (a shell of Euler characteristic 2
+  //! becomes a torus, 0), sides left unpaired within one component, a pinch vertex split within
+  //! one component. Components pairing separated keep theirs (two cubes on one edge: 2 and 2).
+  //! In the order of their first faces; the JSON report gives the count,
+  //! `components_topology_changed`.
+  std::vector<TopologyChange> topology_changes;
   CloseGapsReport gaps;   //!< what gap closing did before pairing
   FillHolesReport holes;  //!< what hole filling did after pairing (all 0 when off)
   DefectReport before;    //!< detection on the input (before gap closing)

@@ -78,7 +78,8 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
   if (crowded.rounds > 0 && options.orient)
     counts.ambiguous_nested_shells = orient_components(soup, grouped, pairing, options.nested);
 
-  // 7. Emit the output polygons once, after counting the polygons the midpoints change.
+  // 7. Emit the output polygons once, after counting what the steps did to the topology.
+  result.topology_changes = topology_changes(soup, grouped, pairing, split);
   const MidpointFaces given = midpoint_faces(soup, grouped.corner_face, pairing);
   counts.faces_given_midpoints = given.faces;
   counts.triangles_given_midpoints = given.triangles;

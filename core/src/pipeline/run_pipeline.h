@@ -6,6 +6,7 @@
 
 #include "meshbridge/indexed_mesh.h"
 #include "meshbridge/pairing.h"
+#include "meshbridge/repair.h"
 
 #include "pipeline/grouping.h"
 #include "pipeline/side_pairing.h"
@@ -51,6 +52,9 @@ struct PipelineResult {
   SidePairing pairing;
   IndexedMesh mesh;  //!< origins refer to the *input* soup
   PipelineCounts counts;
+  //! Components whose Euler characteristic pairing changed (topology_changes()); first faces
+  //! are the working soup's (the output's, face for face).
+  std::vector<TopologyChange> topology_changes;
 };
 
 //! Runs on `working` with its sides already grouped (as from group_sides(working.soup()));
