@@ -2,6 +2,7 @@
 #include "defect_snapshot.h"
 #include "meshbridge/counted.h"
 
+#include "meshbridge/polygon_triangles.h"
 #include "meshbridge/validate.h"
 
 #include "snapshot_frame.h"
@@ -107,6 +108,48 @@ void check_vertex(const Soup& soup, Index v) {
 //! Light grey of every face when counting (the shade does not matter there).
 const QRgb kFlat = qRgb(165, 165, 165);
 
+//! True if `polygon` passes through one vertex twice.
+bool repeats_a_vertex(PolygonView polygon) {
+  if (polygon.size() > 16) {
+    std::vector<Index> sorted(polygon.begin(), polygon.end());
+    std::sort(sorted.begin(), sorted.end());
+    return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+  }
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    for (std::size_t j = i + 1; j < polygon.size(); ++j) {
+      if (polygon[i] == polygon[j])
+        return true;
+    }
+  }
+  return false;
+}
+
+//! The polygons of a soup that pass through one vertex twice, in face order, with their
+//! triangles as the STL writer and repair cut them (triangles_as_written()): a keyhole polygon
+//! (an outline and holes joined by slits) as one polygon with holes, the holes left open, where a
+//! fan from its first corner would cover them; another as its simple loops.
+struct PinchedPolygons {
+  std::vector<Index> faces;
+  PolygonTriangles triangles;  //!< of faces[i]: corners[first[i]] .. corners[first[i + 1] - 1]
+};
+
+PinchedPolygons pinched_polygons(const Soup& soup) {
+  PinchedPolygons pinched;
+  Soup polygons;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const PolygonView polygon = soup.polygon(f);
+    if (polygon.size() > 3 && repeats_a_vertex(polygon)) {
+      pinched.faces.push_back(static_cast<Index>(f));
+      polygons.add_polygon(polygon);
+    }
+  }
+  if (!pinched.faces.empty()) {
+    polygons.positions = soup.positions;
+    pinched.triangles = triangles_as_written(polygons);
+  }
+  return pinched;
+}
+
 //! Projects the vertices of `soup` in `frame` into `canvas_points` (resized) and fills its
 //! surface into `canvas`, shaded, or all kFlat when `counting`; faces marked in `crossing` (empty,
 //! or one flag per face) shaded violet.
@@ -119,6 +162,8 @@ void draw_surface(const Soup& soup, const Frame& frame, bool counting,
   // The light comes from the upper left, in front: fixed to the camera, so every view is lit.
   Point light = frame.axes.right * -0.4 + frame.axes.up * 0.6 + frame.forward * 0.7;
   light.normalize();
+  const PinchedPolygons pinched = pinched_polygons(soup);
+  std::size_t next_pinched = 0;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     const PolygonView polygon = soup.polygon(f);
     QRgb color = kFlat;
@@ -133,6 +178,16 @@ void draw_surface(const Soup& soup, const Frame& frame, bool counting,
       const double length = normal.norm();
       const double cosine = length > 0 ? (normal | light) / length : 0;
       color = crossing.empty() || !crossing[f] ? shade(cosine) : shade_crossing(cosine);
+    }
+    if (next_pinched < pinched.faces.size() && pinched.faces[next_pinched] == f) {
+      const PolygonTriangles& t = pinched.triangles;
+      for (Index i = t.first[next_pinched]; i < t.first[next_pinched + 1]; ++i) {
+        canvas.fill_triangle(canvas_points[polygon[t.corners[i][0]]],
+                             canvas_points[polygon[t.corners[i][1]]],
+                             canvas_points[polygon[t.corners[i][2]]], color);
+      }
+      ++next_pinched;
+      continue;
     }
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
       canvas.fill_triangle(canvas_points[polygon[0]], canvas_points[polygon[i]],

@@ -47,7 +47,8 @@ const std::vector<Entry> kEntries = {
      "  cut to stay manifold: always 0 now. Where a fan winds twice around a vertex and two\n"
      "    pairs would share one edge, they are glued again in their new fans, or one pair gets a\n"
      "    new vertex in the middle of the edge ('edges split at the midpoint'), so the two\n"
-     "    sheets touch without sharing it and nothing closed is opened\n"
+     "    sheets touch without sharing it and nothing closed is opened; each adds a vertex and\n"
+     "    gives the pair's two faces a corner more (a triangle becomes a quad)\n"
      "  paired with copies instead: where a face is given twice (a sheet written once per side),\n"
      "    the two copies are glued back to back (a closed pillow of no volume) instead of cut\n"
      "  stitched: cut sides glued back in pairs where that stays manifold (--no-stitch: never)"},
@@ -79,7 +80,11 @@ const std::vector<Entry> kEntries = {
      "singular edges too, so two cubes on one edge are 1 component before repair and 2 after."},
     {"Euler characteristic",
      "vertices - edges + faces. 2 for each closed sphere-like piece, 0 for a torus; a quick\n"
-     "sanity number, not a defect."},
+     "sanity number, not a defect. 'N component's topology changed by pairing: Euler\n"
+     "characteristic 2 -> -2': a piece of the result whose number differs from that of the\n"
+     "same faces in the input (each vertex and edge counted once, a singular edge too), because\n"
+     "pairing joined two sheets at a singular edge into a handle, or sides were cut or a vertex\n"
+     "split within the piece. Pieces that pairing separates keep theirs."},
     {"inconsistently oriented edge",
      "An edge whose two faces run through it in the same direction, so one of them faces the\n"
      "wrong way. Repair flips faces to fix it ('flipped') unless --no-orient."},
@@ -94,7 +99,9 @@ const std::vector<Entry> kEntries = {
      "polygons: 'N split into M more' means N polygons became N + M. A keyhole polygon (an\n"
      "outline and holes joined by slits: it runs a-b and later b-a) is cut into triangles as\n"
      "one polygon with holes, the holes left open ('keyhole polygon triangulated')."},
-    {"degenerate face", "A face that repeats a vertex index. --remove-degenerate drops them."},
+    {"degenerate face",
+     "A face that repeats a vertex index, not a keyhole polygon (counted as one, and\n"
+     "triangulated). --remove-degenerate drops them."},
     {"zero-area face", "A face whose corners lie on one line or one point (area 0)."},
     {"duplicate face",
      "A face whose vertex set an earlier face already has. --remove-duplicates drops them."},

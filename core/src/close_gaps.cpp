@@ -17,20 +17,8 @@ namespace meshbridge {
 
 namespace {
 
-// Integer cell coordinates of x at cell size `cell`, clamped so the cast is defined.
-std::int64_t cell_coordinate(double x, double cell) {
-  const double c = std::floor(x / cell);
-  constexpr double limit = 4.0e18;
-  return static_cast<std::int64_t>(std::max(-limit, std::min(limit, c)));
-}
-
 using detail::mix;
 using detail::PointTree;
-
-std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
-  return mix(static_cast<std::uint64_t>(x) ^
-             mix(static_cast<std::uint64_t>(y) ^ mix(static_cast<std::uint64_t>(z))));
-}
 
 // Polygons around each vertex (CSR).
 struct VertexFaces {
@@ -463,11 +451,12 @@ ClosedGaps close_gaps(const Soup& soup, const CloseGapsOptions& options) {
 CloseGapsReport preview_close_gaps(const Soup& soup, const CloseGapsOptions& options,
                                    const DefectReport* detected) {
   ClosedGaps result;
-  // No degenerate polygon: detection grouped the soup's own sides, so its boundary edges are the
-  // boundary sides gap closing would look for.
+  // No degenerate or keyhole polygon: detection grouped the soup's own sides, so its boundary
+  // edges are the boundary sides gap closing would look for.
   const std::vector<Index> none;
-  const bool closed =
-      detected != nullptr && detected->degenerate_faces.empty() && detected->boundary_edges.empty();
+  const bool closed = detected != nullptr && detected->degenerate_faces.empty() &&
+                      detected->keyhole_polygons_triangulated == 0 &&
+                      detected->boundary_edges.empty();
   detail::close_gaps_if_any(soup, options, result, closed ? &none : nullptr);
   return result.report;
 }

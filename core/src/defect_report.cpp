@@ -10,7 +10,7 @@ bool DefectReport::has_defects() const {
   return !singular_edges.empty() || num_singular_vertices() > 0 || !boundary_edges.empty() ||
          !degenerate_faces.empty() || !faces_set_aside.empty() || !duplicate_faces.empty() ||
          !inconsistent_edges.empty() || num_nonorientable_components > 0 ||
-         records_without_corners > 0;
+         records_without_corners > 0 || keyhole_polygons_triangulated > 0;
 }
 
 namespace {

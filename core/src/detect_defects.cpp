@@ -118,7 +118,17 @@ struct EdgeTally {
         on_singular_edge(working.soup().num_vertices(), 0) {
     report.num_vertices = working.input().num_vertices();
     report.num_faces = working.input().num_faces();
-    report.degenerate_faces = working.degenerate_faces();
+    // A keyhole polygon is counted once, as a keyhole (keyhole_polygons_triangulated), not as
+    // degenerate: repair cuts it as one polygon with holes.
+    std::size_t k = 0;
+    for (Index f : working.degenerate_faces()) {
+      while (k < working.keyholes().size() &&
+             working.face_origin(working.keyholes()[k].first_face) < f)
+        ++k;
+      if (k == working.keyholes().size() ||
+          working.face_origin(working.keyholes()[k].first_face) != f)
+        report.degenerate_faces.push_back(f);
+    }
     report.faces_set_aside = working.faces_set_aside();
     for (const WorkingSoup::Slit& s : working.slits())
       slit_pairs.push_back({std::min(s.a, s.b), std::max(s.a, s.b)});

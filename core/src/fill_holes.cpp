@@ -53,6 +53,9 @@ void check_fillable(const IndexedMesh& mesh) {
     throw std::invalid_argument("fill_holes: face " + std::to_string(defects.degenerate_faces[0]) +
                                 " repeats a vertex" + repair_first);
   }
+  if (defects.keyhole_polygons_triangulated > 0)
+    throw std::invalid_argument(std::string("fill_holes: a keyhole polygon repeats a vertex") +
+                                repair_first);
   if (!defects.singular_edges.empty()) {
     throw std::invalid_argument(
         "fill_holes: edge " + edge_name(defects.singular_edges[0].vertices) + " has " +

@@ -255,6 +255,9 @@ void RepairRun::count() {
   report.sides_cut_to_stay_manifold = counts.sides_cut_to_stay_manifold;
   report.sides_paired_with_copies = counts.sides_paired_with_copies;
   report.edges_split_to_stay_manifold = counts.edges_split_to_stay_manifold;
+  report.faces_given_midpoints = counts.faces_given_midpoints;
+  report.triangles_given_midpoints = counts.triangles_given_midpoints;
+  report.topology_changes = std::move(pipeline_.topology_changes);
   report.nonorientable_after_pairing = counts.nonorientable_components;
   report.ambiguous_nested_shells = counts.ambiguous_nested_shells;
   balance_.open_edges_out = counts.open_sides;

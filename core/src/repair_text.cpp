@@ -5,8 +5,49 @@
 #include "meshbridge/counted.h"
 
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace meshbridge {
+
+namespace {
+
+// What the midpoint splits added ("" when there were none): a vertex each, and a corner to the
+// polygons of each pair split.
+std::string midpoint_note(const RepairReport& r) {
+  const std::size_t edges = r.edges_split_to_stay_manifold;
+  if (edges == 0)
+    return std::string();
+  std::string note = ": " + counted(edges, "vertex") + " added, ";
+  const std::size_t faces = r.faces_given_midpoints, triangles = r.triangles_given_midpoints;
+  if (triangles == faces && faces == 2 * edges)  // each a triangle given one corner
+    return note + std::to_string(triangles) + " triangles became quads";
+  if (triangles == faces)
+    return note + std::to_string(triangles) + " triangles given corners (quads or larger now)";
+  note += counted(faces, "polygon") + " given corners";
+  if (triangles != 0)
+    note += ", " + std::to_string(triangles) + " of them triangles (quads or larger now)";
+  return note;
+}
+
+// "1 component's topology changed by pairing: Euler characteristic 2 -> -2" ("" when none),
+// listing the first few changes.
+std::string topology_note(const RepairReport& r) {
+  const std::vector<TopologyChange>& changes = r.topology_changes;
+  if (changes.empty())
+    return std::string();
+  constexpr std::size_t kListed = 5;
+  std::string note = std::to_string(changes.size()) +
+                     (changes.size() == 1 ? " component's" : " components'") +
+                     " topology changed by pairing: Euler characteristic ";
+  for (std::size_t i = 0; i < changes.size() && i < kListed; ++i) {
+    note += (i > 0 ? ", " : "") + std::to_string(changes[i].euler_before) + " -> " +
+            std::to_string(changes[i].euler_after);
+  }
+  return note + (changes.size() > kListed ? ", ...\n" : "\n");
+}
+
+}  // namespace
 
 std::string to_text(const RepairReport& r) {
   std::ostringstream out;
@@ -51,8 +92,8 @@ std::string to_text(const RepairReport& r) {
   out << "sides: " << r.sides_cut << " cut on singular edges, " << r.sides_cut_for_orientation
       << " cut for orientation, " << r.sides_cut_to_stay_manifold << " cut to stay manifold ("
       << r.sides_paired_with_copies << " paired with copies and "
-      << counted(r.edges_split_to_stay_manifold, "edge") << " split at the midpoint instead), "
-      << r.sides_stitched << " stitched\n";
+      << counted(r.edges_split_to_stay_manifold, "edge") << " split at the midpoint instead"
+      << midpoint_note(r) << "), " << r.sides_stitched << " stitched\n";
   const FillHolesReport& h = r.holes;
   if (h.max_edges > 0) {
     out << "holes (up to " << h.max_edges << " edges): " << h.holes_filled << " filled with "
@@ -69,6 +110,7 @@ std::string to_text(const RepairReport& r) {
       << "; boundary edges: " << r.boundary_edges_before << " -> " << r.boundary_edges_after
       << "; non-orientable components met by orientation: " << r.nonorientable_after_pairing
       << "\n";
+  out << topology_note(r);
   if (r.ambiguous_nested_shells != 0) {
     out << "nested shells: " << r.ambiguous_nested_shells
         << " wound like the shell around them (an insert, or a cavity wound the wrong way): "

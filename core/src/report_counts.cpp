@@ -53,6 +53,7 @@ void append_counts(ReportCounts& out, const DefectReport& r, const std::string& 
   a.count("nonorientable_components", r.num_nonorientable_components);
   a.count("isolated_vertices", r.isolated_vertices.size());
   a.count("degenerate_faces", r.degenerate_faces.size());
+  a.count("keyhole_polygons", r.keyhole_polygons_triangulated);
   a.count("faces_set_aside", r.num_faces_set_aside());
   a.count("zero_area_faces", r.zero_area_faces.size());
   a.count("duplicate_faces", r.duplicate_faces.size());
@@ -112,9 +113,12 @@ void append_counts(ReportCounts& out, const RepairReport& r) {
   a.count("sides_cut_to_stay_manifold", r.sides_cut_to_stay_manifold);
   a.count("sides_paired_with_copies", r.sides_paired_with_copies);
   a.count("edges_split_to_stay_manifold", r.edges_split_to_stay_manifold);
+  a.count("faces_given_midpoints", r.faces_given_midpoints);
+  a.count("triangles_given_midpoints", r.triangles_given_midpoints);
   a.count("sides_stitched", r.sides_stitched);
   a.count("nonorientable_after_pairing", r.nonorientable_after_pairing);
   a.count("ambiguous_nested_shells", r.ambiguous_nested_shells);
+  a.count("components_topology_changed", r.topology_changes.size());
   append_counts(out, r.gaps);
   append_counts(out, r.holes);
   append_counts(out, r.before, "before.");

@@ -26,6 +26,7 @@ Json read_json(const ReadInfo& info) {
               {"declared_faces", info.declared_faces},
               {"faces_kept", info.faces_kept},
               {"faces_split", info.faces_split},
+              {"keyhole_polygons", info.keyhole_polygons},
               {"faces_set_aside", info.faces_set_aside},
               {"dangling_edges", info.dangling_edges},
               {"lone_points", info.lone_points},
@@ -92,6 +93,7 @@ void add_defects(Json& out, const DefectReport& r, bool elements) {
   out["nonorientable_components"] = r.num_nonorientable_components;
   out["isolated_vertices"] = r.isolated_vertices.size();
   out["degenerate_faces"] = r.degenerate_faces.size();
+  out["keyhole_polygons"] = r.keyhole_polygons_triangulated;
   out["faces_set_aside"] = r.num_faces_set_aside();
   out["zero_area_faces"] = r.zero_area_faces.size();
   out["duplicate_faces"] = r.duplicate_faces.size();
@@ -157,9 +159,12 @@ void add_repair(Json& out, const RepairReport& r, bool elements, const DefectRep
   out["sides_cut_to_stay_manifold"] = r.sides_cut_to_stay_manifold;
   out["sides_paired_with_copies"] = r.sides_paired_with_copies;
   out["edges_split_to_stay_manifold"] = r.edges_split_to_stay_manifold;
+  out["faces_given_midpoints"] = r.faces_given_midpoints;
+  out["triangles_given_midpoints"] = r.triangles_given_midpoints;
   out["sides_stitched"] = r.sides_stitched;
   out["nonorientable_after_pairing"] = r.nonorientable_after_pairing;
   out["ambiguous_nested_shells"] = r.ambiguous_nested_shells;
+  out["components_topology_changed"] = r.topology_changes.size();
   out["gaps"] = gaps_json(r.gaps);
   if (r.holes.max_edges > 0)  // only when asked for: reports of a default repair stay as they were
     out["holes"] = holes_json(r.holes);

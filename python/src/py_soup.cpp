@@ -28,6 +28,7 @@ py::object read_info_dict(const PySoup& s) {
   info["declared_faces"] = s.info.declared_faces;
   info["faces_kept"] = s.info.faces_kept;
   info["faces_split"] = s.info.faces_split;
+  info["keyhole_polygons"] = s.info.keyhole_polygons;
   info["faces_set_aside"] = s.info.faces_set_aside;
   info["dangling_edges"] = s.info.dangling_edges;
   info["lone_points"] = s.info.lone_points;
@@ -45,7 +46,7 @@ py::bytes raw_bytes(const std::vector<T>& values) {
   return py::bytes(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
 }
 
-//! (positions, corner_vertices, face_begin as raw bytes, path, the 15 values of ReadInfo,
+//! (positions, corner_vertices, face_begin as raw bytes, path, the 16 values of ReadInfo,
 //! not_held). Every ReadInfo value counts: check and repair read faces_without_corners, and repair
 //! takes float_coordinates for the weld tolerance.
 py::tuple pickle_state(const PySoup& s) {
@@ -57,7 +58,7 @@ py::tuple pickle_state(const PySoup& s) {
                      i.faces_set_aside, i.dangling_edges, i.lone_points, i.strip_joins,
                      i.unknown_records, i.color_map_indices, i.empty_records, i.trailing_bytes,
                      i.faces_without_corners, i.vertices_welded_by_position,
-                     std::size_t(i.float_coordinates ? 1 : 0)),
+                     std::size_t(i.float_coordinates ? 1 : 0), i.keyhole_polygons),
       s.not_held);
 }
 
@@ -71,7 +72,7 @@ void unpack_bytes(const py::handle& item, std::vector<T>& values) {
 }
 
 //! The inverse of pickle_state() (also of older states: 5 items from before not_held was pickled,
-//! 12 ReadInfo values from before the last three); the soup is validated.
+//! 12 and 15 ReadInfo values from before the last three and the last one); the soup is validated.
 //! \throws InvalidSoupError on a state of another shape
 std::shared_ptr<PySoup> unpickle(const py::tuple& state) {
   if (state.size() != 5 && state.size() != 6)
@@ -82,7 +83,7 @@ std::shared_ptr<PySoup> unpickle(const py::tuple& state) {
   unpack_bytes(state[2], soup->soup.face_begin);
   soup->path = state[3].cast<std::string>();
   const auto i = state[4].cast<std::vector<std::size_t>>();
-  if (i.size() != 12 && i.size() != 15)
+  if (i.size() != 12 && i.size() != 15 && i.size() != 16)
     throw InvalidSoupError("Soup: bad pickle state");
   ReadInfo& info = soup->info;
   info.declared_vertices = i[0], info.declared_faces = i[1];
@@ -90,10 +91,12 @@ std::shared_ptr<PySoup> unpickle(const py::tuple& state) {
   info.dangling_edges = i[5], info.lone_points = i[6], info.strip_joins = i[7];
   info.unknown_records = i[8], info.color_map_indices = i[9], info.empty_records = i[10];
   info.trailing_bytes = i[11];
-  if (i.size() == 15) {
+  if (i.size() >= 15) {
     info.faces_without_corners = i[12], info.vertices_welded_by_position = i[13];
     info.float_coordinates = i[14] != 0;
   }
+  if (i.size() == 16)
+    info.keyhole_polygons = i[15];
   if (state.size() == 6)
     soup->not_held = state[5].cast<std::vector<std::string>>();
   validate_soup(soup->soup);

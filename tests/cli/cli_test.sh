@@ -1176,6 +1176,22 @@ snapshot_views)
     shaded=$(convert "$work/ur.png" -crop 760x700+822+80 +repage -fuzz 3% -fill black +opaque white \
       -fill white -opaque white -negate -format '%[fx:round(mean*w*h)]' info:)
     [ "$shaded" -gt 50000 ] 2>/dev/null || fail "the 3MF result is not drawn: $shaded model pixels"
+    # A keyhole polygon (assimp's ring) is drawn as the file has it on the left, its hole open
+    # (the middle is the white background), as the repaired triangles are on the right: the two
+    # halves shade about as many pixels (main drew the hole filled: 364974 against 54912).
+    expect_exit 0 "$mb" repair "$models/../../tests/data/realworld2/assimp_concave_polygon.obj" \
+      "$work/ring.obj" --before-after "$work/ring.png" --view x
+    model_pixels() {  # model_pixels FILE GEOMETRY -> count of pixels that are not white there
+      convert "$1" -crop "$2" +repage -fuzz 3% -fill black +opaque white -fill white -opaque white \
+        -negate -format '%[fx:round(mean*w*h)]' info:
+    }
+    left=$(model_pixels "$work/ring.png" 800x700+0+80)
+    right=$(model_pixels "$work/ring.png" 800x700+802+80)
+    [ "$right" -gt 50000 ] && [ "$left" -gt $((right * 95 / 100)) ] &&
+      [ "$left" -lt $((right * 105 / 100)) ] 2>/dev/null ||
+      fail "keyhole before/after: $left model pixels on the left, $right on the right"
+    [ "$(convert "$work/ring.png" -format '%[pixel:p{400,420}]' info:)" = "srgba(255,255,255,1)" ] ||
+      fail "keyhole's hole covered in the before half"
   fi
   expect_exit 2 "$mb" repair "$models/prisms24.obj" "$work/q.obj" --before-after "$work/ba.jpg"
   expect_in "$work/err" "name it .png"

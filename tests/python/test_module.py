@@ -443,6 +443,18 @@ def test_a_pickled_soup_checks_and_repairs_as_the_file(tmp_path):
     assert cura["vertices_welded_by_position"] > 0
 
 
+def test_a_keyhole_polygon_is_read_and_pickled_as_one():
+    import pickle
+
+    with pytest.warns(UserWarning, match=r"1 keyhole polygon \(an outline and holes joined"):
+        soup = meshbridge.read(REALWORLD2 / "assimp_concave_polygon.obj")
+    assert soup.read_info["faces_split"] == 1 and soup.read_info["keyhole_polygons"] == 1
+    assert "pinched" not in soup.reading
+    assert pickle.loads(pickle.dumps(soup)).read_info == soup.read_info
+    report = meshbridge.check(soup)
+    assert report["keyhole_polygons"] == 1 and report["degenerate_faces"] == 0
+
+
 def test_weld_closes_a_crack_at_the_distance_given():
     # Two triangles that should share the edge 0-2; the second has its own copy of vertex 2,
     # 0.001 away: a crack.

@@ -178,16 +178,25 @@ TEST(KeyholePolygon, a_bridge_of_two_slits_through_a_vertex_of_its_own_is_cut_to
   expect_polygon_with_holes(s, r, 1, 12, 1);
 }
 
-TEST(KeyholePolygon, removed_as_a_degenerate_face_it_is_neither_cut_nor_counted_twice) {
+// A keyhole polygon is counted once, as a keyhole: not among the degenerate faces (so
+// remove_degenerate_faces keeps it, triangulated), no pinch vertex, and the reading says so.
+TEST(KeyholePolygon, is_no_degenerate_face_and_is_triangulated_with_the_degenerate_removed) {
   const Soup s = with_polygon(keyhole_points(false), kOneHole, 0, false);
+  const DefectReport d = detect_defects(s);
+  EXPECT_EQ(d.keyhole_polygons_triangulated, 1u);
+  EXPECT_TRUE(d.degenerate_faces.empty());
+  EXPECT_EQ(d.num_singular_vertices(), 0u);
+  EXPECT_TRUE(d.has_defects());  // repair changes it: check says so
   RepairOptions options;
   options.remove_degenerate_faces = true;
   const RepairResult r = repair(s, options);
-  EXPECT_EQ(r.report.faces_out, 0u);
-  EXPECT_EQ(r.report.keyhole_polygons_triangulated, 0u);
-  EXPECT_EQ(r.report.degenerate_faces_removed, 2u);  // its two loops, as before
-  EXPECT_EQ(r.report.faces_in + r.report.faces_added_by_split,
-            r.report.faces_out + r.report.degenerate_faces_removed);
+  expect_polygon_with_holes(s, r, 1, 12);
+  EXPECT_EQ(r.report.degenerate_faces_removed, 0u);
+  // A pinched polygon that is no keyhole (two triangles through one vertex) is degenerate.
+  Soup bow = keyhole_points(false);
+  bow.add_polygon({0, 1, 4, 0, 2, 3});
+  EXPECT_EQ(detect_defects(bow).degenerate_faces, std::vector<Index>{0});
+  EXPECT_EQ(detect_defects(bow).keyhole_polygons_triangulated, 0u);
 }
 
 TEST(KeyholePolygon, a_hole_wound_like_its_outline_is_split_and_its_slit_set_aside) {
@@ -243,6 +252,29 @@ class KeyholeFiles : public test_support::ScratchFolderTest {
   KeyholeFiles() : ScratchFolderTest("keyhole") {}
 };
 
+// Reading names a keyhole polygon as one (counted in faces_split, and in keyhole_polygons), not
+// as pinched; a pinched polygon that is no keyhole keeps its words.
+TEST_F(KeyholeFiles, reading_names_a_keyhole_polygon_as_one) {
+  const std::string in = write("keyhole_and_bow.obj",
+                               "v 0 0 0\nv 4 0 0\nv 4 4 0\nv 0 4 0\n"
+                               "v 1 1 0\nv 1 3 0\nv 3 3 0\nv 3 1 0\nv 9 9 0\n"
+                               "f 1 5 6 7 8 5 1 2 3 4\nf 2 3 9 2 4 9\n");
+  ReadInfo info;
+  read_soup(in, &info);
+  EXPECT_EQ(info.faces_kept, 0u);
+  EXPECT_EQ(info.faces_split, 2u);
+  EXPECT_EQ(info.keyhole_polygons, 1u);
+  EXPECT_EQ(describe_reading(info),
+            "2 face records: 0 kept, 1 split (pinched: a vertex revisited), 1 keyhole polygon (an "
+            "outline and holes joined by slits: cut into triangles, the holes left open)");
+  ReadInfo assimp;
+  read_soup(std::string(MESHBRIDGE_REALWORLD_DIR) + "/../realworld2/assimp_concave_polygon.obj",
+            &assimp);
+  EXPECT_EQ(describe_reading(assimp),
+            "1 face record: 0 kept, 1 keyhole polygon (an outline and holes joined by slits: cut "
+            "into triangles, the holes left open)");
+}
+
 TEST_F(KeyholeFiles, an_obj_keyhole_polygon_repaired_and_read_back_keeps_its_hole) {
   const std::string in = write("keyhole.obj",
                                "v 0 0 0\nv 4 0 0\nv 4 4 0\nv 0 4 0\n"
@@ -285,6 +317,8 @@ TEST(KeyholePolygon, assimps_concave_polygon_is_a_ring_with_an_open_hole) {
   EXPECT_EQ(d.num_boundary_loops, 2u);
   EXPECT_EQ(d.boundary_edges.size(), 64u);
   EXPECT_EQ(d.keyhole_polygons_triangulated, 1u);
+  EXPECT_TRUE(d.degenerate_faces.empty());  // counted once, as a keyhole
+  EXPECT_EQ(d.num_singular_vertices(), 0u);
   EXPECT_EQ(d.slits_set_aside, 0u);
   const RepairResult r = repair(s);
   EXPECT_EQ(r.report.keyhole_polygons_triangulated, 1u);

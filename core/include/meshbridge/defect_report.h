@@ -41,8 +41,10 @@ struct DefectReport {
   std::vector<VertexPair> boundary_edges;     //!< edges with exactly 1 contender
   std::size_t num_boundary_loops = 0;         //!< holes: connected chains of boundary edges
   std::vector<Index> isolated_vertices;       //!< vertices used by no polygon
-  std::vector<Index> degenerate_faces;        //!< polygons with a repeated vertex index
-  std::vector<Index> faces_set_aside;         //!< degenerate ones with < 3 distinct corners
+  //! polygons with a repeated vertex index, keyhole polygons not among them (counted once, in
+  //! keyhole_polygons_triangulated)
+  std::vector<Index> degenerate_faces;
+  std::vector<Index> faces_set_aside;  //!< degenerate ones with < 3 distinct corners
   //! Keyhole slits: two-corner pieces of pinched polygons (the polygon runs a -> b and later
   //! b -> a). Every slit's edge counts in num_edges and joins the polygon's loops in
   //! num_components, as in the file. A polygon that is an outline with holes joined by its slits

@@ -31,6 +31,10 @@ struct ReadInfo {
   //! Pinched polygons that revisit a vertex (e.g. "f 1 2 3 1 4 5"); repair splits them into
   //! simple loops, the same way for every format.
   std::size_t faces_split = 0;
+  //! Of `faces_split`, keyhole polygons: an outline and holes joined by slits (the polygon runs
+  //! a -> b and later b -> a), which repair cuts into triangles as one polygon with holes, the
+  //! holes left open (DefectReport::keyhole_polygons_triangulated). The others are pinched.
+  std::size_t keyhole_polygons = 0;
   //! Records with fewer than 3 distinct corners (e.g. an STL facet with one point three times,
   //! "f 1 2"). They are in the soup (a record with 1 or 2 corners repeats its last corner up to
   //! a triangle, so soup face f is record f) and in `faces` of every report, and repair sets
@@ -85,8 +89,9 @@ struct ReadInfo {
 
 //! One line saying what became of the file's records, e.g. "10 face records: 8 kept, 1 split
 //! (pinched), 1 set aside (< 3 distinct corners); 3 dangling edges, 1 lone point (not part of
-//! the surface)". Parts that are 0 are left out; a file read unchanged gives "N face records:
-//! all kept".
+//! the surface)"; a keyhole polygon is named as one ("1 keyhole polygon (an outline and holes
+//! joined by slits: cut into triangles, the holes left open)"), not as pinched. Parts that are 0
+//! are left out; a file read unchanged gives "N face records: all kept".
 std::string describe_reading(const ReadInfo& info);
 
 //! An 8-bit RGBA colour (alpha 255 when the file gives none).

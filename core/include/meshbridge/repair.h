@@ -12,6 +12,7 @@
 #include "meshbridge/soup.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace meshbridge {
 
@@ -35,8 +36,10 @@ struct RepairOptions {
   //! or a cavity wound the wrong way): kept as written (material, default) or turned into a
   //! cavity (even-odd nesting). Counted either way in RepairReport::ambiguous_nested_shells.
   AmbiguousNesting nested_shells = AmbiguousNesting::material;
-  bool remove_duplicate_faces = false;   //!< drop polygons whose vertex set an earlier one has
-  bool remove_degenerate_faces = false;  //!< drop polygons that repeat a vertex index
+  bool remove_duplicate_faces = false;  //!< drop polygons whose vertex set an earlier one has
+  //! drop polygons that repeat a vertex index (DefectReport::degenerate_faces: not keyhole
+  //! polygons, which are cut into triangles with their holes open); default false
+  bool remove_degenerate_faces = false;
   //! drop polygons of (near) zero area (DefectReport::zero_area_faces: slivers and needles
   //! whose corners are distinct but on one line or nearly at one point); default false
   bool remove_zero_area_faces = false;
@@ -53,6 +56,14 @@ struct RepairOptions {
   FillHolesOptions fill_holes;
   //! Told when the stages group, pair and detect start and end (default empty: not called).
   ProgressCallback progress;
+};
+
+//! A component of the repaired mesh whose Euler characteristic is not that of the same faces in
+//! the input (RepairReport::topology_changes).
+struct TopologyChange {
+  Index first_face = 0;        //!< the component's first face in the output
+  long long euler_before = 0;  //!< V - E + F of its faces in the input, every edge counted once
+  long long euler_after = 0;   //!< V - E + F of the component in the output
 };
 
 //! What repair changed. Every count is exact.
@@ -100,6 +111,11 @@ struct RepairReport {
   //! Each adds one vertex (its IndexedMesh::vertex_origin is kNoIndex: no input vertex) and one
   //! corner to each of the two faces.
   std::size_t edges_split_to_stay_manifold = 0;
+  //! Polygons given a corner by those midpoint splits (each counted once, however many it got),
+  //! and how many of them were triangles (no longer triangles in the output: one midpoint makes
+  //! a quad). A split pair's two faces usually get one corner each: 2 per edge.
+  std::size_t faces_given_midpoints = 0;
+  std::size_t triangles_given_midpoints = 0;
   std::size_t components_before = 0;  //!< as the user sees the input (through all contenders)
   std::size_t components_after = 0;
   std::size_t boundary_edges_before = 0;
@@ -112,6 +128,15 @@ struct RepairReport {
   //! Closed shells nested in a closed shell and wound like it as written (see
   //! RepairOptions::nested_shells): ambiguous between an insert and a wrongly wound cavity.
   std::size_t ambiguous_nested_shells = 0;
+  //! Components of the output (before hole filling) whose Euler characteristic V - E + F differs
+  //! from that of the same faces as pairing got them (after gap closing, a keyhole polygon as
+  //! its triangles), where every vertex and every edge counts once, a singular edge too: pairing
+  //! that joins two sheets at a singular edge into a handle (a shell of Euler characteristic 2
+  //! becomes a torus, 0), sides left unpaired within one component, a pinch vertex split within
+  //! one component. Components pairing separated keep theirs (two cubes on one edge: 2 and 2).
+  //! In the order of their first faces; the JSON report gives the count,
+  //! `components_topology_changed`.
+  std::vector<TopologyChange> topology_changes;
   CloseGapsReport gaps;   //!< what gap closing did before pairing
   FillHolesReport holes;  //!< what hole filling did after pairing (all 0 when off)
   DefectReport before;    //!< detection on the input (before gap closing)

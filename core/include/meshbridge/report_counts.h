@@ -63,7 +63,9 @@ void append_counts(ReportCounts& out, const SelfIntersectionReport& crossings,
 //! faces_flipped, duplicate_faces_removed, degenerate_faces_removed, zero_area_faces_removed,
 //! vertices_in, vertices_out, vertices_split, isolated_vertices_removed, sides_cut,
 //! sides_cut_for_orientation, sides_cut_to_stay_manifold, sides_paired_with_copies,
-//! edges_split_to_stay_manifold, sides_stitched, ambiguous_nested_shells; then gaps.*, holes.*
+//! edges_split_to_stay_manifold, faces_given_midpoints, triangles_given_midpoints,
+//! sides_stitched, nonorientable_after_pairing, ambiguous_nested_shells,
+//! components_topology_changed; then gaps.*, holes.*
 //! (always, 0 when filling was off), before.* and after.* (the check counts of `before` and
 //! `after`).
 void append_counts(ReportCounts& out, const RepairReport& report);

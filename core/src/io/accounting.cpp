@@ -2,8 +2,10 @@
 // Every face record as kept, split or set aside: the same rule as repair's WorkingSoup. The same
 // walk checks each face as validate_soup() does, so reading makes one pass over the corners.
 
+#include "geometry/triangulate.h"
 #include "io/formats.h"
 #include "validate_faces.h"
+#include "working_soup.h"
 
 #include <algorithm>
 #include <vector>
@@ -15,6 +17,7 @@ void account_faces(const Soup& soup, ReadInfo& info) {
   const Index* corners = soup.corner_vertices.data();
   const std::size_t vertices = soup.num_vertices();
   std::vector<Index> loop;
+  Triangulation keyhole;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     // Fast path: a valid triangle with three different corners (almost every face).
     const std::size_t begin = soup.face_begin[f];
@@ -42,9 +45,16 @@ void account_faces(const Soup& soup, ReadInfo& info) {
         static_cast<std::size_t>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
     if (distinct < 3)
       ++info.faces_set_aside;
-    else if (distinct < loop.size())
+    else if (distinct < loop.size()) {
       ++info.faces_split;
-    else
+      // A keyhole polygon, as WorkingSoup tells it: a slit, and triangles as one polygon.
+      std::vector<std::pair<Index, Index>> slits;
+      simple_loops(
+          loop, [](Index v) { return v; }, &slits);
+      if (!slits.empty() &&
+          triangulate_keyhole(soup, std::vector<Index>(polygon.begin(), polygon.end()), keyhole))
+        ++info.keyhole_polygons;
+    } else
       ++info.faces_kept;
   }
   info.faces_set_aside += info.faces_without_corners;

@@ -15,8 +15,13 @@ std::string describe_reading(const ReadInfo& info) {
     text += "all kept";
   } else {
     text += std::to_string(info.faces_kept) + " kept";
-    if (info.faces_split > 0)
-      text += ", " + std::to_string(info.faces_split) + " split (pinched: a vertex revisited)";
+    const std::size_t pinched = info.faces_split - info.keyhole_polygons;
+    if (pinched > 0)
+      text += ", " + std::to_string(pinched) + " split (pinched: a vertex revisited)";
+    if (info.keyhole_polygons > 0) {
+      text += ", " + counted(info.keyhole_polygons, "keyhole polygon") +
+              " (an outline and holes joined by slits: cut into triangles, the holes left open)";
+    }
     if (info.faces_set_aside > 0) {
       text += ", " + std::to_string(info.faces_set_aside) + " set aside (< 3 distinct corners";
       if (info.faces_without_corners > 0)

@@ -7,6 +7,7 @@
 #include "pipeline/orientation.h"
 #include "pipeline/pairing.h"
 #include "pipeline/stitching.h"
+#include "pipeline/topology.h"
 
 namespace meshbridge::detail {
 
@@ -77,7 +78,11 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
   if (crowded.rounds > 0 && options.orient)
     counts.ambiguous_nested_shells = orient_components(soup, grouped, pairing, options.nested);
 
-  // 7. Emit the output polygons once.
+  // 7. Emit the output polygons once, after counting what the steps did to the topology.
+  result.topology_changes = topology_changes(soup, grouped, pairing, split);
+  const MidpointFaces given = midpoint_faces(soup, grouped.corner_face, pairing);
+  counts.faces_given_midpoints = given.faces;
+  counts.triangles_given_midpoints = given.triangles;
   counts.vertices_split = split.vertex_origin.size() - soup.num_vertices();
   for (char f : pairing.flipped)
     counts.faces_flipped += f;

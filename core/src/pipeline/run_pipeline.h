@@ -6,6 +6,7 @@
 
 #include "meshbridge/indexed_mesh.h"
 #include "meshbridge/pairing.h"
+#include "meshbridge/repair.h"
 
 #include "pipeline/grouping.h"
 #include "pipeline/side_pairing.h"
@@ -36,6 +37,8 @@ struct PipelineCounts {
   std::size_t sides_cut_to_stay_manifold = 0;    //!< always 0 (make_output_edges_manifold())
   std::size_t sides_paired_with_copies = 0;      //!< re-paired so copies of a face glue, not cut
   std::size_t edges_split_to_stay_manifold = 0;  //!< pairs given a midpoint vertex, not cut
+  std::size_t faces_given_midpoints = 0;         //!< polygons given a corner by those splits
+  std::size_t triangles_given_midpoints = 0;     //!< of them, triangles
   std::size_t vertices_split = 0;                //!< vertex copies added
   std::size_t nonorientable_components = 0;
   std::size_t ambiguous_nested_shells = 0;  //!< closed shells wound like their container
@@ -49,6 +52,9 @@ struct PipelineResult {
   SidePairing pairing;
   IndexedMesh mesh;  //!< origins refer to the *input* soup
   PipelineCounts counts;
+  //! Components whose Euler characteristic pairing changed (topology_changes()); first faces
+  //! are the working soup's (the output's, face for face).
+  std::vector<TopologyChange> topology_changes;
 };
 
 //! Runs on `working` with its sides already grouped (as from group_sides(working.soup()));
