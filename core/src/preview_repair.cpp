@@ -123,8 +123,13 @@ std::string to_text(const RepairPreview& preview) {
   const std::size_t cut = r.sides_cut + r.sides_cut_for_orientation + r.sides_cut_to_stay_manifold;
   add(parts, cut, "cut " + counted(cut, "side") + " open");
   add(parts, r.edges_split_to_stay_manifold,
-      "split " + counted(r.edges_split_to_stay_manifold, "edge") + " at the midpoint");
+      "split " + counted(r.edges_split_to_stay_manifold, "edge") + " at the midpoint (" +
+          counted(r.edges_split_to_stay_manifold, "vertex") + " added to " +
+          counted(r.faces_given_midpoints, "face") + ")");
   add(parts, r.faces_flipped, "reverse " + counted(r.faces_flipped, "face"));
+  add(parts, r.topology_changes.size(),
+      "change the topology of " + counted(r.topology_changes.size(), "component") +
+          " (Euler characteristic)");
   add(parts, r.holes.faces_added,
       "fill " + counted(r.holes.holes_filled, "hole") + " with " +
           counted(r.holes.faces_added, "triangle"));
