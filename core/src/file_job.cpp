@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "meshbridge/file_job.h"
+#include "meshbridge/preview_repair.h"
 #include "meshbridge/repair_file.h"
 
 #include "meshbridge/detect_defects.h"
@@ -246,13 +247,9 @@ FileJobResult run_file_job(const FileJob& job, const FileJobOptions& options) {
     result.crossings = std::move(file.crossings);
     result.report = std::move(file.report);
     const RepairReport& r = result.report;
-    // Clean: the mesh is written as read, every vertex and face in place.
-    const bool clean = !r.before.has_defects() && r.faces_flipped == 0 &&
-                       r.holes.faces_added == 0 &&
-                       r.gaps.vertices_welded + r.gaps.t_junctions_closed == 0 &&
-                       r.duplicate_faces_removed + r.degenerate_faces_removed +
-                               r.zero_area_faces_removed + r.isolated_vertices_removed ==
-                           0;
+    // Clean: repair changed nothing (as `check` exits 0), the mesh is written as read, every
+    // vertex and face in place; an open surface it leaves as it is is clean too.
+    const bool clean = !repair_changes_input(r) && !file.info.changed_anything();
     return finish(clean ? FileStatus::clean : FileStatus::repaired, "", &r, &file.info);
   } catch (const std::bad_alloc&) {
     return finish(FileStatus::failed, job.input + ": out of memory", nullptr, read_info());
