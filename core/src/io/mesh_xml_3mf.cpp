@@ -373,11 +373,15 @@ std::vector<unsigned char> package_without_meshes_or_throw(
   bool read = false;
   if (can_inflate_in_chunks() && (route == nullptr || (std::strcmp(route, "whole") != 0 &&
                                                        std::strcmp(route, "pugixml") != 0))) {
+    // Inflated from the package as it is in memory (a copy of the 14 MB deflated part of a
+    // 1M-triangle 3MF took 7 % of the read), else from a copy libzip reads out.
     PartStat part;
-    PartBytes compressed;
-    read = package.read_deflated(root, part, compressed) &&
-           read_meshes_streamed(reinterpret_cast<const unsigned char*>(compressed.data.get()),
-                                compressed.size, part.size, part.crc, meshes, stripped);
+    PartBytes copy;
+    const unsigned char* compressed = package.deflated_in_place(root, part);
+    if (compressed == nullptr && package.read_deflated(root, part, copy))
+      compressed = reinterpret_cast<const unsigned char*>(copy.data.get());
+    read = compressed != nullptr && read_meshes_streamed(compressed, part.compressed_size,
+                                                         part.size, part.crc, meshes, stripped);
   }
   if (!read) {
     meshes.clear();
