@@ -95,7 +95,7 @@ class Reader {
  public:
   using MeshesXml = std::map<std::uint32_t, MeshXml>;
   //! `meshes`: the meshes pugixml read, by object id (may be null: lib3mf read them all).
-  Reader(const std::string& path, Soup& soup, const MeshesXml* meshes)
+  Reader(const std::string& path, Soup& soup, MeshesXml* meshes)
       : path_(path), soup_(soup), meshes_(meshes) {}
 
   //! What the placed mesh objects carry that MeshBridge reads past (see add_mesh).
@@ -126,7 +126,7 @@ class Reader {
                 bool in_build) {
     DWORD id = 0;
     check(NMR::lib3mf_resource_getresourceid(object, &id), path_, "get an object's id");
-    const auto parsed = meshes_ != nullptr ? meshes_->find(id) : MeshesXml::const_iterator();
+    const auto parsed = meshes_ != nullptr ? meshes_->find(id) : MeshesXml::iterator();
     const bool from_xml = meshes_ != nullptr && parsed != meshes_->end();
     const float* positions = nullptr;
     const std::uint32_t* corners = nullptr;
@@ -135,7 +135,7 @@ class Reader {
       positions = parsed->second.positions.data();
       corners = parsed->second.corners.data();
       vertex_count = parsed->second.positions.size() / 3;
-      triangle_count = parsed->second.corners.size() / 3;
+      triangle_count = (id == moved_ ? moved_corners_ : parsed->second.corners.size()) / 3;
     } else {
       read_lib3mf_mesh(object);
       positions = vertices_.empty() ? nullptr : vertices_[0].m_fPosition;
@@ -162,16 +162,38 @@ class Reader {
       const float* p = positions + 3 * v;
       soup_.add_vertex(transformed ? apply(placement, p) : Point(p[0], p[1], p[2]));
     }
-    for (std::size_t c = 0; c < 3 * triangle_count; ++c) {
+    for (std::size_t c = 0; !from_xml && c < 3 * triangle_count; ++c) {  // the scan checked its own
       if (corners[c] >= vertex_count) {
         throw ReadError(path_ + ": 3MF triangle " + std::to_string(soup_.num_faces() + c / 3) +
                         " uses vertex " + std::to_string(corners[c]) + " of an object with " +
                         std::to_string(vertex_count) + " vertices");
       }
     }
-    // Appended whole, not a triangle at a time (a tenth of a 1M-triangle 3MF's read).
     const std::size_t first = soup_.num_corners();
-    soup_.corner_vertices.resize(first + 3 * triangle_count);
+    if (from_xml && first == 0 && offset == 0 && !reversed && moved_ == kNone) {
+      // The first mesh read apart, as it is: its corners become the soup's (no copy of 12 MB for
+      // 1M triangles); a later placement of the same mesh copies them from there.
+      soup_.corner_vertices.swap(parsed->second.corners);
+      moved_ = id;
+      moved_corners_ = soup_.corner_vertices.size();
+    } else {
+      // Appended whole, not a triangle at a time (a tenth of a 1M-triangle 3MF's read).
+      soup_.corner_vertices.resize(first + 3 * triangle_count);
+      if (from_xml && id == moved_)
+        corners = soup_.corner_vertices.data();  // after the resize: it may have moved
+      add_corners(corners, triangle_count, offset, reversed, first);
+    }
+    const std::size_t faces = soup_.num_faces();
+    soup_.face_begin.resize(faces + 1 + triangle_count);
+    for (std::size_t t = 1; t <= triangle_count; ++t)
+      soup_.face_begin[faces + t] = static_cast<Index>(first + 3 * t);
+    count_properties(object, triangle_count, from_xml);
+  }
+
+  // Writes the corners of `triangle_count` triangles from `corners` at corner `first` of the
+  // soup, each vertex number `offset` on, their order reversed if `reversed`.
+  void add_corners(const std::uint32_t* corners, std::size_t triangle_count, Index offset,
+                   bool reversed, std::size_t first) {
     Index* out = soup_.corner_vertices.data() + first;
     for (std::size_t t = 0; t < triangle_count; ++t) {
       const std::uint32_t* i = corners + 3 * t;
@@ -179,11 +201,6 @@ class Reader {
       out[3 * t + 1] = offset + i[reversed ? 2 : 1];
       out[3 * t + 2] = offset + i[reversed ? 1 : 2];
     }
-    const std::size_t faces = soup_.num_faces();
-    soup_.face_begin.resize(faces + 1 + triangle_count);
-    for (std::size_t t = 1; t <= triangle_count; ++t)
-      soup_.face_begin[faces + t] = static_cast<Index>(first + 3 * t);
-    count_properties(object, triangle_count, from_xml);
   }
 
   // lib3mf's mesh of `object` into vertices_ and triangles_.
@@ -359,8 +376,11 @@ class Reader {
   static constexpr int kMaxDepth = 64;
   const std::string& path_;
   Soup& soup_;
-  const MeshesXml* meshes_;
-  std::set<DWORD> placed_;  // mesh objects some build item reached
+  MeshesXml* meshes_;
+  static constexpr DWORD kNone = ~DWORD(0);
+  DWORD moved_ = kNone;            // the mesh whose corners went into the soup (add_mesh)
+  std::size_t moved_corners_ = 0;  // how many
+  std::set<DWORD> placed_;         // mesh objects some build item reached
   std::vector<NMR::MODELMESHVERTEX> vertices_;
   std::vector<NMR::MODELMESHTRIANGLE> triangles_;
   Properties properties_;
