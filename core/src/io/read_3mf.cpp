@@ -80,7 +80,7 @@ bool mirrors(const Affine& a) {
   return det < 0;
 }
 
-Point apply(const Affine& a, const float p[3]) {
+Point apply(const Affine& a, const Point& p) {
   Point q;
   for (int j = 0; j < 3; ++j)
     q[j] = a[j][0] * p[0] + a[j][1] * p[1] + a[j][2] * p[2] + a[j][3];
@@ -128,17 +128,19 @@ class Reader {
     check(NMR::lib3mf_resource_getresourceid(object, &id), path_, "get an object's id");
     const auto parsed = meshes_ != nullptr ? meshes_->find(id) : MeshesXml::iterator();
     const bool from_xml = meshes_ != nullptr && parsed != meshes_->end();
-    const float* positions = nullptr;
+    const Point* points = nullptr;  // read apart
+    const float* floats = nullptr;  // lib3mf's
     const std::uint32_t* corners = nullptr;
     std::size_t vertex_count = 0, triangle_count = 0;
     if (from_xml) {
-      positions = parsed->second.positions.data();
+      points = parsed->second.positions.data();
       corners = parsed->second.corners.data();
-      vertex_count = parsed->second.positions.size() / 3;
-      triangle_count = (id == moved_ ? moved_corners_ : parsed->second.corners.size()) / 3;
+      vertex_count = id == moved_.positions ? moved_.vertex_count : parsed->second.positions.size();
+      triangle_count =
+          (id == moved_.corners ? moved_.corner_count : parsed->second.corners.size()) / 3;
     } else {
       read_lib3mf_mesh(object);
-      positions = vertices_.empty() ? nullptr : vertices_[0].m_fPosition;
+      floats = vertices_.empty() ? nullptr : vertices_[0].m_fPosition;
       corners = triangles_.empty() ? nullptr : triangles_[0].m_nIndices;
       vertex_count = vertices_.size();
       triangle_count = triangles_.size();
@@ -157,10 +159,21 @@ class Reader {
       runs_.emplace_back(soup_.num_faces(), kind);
     const bool reversed = transformed && mirrors(placement);
     const Index offset = static_cast<Index>(soup_.num_vertices());
-    soup_.positions.reserve(soup_.num_vertices() + vertex_count);
-    for (std::size_t v = 0; v < vertex_count; ++v) {
-      const float* p = positions + 3 * v;
-      soup_.add_vertex(transformed ? apply(placement, p) : Point(p[0], p[1], p[2]));
+    // The first mesh read apart, as it is: its positions and corners become the soup's (no copy
+    // of 25 MB for 1M triangles); a later placement of the same mesh copies them from there.
+    if (from_xml && offset == 0 && !transformed && moved_.positions == kNone) {
+      soup_.positions.swap(parsed->second.positions);
+      moved_.positions = id;
+      moved_.vertex_count = soup_.num_vertices();
+    } else {
+      soup_.positions.reserve(offset + vertex_count);
+      if (from_xml && id == moved_.positions)
+        points = soup_.positions.data();  // after the reserve: it may have moved
+      for (std::size_t v = 0; v < vertex_count; ++v) {
+        const Point p =
+            from_xml ? points[v] : Point(floats[3 * v], floats[3 * v + 1], floats[3 * v + 2]);
+        soup_.add_vertex(transformed ? apply(placement, p) : p);
+      }
     }
     for (std::size_t c = 0; !from_xml && c < 3 * triangle_count; ++c) {  // the scan checked its own
       if (corners[c] >= vertex_count) {
@@ -170,16 +183,14 @@ class Reader {
       }
     }
     const std::size_t first = soup_.num_corners();
-    if (from_xml && first == 0 && offset == 0 && !reversed && moved_ == kNone) {
-      // The first mesh read apart, as it is: its corners become the soup's (no copy of 12 MB for
-      // 1M triangles); a later placement of the same mesh copies them from there.
+    if (from_xml && first == 0 && offset == 0 && !reversed && moved_.corners == kNone) {
       soup_.corner_vertices.swap(parsed->second.corners);
-      moved_ = id;
-      moved_corners_ = soup_.corner_vertices.size();
+      moved_.corners = id;
+      moved_.corner_count = soup_.num_corners();
     } else {
       // Appended whole, not a triangle at a time (a tenth of a 1M-triangle 3MF's read).
       soup_.corner_vertices.resize(first + 3 * triangle_count);
-      if (from_xml && id == moved_)
+      if (from_xml && id == moved_.corners)
         corners = soup_.corner_vertices.data();  // after the resize: it may have moved
       add_corners(corners, triangle_count, offset, reversed, first);
     }
@@ -378,9 +389,12 @@ class Reader {
   Soup& soup_;
   MeshesXml* meshes_;
   static constexpr DWORD kNone = ~DWORD(0);
-  DWORD moved_ = kNone;            // the mesh whose corners went into the soup (add_mesh)
-  std::size_t moved_corners_ = 0;  // how many
-  std::set<DWORD> placed_;         // mesh objects some build item reached
+  // The meshes whose positions and whose corners went into the soup (add_mesh), and how many.
+  struct Moved {
+    DWORD positions = kNone, corners = kNone;
+    std::size_t vertex_count = 0, corner_count = 0;
+  } moved_;
+  std::set<DWORD> placed_;  // mesh objects some build item reached
   std::vector<NMR::MODELMESHVERTEX> vertices_;
   std::vector<NMR::MODELMESHTRIANGLE> triangles_;
   Properties properties_;
