@@ -16,9 +16,9 @@
 
 namespace meshbridge::detail {
 
-//! Appends x, y, z (each read as a double, rounded to a float, as lib3mf does) of every vertex
-//! of the list text [begin, end) to `positions`; false (and `positions` as it was) where the text
-//! leaves that narrow form.
+//! Appends every vertex of the list text [begin, end) to `positions` (x, y, z each read as a
+//! double and rounded to a float, as lib3mf does, held as doubles); false (and `positions` as it
+//! was) where the text leaves that narrow form.
 bool scan_vertices(const char* begin, const char* end, std::vector<Point>& positions);
 
 //! Appends v1, v2, v3 of every triangle of the list text [begin, end) to `corners`, each below
