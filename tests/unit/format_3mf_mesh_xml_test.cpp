@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace meshbridge {
@@ -149,6 +150,36 @@ TEST(Format3mfMeshXml, slicer_files_read_the_same_both_ways) {
   // back the same way).
   EXPECT_EQ(o.attributes.metadata,
             (std::vector<Metadata>{{"Title", "A &amp; B &lt;3"}, {"Designer", ""}}));
+}
+
+TEST(Format3mfMeshXml, a_mesh_placed_many_times_reads_the_same_both_ways) {
+  // The first placement takes the scanned corners as the soup's (read_3mf.cpp, add_mesh); the
+  // later ones copy them from there, moved, mirrored (corner order reversed) or through a
+  // component; a mirrored first placement copies from the start.
+  const std::string mirror = R"( transform="-1 0 0 0 1 0 0 0 1 0 0 0")";
+  const std::string shift = R"( transform="1 0 0 0 1 0 0 0 1 5 0 0")";
+  const std::string components = R"(<object id="4" type="model"><components>)"
+                                 R"(<component objectid="1")" +
+                                 shift + R"(/><component objectid="1")" + mirror +
+                                 R"(/></components></object>)";
+  // Each with its number of placements.
+  const std::vector<std::tuple<const char*, std::string, std::size_t>> builds = {
+      {"plain_first",
+       "<item objectid=\"1\"/><item objectid=\"1\"" + shift +
+           "/><item objectid=\"4\"/><item objectid=\"1\"" + mirror + "/>",
+       5},
+      {"mirrored_first", "<item objectid=\"1\"" + mirror + "/><item objectid=\"1\"/>", 2},
+      {"components_first", "<item objectid=\"4\"/><item objectid=\"1\"/>", 3}};
+  for (const auto& [name, items, placements] : builds) {
+    SCOPED_TRACE(name);
+    const std::string path = scratch(name) + ".3mf";
+    write_package(path, std::string(kHead) + "<resources>" + tetrahedron(1, "model", "0") +
+                            components + "</resources><build>" + items + "</build></model>");
+    const Outcome o = expect_same_both_ways(path);
+    std::remove(path.c_str());
+    EXPECT_TRUE(o.error.empty()) << o.error;
+    EXPECT_EQ(o.soup.num_faces(), 4 * placements);
+  }
 }
 
 TEST(Format3mfMeshXml, meshes_left_to_lib3mf_and_files_it_refuses_read_the_same_both_ways) {

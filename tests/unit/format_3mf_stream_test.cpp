@@ -125,7 +125,7 @@ TEST(Format3mfStream, parts_of_many_chunks_read_as_the_whole_part) {
   ASSERT_TRUE(
       read_meshes_streamed(d.bytes.data(), d.bytes.size(), text.size(), d.crc, meshes, stripped));
   ASSERT_EQ(meshes.size(), 3u);
-  EXPECT_EQ(meshes.at(2).positions.size(), 3u * 12000);
+  EXPECT_EQ(meshes.at(2).positions.size(), 12000u);
   EXPECT_EQ(meshes.at(3).corners.size(), 3u * 12000);
   EXPECT_EQ(stripped.find("<vertex "), std::string::npos);
 }

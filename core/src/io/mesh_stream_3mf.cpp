@@ -106,7 +106,7 @@ class ModelReader {
     if (triangles) {
       for (auto l = lists.rbegin(); l != lists.rend(); ++l) {
         if (!l->triangles) {
-          list.vertex_count = l->mesh.positions.size() / 3;
+          list.vertex_count = l->mesh.positions.size();
           break;
         }
       }
@@ -119,7 +119,7 @@ class ModelReader {
       if (triangles)
         list.mesh.corners.reserve(std::size_t(3 * (rest / 32 + 1)));
       else
-        list.mesh.positions.reserve(std::size_t(3 * (rest / 27 + 1)));
+        list.mesh.positions.reserve(std::size_t(rest / 27 + 1));
     }
     lists.push_back(std::move(list));
   }
@@ -157,7 +157,7 @@ bool read_meshes_streamed(const unsigned char* compressed, std::size_t size,
         ScannedList& vertices = reader.lists[v];
         ScannedList& triangles = reader.lists[t];
         if (vertices.triangles || !triangles.triangles ||
-            triangles.vertex_count != vertices.mesh.positions.size() / 3) {
+            triangles.vertex_count != vertices.mesh.positions.size()) {
           whole = false;
           return ListOutcome::left_for_lib3mf;
         }

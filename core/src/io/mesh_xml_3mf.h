@@ -7,6 +7,8 @@
 // (meshbridge-parse-bench read-3mf, 1M torus, one thread: 0.107 s streamed with ISA-L, 0.15 s
 // inflated whole, against 0.88 s; pugixml alone 0.25 s; bench/results.md sections 15 and 16).
 
+#include "meshbridge/soup.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -19,7 +21,9 @@ namespace meshbridge::detail {
 
 //! The mesh of one 3MF object as the file has it.
 struct MeshXml {
-  std::vector<float> positions;        //!< x, y, z of each vertex, as lib3mf reads them
+  //! Each vertex as lib3mf reads it (floats), as the soup holds it (doubles): the first mesh's
+  //! become the soup's without a copy (read_3mf.cpp).
+  std::vector<Point> positions;
   std::vector<std::uint32_t> corners;  //!< v1, v2, v3 of each triangle
 };
 

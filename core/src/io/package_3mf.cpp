@@ -11,7 +11,8 @@
 
 namespace meshbridge::detail {
 
-Package3mf::Package3mf(const void* data, std::size_t size) {
+Package3mf::Package3mf(const void* data, std::size_t size)
+    : data_(static_cast<const unsigned char*>(data)), size_(size) {
   zip_error_t error;
   zip_error_init(&error);
   source_ = zip_source_buffer_create(data, size, 0, &error);
@@ -134,6 +135,116 @@ bool Package3mf::read(const std::string& name, PartBytes& bytes) const {
   libdeflate_free_decompressor(inflater);
   return result == LIBDEFLATE_SUCCESS && size == bytes.size &&
          libdeflate_crc32(0, bytes.data.get(), size) == part.crc;
+}
+
+namespace {
+
+// Little-endian fields of the zip records (APPNOTE.TXT 4.3).
+std::uint32_t u16(const unsigned char* p) {
+  return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8;
+}
+std::uint32_t u32(const unsigned char* p) {
+  return u16(p) | u16(p + 2) << 16;
+}
+std::uint64_t u64(const unsigned char* p) {
+  return u32(p) | std::uint64_t(u32(p + 4)) << 32;
+}
+
+// The central directory of the zip archive [data, data + size): where it begins and how many
+// entries it has, from the end of central directory record (the last one whose comment ends
+// the archive) or the zip64 record it points to; false where they are not plain.
+bool central_directory(const unsigned char* data, std::size_t size, std::uint64_t& directory,
+                       std::uint64_t& entries) {
+  const unsigned char* end = data + size;
+  const unsigned char* record = nullptr;
+  for (std::size_t back = 22; back <= size && back <= 22 + 0xffff && record == nullptr; ++back) {
+    if (u32(end - back) == 0x06054b50 && 22 + u16(end - back + 20) == back)
+      record = end - back;
+  }
+  if (record == nullptr || u16(record + 4) != 0)
+    return false;  // none, or several disks
+  entries = u16(record + 10);
+  directory = u32(record + 16);
+  std::uint64_t length = u32(record + 12);
+  if (entries == 0xffff || directory == 0xffffffff || length == 0xffffffff) {
+    // zip64: the locator just before the record, and the zip64 record it points to.
+    const std::size_t at = std::size_t(record - data);
+    if (at < 20 || u32(record - 20) != 0x07064b50)
+      return false;
+    const std::uint64_t zip64 = u64(record - 20 + 8);
+    if (zip64 > at - 20 || at - 20 - zip64 < 56 || u32(data + zip64) != 0x06064b50)
+      return false;
+    entries = u64(data + zip64 + 32);
+    length = u64(data + zip64 + 40);
+    directory = u64(data + zip64 + 48);
+  }
+  return directory <= size && length <= size - directory;
+}
+
+// The compressed size and local header offset of the central directory entry at `entry`
+// (`length` bytes), from its zip64 extra field where they are 0xffffffff (lib3mf writes them
+// there); false where that field lacks them.
+bool wide_sizes(const unsigned char* entry, std::size_t length, std::uint64_t& compressed,
+                std::uint64_t& local) {
+  compressed = u32(entry + 20);
+  local = u32(entry + 42);
+  std::uint64_t inflated = u32(entry + 24);
+  const unsigned char* extra = entry + 46 + u16(entry + 28);
+  const unsigned char* extra_end = std::min(extra + u16(entry + 30), entry + length);
+  while (extra_end - extra >= 4 && (compressed == 0xffffffff || local == 0xffffffff)) {
+    const unsigned char* field = extra + 4;
+    const unsigned char* past = field + u16(extra + 2);
+    if (past > extra_end)
+      return false;
+    if (u16(extra) == 1) {  // in order: inflated size, compressed size, local header offset
+      for (std::uint64_t* value : {&inflated, &compressed, &local}) {
+        if (*value == 0xffffffff && past - field >= 8) {
+          *value = u64(field);
+          field += 8;
+        }
+      }
+      break;
+    }
+    extra = past;
+  }
+  return compressed != 0xffffffff && local != 0xffffffff;
+}
+
+}  // namespace
+
+const unsigned char* Package3mf::deflated_in_place(const std::string& name, PartStat& part) const {
+  std::uint64_t directory = 0, entries = 0;
+  if (!stat(name, part) || !part.deflated || !central_directory(data_, size_, directory, entries) ||
+      part.index >= entries) {
+    return nullptr;
+  }
+  // libzip numbers the entries in directory order: entry part.index, if its name agrees.
+  const unsigned char* end = data_ + size_;
+  const unsigned char* entry = data_ + directory;
+  std::size_t length = 0;
+  for (std::uint64_t i = 0;; ++i, entry += length) {
+    if (end - entry < 46 || u32(entry) != 0x02014b50)
+      return nullptr;
+    length = 46 + u16(entry + 28) + u16(entry + 30) + u16(entry + 32);
+    if (std::size_t(end - entry) < length)
+      return nullptr;
+    if (i == part.index)
+      break;
+  }
+  std::uint64_t compressed = 0, local = 0;
+  if (u16(entry + 28) != name.size() || std::memcmp(entry + 46, name.data(), name.size()) != 0 ||
+      (u16(entry + 8) & 1) != 0 || u16(entry + 10) != 8 || u32(entry + 16) != part.crc ||
+      !wide_sizes(entry, length, compressed, local) || compressed != part.compressed_size ||
+      local >= size_ || size_ - local < 30) {
+    return nullptr;  // encrypted, not deflated, or read otherwise by libzip
+  }
+  const unsigned char* header = data_ + local;
+  if (u32(header) != 0x04034b50 || u16(header + 8) != 8)
+    return nullptr;
+  const std::uint64_t begin = local + 30 + u16(header + 26) + u16(header + 28);
+  if (begin > size_ || size_ - begin < part.compressed_size)
+    return nullptr;
+  return data_ + begin;
 }
 
 std::vector<unsigned char> Package3mf::replaced(const std::string& name,

@@ -52,6 +52,11 @@ class Package3mf {
   //! The stored (deflated) bytes of part `name` into `compressed`, what its header says into
   //! `part`; false if it cannot be read, is not deflated, or claims more than deflate can give.
   bool read_deflated(const std::string& name, PartStat& part, PartBytes& compressed) const;
+  //! As read_deflated(), without a copy: where the deflated bytes of part `name`
+  //! (`part.compressed_size` of them) are in the package's own memory; nullptr where the zip
+  //! records do not say it plainly (zip64, encryption, a central directory that does not agree
+  //! with libzip's): read_deflated() then copies them out through libzip.
+  const unsigned char* deflated_in_place(const std::string& name, PartStat& part) const;
   //! The whole package with part `name` replaced by `content` (stored, not compressed), every
   //! other part as it was; empty on failure. Closes the package (is_open() is false after it).
   std::vector<unsigned char> replaced(const std::string& name, const std::string& content);
@@ -61,6 +66,8 @@ class Package3mf {
   // The part's bytes as stored (`compressed`) or inflated by libzip into `out`.
   bool read_raw(const PartStat& part, bool compressed, char* out) const;
 
+  const unsigned char* data_;
+  std::size_t size_;
   ::zip* archive_ = nullptr;
   ::zip_source* source_ = nullptr;
 };

@@ -3,6 +3,7 @@
 // transforms (3MF Core Specification 1.2, section 3.4: build; 4.1: components). The meshes'
 // vertices and triangles are read apart by pugixml where they can be (mesh_xml_3mf.h), and lib3mf
 // reads the package with those lists emptied; where it refuses that, it reads the file itself.
+#include "io/affine_3mf.h"
 #include "io/formats.h"
 #include "io/mesh_xml_3mf.h"
 #include "io/units_3mf.h"
@@ -40,51 +41,13 @@ void check(HRESULT result, const std::string& path, const char* what) {
     throw ReadError(path + ": lib3mf cannot " + what + " (error " + std::to_string(result) + ")");
 }
 
-// An affine map p -> A p + t as lib3mf stores it: row j of `m` gives output coordinate j,
-// m[j][3] is the translation (the file's "m00 m01 m02 m10 ... m32" is m[0][0] m[1][0] m[2][0]
-// m[0][1] ..., row vectors times the matrix as the specification writes them).
-using Affine = std::array<std::array<double, 4>, 3>;
-
-constexpr Affine kIdentity = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
-
+// lib3mf's transform as an Affine (affine_3mf.h).
 Affine affine(const NMR::MODELTRANSFORM& t) {
   Affine a{};
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 4; ++i)
       a[j][i] = t.m_fFields[j][i];
   return a;
-}
-
-// outer after inner: p -> outer(inner(p)).
-Affine compose(const Affine& outer, const Affine& inner) {
-  Affine c{};
-  for (int j = 0; j < 3; ++j) {
-    for (int i = 0; i < 4; ++i) {
-      double s = i == 3 ? outer[j][3] : 0.0;
-      for (int k = 0; k < 3; ++k)
-        s += outer[j][k] * inner[k][i];
-      c[j][i] = s;
-    }
-  }
-  return c;
-}
-
-// True if `a` mirrors (its linear part has a negative determinant): the triangles it places
-// would be turned inside out unless their corner order is reversed, as slicers do (PrusaSlicer
-// reverses them). `a` is the whole placement, composed down the component tree: two mirrors
-// cancel.
-bool mirrors(const Affine& a) {
-  const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-                     a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                     a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-  return det < 0;
-}
-
-Point apply(const Affine& a, const float p[3]) {
-  Point q;
-  for (int j = 0; j < 3; ++j)
-    q[j] = a[j][0] * p[0] + a[j][1] * p[1] + a[j][2] * p[2] + a[j][3];
-  return q;
 }
 
 // Reads models, their objects and their build into one soup.
@@ -95,7 +58,7 @@ class Reader {
  public:
   using MeshesXml = std::map<std::uint32_t, MeshXml>;
   //! `meshes`: the meshes pugixml read, by object id (may be null: lib3mf read them all).
-  Reader(const std::string& path, Soup& soup, const MeshesXml* meshes)
+  Reader(const std::string& path, Soup& soup, MeshesXml* meshes)
       : path_(path), soup_(soup), meshes_(meshes) {}
 
   //! What the placed mesh objects carry that MeshBridge reads past (see add_mesh).
@@ -126,19 +89,21 @@ class Reader {
                 bool in_build) {
     DWORD id = 0;
     check(NMR::lib3mf_resource_getresourceid(object, &id), path_, "get an object's id");
-    const auto parsed = meshes_ != nullptr ? meshes_->find(id) : MeshesXml::const_iterator();
+    const auto parsed = meshes_ != nullptr ? meshes_->find(id) : MeshesXml::iterator();
     const bool from_xml = meshes_ != nullptr && parsed != meshes_->end();
-    const float* positions = nullptr;
+    const Point* points = nullptr;  // read apart
+    const float* floats = nullptr;  // lib3mf's
     const std::uint32_t* corners = nullptr;
     std::size_t vertex_count = 0, triangle_count = 0;
     if (from_xml) {
-      positions = parsed->second.positions.data();
+      points = parsed->second.positions.data();
       corners = parsed->second.corners.data();
-      vertex_count = parsed->second.positions.size() / 3;
-      triangle_count = parsed->second.corners.size() / 3;
+      vertex_count = id == moved_.positions ? moved_.vertex_count : parsed->second.positions.size();
+      triangle_count =
+          (id == moved_.corners ? moved_.corner_count : parsed->second.corners.size()) / 3;
     } else {
       read_lib3mf_mesh(object);
-      positions = vertices_.empty() ? nullptr : vertices_[0].m_fPosition;
+      floats = vertices_.empty() ? nullptr : vertices_[0].m_fPosition;
       corners = triangles_.empty() ? nullptr : triangles_[0].m_nIndices;
       vertex_count = vertices_.size();
       triangle_count = triangles_.size();
@@ -157,21 +122,52 @@ class Reader {
       runs_.emplace_back(soup_.num_faces(), kind);
     const bool reversed = transformed && mirrors(placement);
     const Index offset = static_cast<Index>(soup_.num_vertices());
-    soup_.positions.reserve(soup_.num_vertices() + vertex_count);
-    for (std::size_t v = 0; v < vertex_count; ++v) {
-      const float* p = positions + 3 * v;
-      soup_.add_vertex(transformed ? apply(placement, p) : Point(p[0], p[1], p[2]));
+    // The first mesh read apart, as it is: its positions and corners become the soup's (no copy
+    // of 25 MB for 1M triangles); a later placement of the same mesh copies them from there.
+    if (from_xml && offset == 0 && !transformed && moved_.positions == kNone) {
+      soup_.positions.swap(parsed->second.positions);
+      moved_.positions = id;
+      moved_.vertex_count = soup_.num_vertices();
+    } else {
+      soup_.positions.reserve(offset + vertex_count);
+      if (from_xml && id == moved_.positions)
+        points = soup_.positions.data();  // after the reserve: it may have moved
+      for (std::size_t v = 0; v < vertex_count; ++v) {
+        const Point p =
+            from_xml ? points[v] : Point(floats[3 * v], floats[3 * v + 1], floats[3 * v + 2]);
+        soup_.add_vertex(transformed ? apply(placement, p) : p);
+      }
     }
-    for (std::size_t c = 0; c < 3 * triangle_count; ++c) {
+    for (std::size_t c = 0; !from_xml && c < 3 * triangle_count; ++c) {  // the scan checked its own
       if (corners[c] >= vertex_count) {
         throw ReadError(path_ + ": 3MF triangle " + std::to_string(soup_.num_faces() + c / 3) +
                         " uses vertex " + std::to_string(corners[c]) + " of an object with " +
                         std::to_string(vertex_count) + " vertices");
       }
     }
-    // Appended whole, not a triangle at a time (a tenth of a 1M-triangle 3MF's read).
     const std::size_t first = soup_.num_corners();
-    soup_.corner_vertices.resize(first + 3 * triangle_count);
+    if (from_xml && first == 0 && offset == 0 && !reversed && moved_.corners == kNone) {
+      soup_.corner_vertices.swap(parsed->second.corners);
+      moved_.corners = id;
+      moved_.corner_count = soup_.num_corners();
+    } else {
+      // Appended whole, not a triangle at a time (a tenth of a 1M-triangle 3MF's read).
+      soup_.corner_vertices.resize(first + 3 * triangle_count);
+      if (from_xml && id == moved_.corners)
+        corners = soup_.corner_vertices.data();  // after the resize: it may have moved
+      add_corners(corners, triangle_count, offset, reversed, first);
+    }
+    const std::size_t faces = soup_.num_faces();
+    soup_.face_begin.resize(faces + 1 + triangle_count);
+    for (std::size_t t = 1; t <= triangle_count; ++t)
+      soup_.face_begin[faces + t] = static_cast<Index>(first + 3 * t);
+    count_properties(object, triangle_count, from_xml);
+  }
+
+  // Writes the corners of `triangle_count` triangles from `corners` at corner `first` of the
+  // soup, each vertex number `offset` on, their order reversed if `reversed`.
+  void add_corners(const std::uint32_t* corners, std::size_t triangle_count, Index offset,
+                   bool reversed, std::size_t first) {
     Index* out = soup_.corner_vertices.data() + first;
     for (std::size_t t = 0; t < triangle_count; ++t) {
       const std::uint32_t* i = corners + 3 * t;
@@ -179,11 +175,6 @@ class Reader {
       out[3 * t + 1] = offset + i[reversed ? 2 : 1];
       out[3 * t + 2] = offset + i[reversed ? 1 : 2];
     }
-    const std::size_t faces = soup_.num_faces();
-    soup_.face_begin.resize(faces + 1 + triangle_count);
-    for (std::size_t t = 1; t <= triangle_count; ++t)
-      soup_.face_begin[faces + t] = static_cast<Index>(first + 3 * t);
-    count_properties(object, triangle_count, from_xml);
   }
 
   // lib3mf's mesh of `object` into vertices_ and triangles_.
@@ -359,7 +350,13 @@ class Reader {
   static constexpr int kMaxDepth = 64;
   const std::string& path_;
   Soup& soup_;
-  const MeshesXml* meshes_;
+  MeshesXml* meshes_;
+  static constexpr DWORD kNone = ~DWORD(0);
+  // The meshes whose positions and whose corners went into the soup (add_mesh), and how many.
+  struct Moved {
+    DWORD positions = kNone, corners = kNone;
+    std::size_t vertex_count = 0, corner_count = 0;
+  } moved_;
   std::set<DWORD> placed_;  // mesh objects some build item reached
   std::vector<NMR::MODELMESHVERTEX> vertices_;
   std::vector<NMR::MODELMESHTRIANGLE> triangles_;
