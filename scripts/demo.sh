@@ -41,7 +41,7 @@ echo "== meshlabserver: Detect Singular Defects (Bridged Half-Edge) on $model"
 bash scripts/meshlab_private_root.sh run "$meshlab_root" -i "$model" \
   -o "$out/$name.defects.obj" -l x -m vc -s resources/scripts/detect.mlx \
   >"$out/$name.detect.log" 2>&1
-grep -v "^LOG:" "$out/$name.detect.log" | grep -E "MeshBridge|singular|boundary|vertices|faces|components|watertight|Defect layer" | awk '!seen[$0]++' | unescape_html || true
+grep -v "^LOG:" "$out/$name.detect.log" | grep -E "MeshBridge|singular|boundary|vertices|faces|self-intersect|components|watertight|Defect layer" | awk '!seen[$0]++' | unescape_html || true
 echo
 echo "== meshlabserver: Repair Singular Defects (Bridged Half-Edge) on $model"
 bash scripts/meshlab_private_root.sh run "$meshlab_root" -i "$model" \

@@ -122,6 +122,7 @@ std::string to_text(const RepairPreview& preview) {
       "make " + counted(r.vertices_split, "vertex copy") + " (split fans)");
   const std::size_t cut = r.sides_cut + r.sides_cut_for_orientation + r.sides_cut_to_stay_manifold;
   add(parts, cut, "cut " + counted(cut, "side") + " open");
+  add(parts, r.sides_stitched, "stitch " + counted(r.sides_stitched, "side") + " back");
   add(parts, r.edges_split_to_stay_manifold,
       "split " + counted(r.edges_split_to_stay_manifold, "edge") + " at the midpoint (" +
           counted(r.edges_split_to_stay_manifold, "vertex") + " added to " +
@@ -143,7 +144,8 @@ std::string to_text(const RepairPreview& preview) {
   }
   if (r.ambiguous_nested_shells != 0) {
     out << (parts.empty() ? " (" : "; ") << "it keeps "
-        << counted(r.ambiguous_nested_shells, "ambiguous nested shell") << " as written"
+        << counted(r.ambiguous_nested_shells, "ambiguous nested shell")
+        << " wound like the shell around it (an insert; --nested-shells cavity: a void)"
         << (parts.empty() ? ")" : "");
   }
   if (parts.empty() && r.boundary_edges_before != 0)
