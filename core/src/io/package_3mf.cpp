@@ -74,13 +74,15 @@ bool Package3mf::stat(const std::string& name, PartStat& part) const {
   if (index < 0 || zip_stat_index(archive_, static_cast<zip_uint64_t>(index), 0, &stat) != 0 ||
       (stat.valid & ZIP_STAT_SIZE) == 0 || (stat.valid & ZIP_STAT_COMP_SIZE) == 0 ||
       (stat.valid & ZIP_STAT_COMP_METHOD) == 0 || (stat.valid & ZIP_STAT_CRC) == 0 ||
-      stat.size > (std::uint64_t(1) << 40) || stat.comp_size > (std::uint64_t(1) << 40)) {
-    return false;
+      stat.size > (std::uint64_t(1) << 40) || stat.comp_size > size_) {
+    return false;  // (a part's stored bytes cannot be more than the whole package's)
   }
   // Deflate expands at most 1032 times: a larger size is a false header (a zip bomb's), left to
   // lib3mf rather than allocated.
   if (stat.comp_method == ZIP_CM_DEFLATE && stat.size > 1032 * stat.comp_size + 1024)
     return false;
+  if (stat.comp_method != ZIP_CM_DEFLATE && stat.size > size_)
+    return false;  // stored (or another method, left to libzip): never more than the package
   part.index = static_cast<std::uint64_t>(index);
   part.size = stat.size;
   part.compressed_size = stat.comp_size;
