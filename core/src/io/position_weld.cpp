@@ -231,30 +231,34 @@ void find_in_earlier_parts(std::vector<Part>& parts, const std::vector<Point>& p
     parts[k].vertex.assign(parts[k].keys.size(), kNoIndex);
     parts[k].earlier.assign(parts[k].keys.size(), 0);
   }
-  run_parts(threads, [&parts, &positions, threads](unsigned t) {
-    for (std::size_t k = 1; k < parts.size(); ++k) {
-      Part& part = parts[k];
-      for (std::size_t j = 0; j < k; ++j) {
-        const WeldTable& table = parts[j].table;
-        const std::vector<FloatKey>& earlier_keys = parts[j].keys;
-        const auto look_up = [&](const FloatKey& key, Index l) {
-          if (part.vertex[l] != kNoIndex)  // an earlier part has it
-            return;
-          const std::uint32_t hash = float_key_hash(key);
-          const Index found =
-              j == 0 ? table.find(key, hash, [&](Index u) { return key_of_point(positions[u]); })
-                     : table.find(key, hash, [&](Index u) { return earlier_keys[u]; });
-          if (found != kNoIndex) {
-            part.vertex[l] = found;
-            part.earlier[l] = static_cast<std::uint8_t>(j);
-          }
-        };
+  // One earlier part at a time, all threads on it, then the next: a vertex an earlier part has
+  // is never looked up (and written) again by another thread at once, whichever way the threads
+  // share the vertices of each (slot ranges where the tables match in size, index ranges where
+  // they do not).
+  for (std::size_t k = 1; k < parts.size(); ++k) {
+    Part& part = parts[k];
+    for (std::size_t j = 0; j < k; ++j) {
+      const WeldTable& table = parts[j].table;
+      const std::vector<FloatKey>& earlier_keys = parts[j].keys;
+      const auto look_up = [&](const FloatKey& key, Index l) {
+        if (part.vertex[l] != kNoIndex)  // an earlier part has it
+          return;
+        const std::uint32_t hash = float_key_hash(key);
+        const Index found =
+            j == 0 ? table.find(key, hash, [&](Index u) { return key_of_point(positions[u]); })
+                   : table.find(key, hash, [&](Index u) { return earlier_keys[u]; });
+        if (found != kNoIndex) {
+          part.vertex[l] = found;
+          part.earlier[l] = static_cast<std::uint8_t>(j);
+        }
+      };
+      run_parts(threads, [&](unsigned t) {
         if (table.capacity() == part.table.capacity()) {
           const std::size_t slots = part.table.capacity();
           part.table.for_each_in_slots(part_begin(slots, threads, t),
                                        part_begin(slots, threads, t + 1),
                                        [&](Index l) { look_up(part.keys[l], l); });
-          continue;
+          return;
         }
         const std::size_t first = part_begin(part.keys.size(), threads, t);
         const std::size_t last = part_begin(part.keys.size(), threads, t + 1);
@@ -264,9 +268,9 @@ void find_in_earlier_parts(std::vector<Part>& parts, const std::vector<Point>& p
             table.prefetch(float_key_hash(part.keys[l + kAhead]));
           look_up(part.keys[l], static_cast<Index>(l));
         }
-      }
+      });
     }
-  });
+  }
 }
 
 //! Numbers the vertices of parts[1..] in file order after find_in_earlier_parts(): a position an
