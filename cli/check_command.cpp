@@ -51,14 +51,16 @@ int run_check(const CheckArguments& arguments) {
     const Soup soup = read_soup(path, &info, &attributes);
     weld.float_coordinates = info.float_coordinates;
     progress.stage(Stage::detect, 0);
-    report = detect_defects(soup, &orientation, arguments.nested);
-    count_records_without_corners(info, report);  // face records with no corner: set aside too
-    // What repair would do (the report is of the file as read): on a watertight file from
-    // detection, on any other by repairing in memory (gap closing as repair keeps or refuses it).
+    // The file as read, and what repair would do: on a watertight file from detection, on any
+    // other by repairing in memory (gap closing as repair keeps or refuses it).
     RepairOptions repair_options;
     repair_options.close_gaps = weld;
     repair_options.nested_shells = arguments.nested;
-    preview = preview_repair(soup, report, orientation, repair_options);
+    SoupCheck checked = check_soup(soup, repair_options);
+    report = std::move(checked.report);
+    orientation = checked.orientation;
+    preview = std::move(checked.preview);
+    count_records_without_corners(info, report);  // face records with no corner: set aside too
     gaps = preview.ran_repair ? preview.report.gaps : preview_close_gaps(soup, weld, &report);
     if (!arguments.json)
       weld_hint = wider_weld_hint(soup, weld, gaps, report);

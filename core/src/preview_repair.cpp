@@ -6,7 +6,9 @@
 #include "meshbridge/validate.h"
 
 #include "detection.h"
+#include "parallel_parts.h"
 #include "pipeline/orientation.h"
+#include "repair_run.h"
 #include "working_soup.h"
 
 #include <algorithm>
@@ -16,6 +18,41 @@
 
 namespace meshbridge {
 
+namespace {
+
+// What orientation would reverse on a watertight soup of simple polygons (`report` its
+// detection, `working` its simple polygons, `mate` the other side of each side from detection);
+// not computed on any other.
+OrientationPreview preview_orientation(const Soup& soup, const detail::WorkingSoup& working,
+                                       const DefectReport& report, std::vector<Index>&& mate,
+                                       AmbiguousNesting nested) {
+  OrientationPreview orientation;
+  if (!report.watertight || !working.is_identity())
+    return orientation;
+  detail::SidePairing pairing;
+  pairing.mate = std::move(mate);
+  pairing.flipped.assign(soup.num_faces(), 0);
+  const detail::GroupedSides grouped{detail::CornerFaces(soup), EdgeBridges()};
+  orientation.computed = true;
+  orientation.ambiguous_nested_shells = detail::orient_components(soup, grouped, pairing, nested);
+  for (char f : pairing.flipped)
+    orientation.faces_flipped += f;
+  return orientation;
+}
+
+// Whether detection and the orientation preview tell all repair would do: a watertight soup of
+// simple polygons with nothing the options remove or fill (repair()'s own shortcut,
+// report_if_unchanged() in repair.cpp, finds the same).
+bool detection_tells(const DefectReport& before, const OrientationPreview& orientation,
+                     const RepairOptions& options) {
+  const bool removes = (options.remove_duplicate_faces && !before.duplicate_faces.empty()) ||
+                       (options.remove_zero_area_faces && !before.zero_area_faces.empty()) ||
+                       (options.remove_isolated_vertices && !before.isolated_vertices.empty());
+  return orientation.computed && options.orient && !removes && options.fill_holes.max_edges == 0;
+}
+
+}  // namespace
+
 DefectReport detect_defects(const Soup& soup, OrientationPreview* orientation,
                             AmbiguousNesting nested) {
   if (orientation == nullptr)
@@ -24,17 +61,7 @@ DefectReport detect_defects(const Soup& soup, OrientationPreview* orientation,
   const detail::WorkingSoup working(soup);
   std::vector<Index> mate;
   DefectReport report = detail::detect(working, &mate);
-  *orientation = OrientationPreview();
-  if (!report.watertight || !working.is_identity())
-    return report;
-  detail::SidePairing pairing;
-  pairing.mate = std::move(mate);
-  pairing.flipped.assign(soup.num_faces(), 0);
-  const detail::GroupedSides grouped{detail::CornerFaces(soup), EdgeBridges()};
-  orientation->computed = true;
-  orientation->ambiguous_nested_shells = detail::orient_components(soup, grouped, pairing, nested);
-  for (char f : pairing.flipped)
-    orientation->faces_flipped += f;
+  *orientation = preview_orientation(soup, working, report, std::move(mate), nested);
   return report;
 }
 
@@ -61,12 +88,9 @@ bool repair_changes_input(const RepairReport& r) {
 RepairPreview preview_repair(const Soup& soup, const DefectReport& before,
                              const OrientationPreview& orientation, const RepairOptions& options) {
   RepairPreview preview;
-  const bool removes = (options.remove_duplicate_faces && !before.duplicate_faces.empty()) ||
-                       (options.remove_zero_area_faces && !before.zero_area_faces.empty()) ||
-                       (options.remove_isolated_vertices && !before.isolated_vertices.empty());
-  if (orientation.computed && options.orient && !removes && options.fill_holes.max_edges == 0) {
+  if (detection_tells(before, orientation, options)) {
     // Watertight, simple polygons only: pairing takes the two sides of every edge and changes
-    // nothing, as repair()'s own shortcut (report_if_unchanged() in repair.cpp) finds.
+    // nothing.
     RepairReport& r = preview.report;
     r.faces_in = r.faces_out = soup.num_faces();
     r.vertices_in = r.vertices_out = soup.num_vertices();
@@ -86,6 +110,43 @@ RepairPreview preview_repair(const Soup& soup, const DefectReport& before,
   }
   preview.changes = repair_changes_input(preview.report);
   return preview;
+}
+
+SoupCheck check_soup(const Soup& soup, const RepairOptions& options) {
+  validate_soup(soup);
+  SoupCheck check;
+  const detail::WorkingSoup working(soup);
+  detail::KnownInput known;  // (its future's destructor waits for a thread reading `working`)
+  known.simple = &working;
+  std::vector<Index> mate;
+  const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces ||
+                         options.remove_zero_area_faces;  // cleanup reads `before` first
+  const bool alongside = !filtering && detail::worker_threads() > 1;
+  known.before_later = detail::detect_alongside(working, &mate, &known.grouped, alongside);
+  // A boundary or singular edge: the grouping is kept, and with `alongside` the detection is
+  // still being made (repair's run takes it after its pipeline).
+  const bool later = !known.grouped.bridges.contenders.empty() && alongside;
+  if (!later) {
+    check.report = known.before_later.get();
+    check.orientation =
+        preview_orientation(soup, working, check.report, std::move(mate), options.nested_shells);
+    if (detection_tells(check.report, check.orientation, options)) {
+      check.preview = preview_repair(soup, check.report, check.orientation, options);
+      return check;
+    }
+    known.before = check.report;
+  }
+  RepairOptions quiet = options;
+  quiet.progress = nullptr;
+  quiet.detect_before_after = true;  // the input's; not the result's (Detections::before_only)
+  RepairPreview& preview = check.preview;
+  preview.report =
+      detail::repair_guarded(soup, quiet, std::move(known), detail::Detections::before_only).report;
+  if (later)
+    check.report = preview.report.before;
+  preview.ran_repair = true;
+  preview.changes = repair_changes_input(preview.report);
+  return check;
 }
 
 namespace {

@@ -23,6 +23,7 @@ namespace {
 
 using detail::DefectBalance;
 using detail::KnownInput;
+using detail::repair_guarded;
 
 // Calls `options.progress`, when set, for the stage boundaries of repair().
 void tell(const RepairOptions& options, Stage stage, double fraction) {
@@ -85,45 +86,6 @@ std::optional<RepairReport> report_if_unchanged(const Soup& soup,
   return report;
 }
 
-// A RepairRun held to the no-new-defects rule for gap closing (DESIGN 8a): welds and
-// T-junction closings stay only if the repaired mesh has fewer open edges with them than the
-// input has (pairing alone never closes an edge that has one side), or, when not, fewer than the
-// repair without them, and no more non-orientable components. Otherwise the repair runs again
-// without gap closing, and the report says what was refused and why. Gap closing that is kept
-// costs nothing more; a refused one costs a second repair.
-RepairResult repair_guarded(const Soup& input, const RepairOptions& options, KnownInput&& known) {
-  detail::RepairRun closing(input, options, std::move(known));
-  RepairResult result = closing.run();
-  const DefectBalance& closed = closing.balance();
-  const CloseGapsReport tried = result.report.gaps;
-  if (!tried.changed() ||
-      (closed.open_edges_out < closed.open_edges_in && closed.nonorientable_out == 0))
-    return result;
-  RepairOptions without = options;
-  without.close_gaps.tolerance = 0;
-  detail::RepairRun not_closing(input, without, KnownInput());
-  RepairResult plain = not_closing.run();
-  const DefectBalance& open = not_closing.balance();
-  if (closed.open_edges_out < open.open_edges_out &&
-      closed.nonorientable_out <= open.nonorientable_out)
-    return result;
-  CloseGapsReport& gaps = plain.report.gaps;
-  gaps = CloseGapsReport();
-  gaps.tolerance = tried.tolerance;
-  gaps.welds_refused = tried.welds_refused;
-  gaps.welds_undone = tried.vertices_welded;
-  gaps.t_junctions_undone = tried.t_junctions_closed;
-  std::ostringstream why;
-  why << "with them the repaired mesh would have " << counted(closed.open_edges_out, "open edge")
-      << " (without: " << open.open_edges_out << ")";
-  if (closed.nonorientable_out > open.nonorientable_out) {
-    why << " and " << counted(closed.nonorientable_out, "non-orientable component")
-        << " (without: " << open.nonorientable_out << ")";
-  }
-  gaps.refused_reason = why.str();
-  return plain;
-}
-
 }  // namespace
 
 RepairResult repair(const Soup& input, const RepairOptions& options) {
@@ -158,5 +120,55 @@ RepairResult repair(Soup&& soup, const RepairOptions& options) {
   mesh.soup = std::move(soup);
   return result;
 }
+
+namespace detail {
+
+// A RepairRun held to the no-new-defects rule for gap closing (DESIGN 8a): welds and
+// T-junction closings stay only if the repaired mesh has fewer open edges with them than the
+// input has (pairing alone never closes an edge that has one side), or, when not, fewer than the
+// repair without them, and no more non-orientable components. Otherwise the repair runs again
+// without gap closing, and the report says what was refused and why. Gap closing that is kept
+// costs nothing more; a refused one costs a second repair.
+RepairResult repair_guarded(const Soup& input, const RepairOptions& options, KnownInput&& known,
+                            Detections detections) {
+  const WorkingSoup* simple = known.simple;
+  RepairRun closing(input, options, std::move(known), detections);
+  RepairResult result = closing.run();
+  const DefectBalance& closed = closing.balance();
+  const CloseGapsReport tried = result.report.gaps;
+  if (!tried.changed() ||
+      (closed.open_edges_out < closed.open_edges_in && closed.nonorientable_out == 0))
+    return result;
+  RepairOptions without = options;
+  without.close_gaps.tolerance = 0;
+  KnownInput again;  // the input's simple polygons and detection, as the first run made them
+  again.simple = simple;
+  if (options.detect_before_after || options.remove_duplicate_faces ||
+      options.remove_degenerate_faces || options.remove_zero_area_faces)
+    again.before = result.report.before;  // (made by the first run: RepairRun::detect_input())
+  RepairRun not_closing(input, without, std::move(again), detections);
+  RepairResult plain = not_closing.run();
+  const DefectBalance& open = not_closing.balance();
+  if (closed.open_edges_out < open.open_edges_out &&
+      closed.nonorientable_out <= open.nonorientable_out)
+    return result;
+  CloseGapsReport& gaps = plain.report.gaps;
+  gaps = CloseGapsReport();
+  gaps.tolerance = tried.tolerance;
+  gaps.welds_refused = tried.welds_refused;
+  gaps.welds_undone = tried.vertices_welded;
+  gaps.t_junctions_undone = tried.t_junctions_closed;
+  std::ostringstream why;
+  why << "with them the repaired mesh would have " << counted(closed.open_edges_out, "open edge")
+      << " (without: " << open.open_edges_out << ")";
+  if (closed.nonorientable_out > open.nonorientable_out) {
+    why << " and " << counted(closed.nonorientable_out, "non-orientable component")
+        << " (without: " << open.nonorientable_out << ")";
+  }
+  gaps.refused_reason = why.str();
+  return plain;
+}
+
+}  // namespace detail
 
 }  // namespace meshbridge

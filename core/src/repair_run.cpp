@@ -38,12 +38,14 @@ std::size_t remove_unused_vertices(IndexedMesh& mesh) {
 
 }  // namespace
 
-RepairRun::RepairRun(const Soup& input, const RepairOptions& options, KnownInput&& known)
+RepairRun::RepairRun(const Soup& input, const RepairOptions& options, KnownInput&& known,
+                     Detections detections)
     : input_(input),
       options_(options),
       known_(std::move(known)),
       filtering_(removes_faces(options)),
-      detecting_(options.detect_before_after || filtering_) {}
+      detecting_(options.detect_before_after || filtering_),
+      detections_(detections) {}
 
 RepairResult RepairRun::run() {
   tell(Stage::group, 0);
@@ -274,7 +276,7 @@ void RepairRun::detect_output() {
                          report.vertices_split == 0 && report.faces_flipped == 0 &&
                          report.edges_split_to_stay_manifold == 0 &&
                          report.isolated_vertices_removed == 0 && report.holes.faces_added == 0;
-  if (detecting_) {
+  if (detecting_ && detections_ == Detections::before_and_after) {
     // (The output is valid by construction: detect_defects() would check it again.)
     report.after = unchanged ? report.before : detect(WorkingSoup(result_.mesh.soup));
   }

@@ -30,6 +30,13 @@ struct KnownInput {
 //! What the no-new-defects rule compares (DESIGN 8a): the input's open edges (one side), its
 //! singular edges with an odd number of sides (each may leave one side open), and the output's
 //! open edges and non-orientable components.
+//! Which detections a run makes, when RepairOptions::detect_before_after (or a removal option)
+//! asks for them.
+enum class Detections {
+  before_and_after,  //!< report.before and report.after (repair())
+  before_only,       //!< report.before; report.after and its counts left empty (check's forecast)
+};
+
 struct DefectBalance {
   std::size_t open_edges_in = 0;
   std::size_t odd_singular_edges_in = 0;
@@ -44,7 +51,8 @@ struct DefectBalance {
 class RepairRun {
  public:
   //! `input` and `options` must outlive the run; `input` is valid (validate_soup()).
-  RepairRun(const Soup& input, const RepairOptions& options, KnownInput&& known);
+  RepairRun(const Soup& input, const RepairOptions& options, KnownInput&& known,
+            Detections detections = Detections::before_and_after);
   RepairRun(const RepairRun&) = delete;
   RepairRun& operator=(const RepairRun&) = delete;
 
@@ -71,6 +79,7 @@ class RepairRun {
   KnownInput known_;
   const bool filtering_;  //!< a removal option is on
   const bool detecting_;  //!< report.before/after are made
+  const Detections detections_;
   bool before_later_ = false;
 
   std::optional<WorkingSoup> own_simple_;  //!< the input made simple, when not known
@@ -93,5 +102,11 @@ class RepairRun {
   RepairResult result_;
   DefectBalance balance_;
 };
+
+//! repair() of a valid soup held to the no-new-defects rule for gap closing (DESIGN 8a): a run
+//! with gap closing, and when what it closed does not pay, a second run without it (repair.cpp).
+//! `known` is what the caller already made of `input`.
+RepairResult repair_guarded(const Soup& input, const RepairOptions& options, KnownInput&& known,
+                            Detections detections = Detections::before_and_after);
 
 }  // namespace meshbridge::detail

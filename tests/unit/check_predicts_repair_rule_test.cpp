@@ -59,6 +59,13 @@ void expect_prediction(const Soup& soup, bool changes) {
   EXPECT_EQ(preview.report.gaps.t_junctions_closed, r.gaps.t_junctions_closed);
   EXPECT_EQ(preview.report.ambiguous_nested_shells, r.ambiguous_nested_shells);
   const std::string text = to_text(preview);
+  // check_soup(), what `meshbridge check` runs, says the same in one pass.
+  const SoupCheck checked = check_soup(soup);
+  EXPECT_EQ(to_text(checked.report), to_text(before));
+  EXPECT_EQ(checked.orientation.computed, orientation.computed);
+  EXPECT_EQ(checked.orientation.faces_flipped, orientation.faces_flipped);
+  EXPECT_EQ(checked.preview.ran_repair, preview.ran_repair);
+  EXPECT_EQ(to_text(checked.preview), text);
   EXPECT_EQ(text.rfind(changes ? "repair would: " : "repair would change nothing", 0), 0u) << text;
   if (changes)
     return;

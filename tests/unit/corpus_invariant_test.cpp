@@ -85,7 +85,7 @@ TEST(Corpus, repair_never_leaves_a_real_file_worse) {
 
 // Check predicts repair (DESIGN 8a): where preview_repair() says repair changes nothing, the
 // repaired mesh is the input, polygon for polygon; where it says repair changes something, the
-// repair's own report says so too.
+// repair's own report says so too. check_soup() says the same as the two calls.
 TEST(Corpus, check_predicts_repair_on_every_real_file) {
   std::size_t unchanged = 0;
   for (const fs::path& file : corpus()) {
@@ -101,6 +101,9 @@ TEST(Corpus, check_predicts_repair_on_every_real_file) {
     EXPECT_EQ(preview.changes, repair_changes_input(r.report));
     EXPECT_EQ(preview.report.vertices_split, r.report.vertices_split);
     EXPECT_EQ(preview.report.faces_flipped, r.report.faces_flipped);
+    const SoupCheck checked = check_soup(soup, options);  // what `meshbridge check` runs
+    EXPECT_EQ(to_text(checked.report), to_text(before));
+    EXPECT_EQ(to_text(checked.preview), to_text(preview));
     if (preview.changes)
       continue;
     ++unchanged;

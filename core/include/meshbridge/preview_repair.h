@@ -61,6 +61,23 @@ struct RepairPreview {
 RepairPreview preview_repair(const Soup& soup, const DefectReport& before,
                              const OrientationPreview& orientation, const RepairOptions& options);
 
+//! What `meshbridge check` reports of a soup (check_soup()).
+struct SoupCheck {
+  DefectReport report;             //!< detect_defects(soup)
+  OrientationPreview orientation;  //!< as detect_defects(soup, &orientation, nested_shells)
+  RepairPreview preview;           //!< preview_repair(soup, report, orientation, options)
+};
+
+//! detect_defects(soup, &orientation, options.nested_shells) and preview_repair() of its result,
+//! with the same results, in one pass: the input is made simple and its sides grouped once, and
+//! where repair has to run, the input's detection runs beside repair's pipeline on a second
+//! thread (where there is one), as in repair(Soup&&). Cost: a detection on a watertight soup with
+//! nothing to remove or fill; on any other, about a repair without writing and without the
+//! result's detection. `options.progress` is not called.
+//! \pre `soup` passes validate_soup() \throw InvalidSoupError naming the offending element; as
+//! repair()
+SoupCheck check_soup(const Soup& soup, const RepairOptions& options = {});
+
 //! One line (with its newline) saying what repair would do: "repair would: make 13 vertex copies
 //! (split fans), split 4 edges at the midpoint", or "repair would change nothing (16 boundary
 //! edges stay open)".
