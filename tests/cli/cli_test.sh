@@ -865,6 +865,15 @@ arguments)
     "--weld TEXT:NUMBER>=0|auto=auto" "--separate TEXT:NUMBER>=0|auto=auto"; do
     expect_in "$work/out" "$option"
   done
+  # Choices show their words only, never CLI11's mapping of them to values ("{cavity->1,...}").
+  for command in check repair batch snapshot compare explain; do
+    expect_exit 0 "$mb" "$command" --help
+    ! grep -E -- '->|ENUM' "$work/out" || fail "$command --help shows a value mapping (above)"
+  done
+  for command in check repair batch; do
+    expect_exit 0 "$mb" "$command" --help
+    expect_in "$work/out" "--nested-shells TEXT:{material,cavity}=material"
+  done
   expect_exit 0 "$mb" snapshot --help
   expect_in "$work/out" "--size INT:INT in [16 - 8192]=800"
   expect_in "$work/out" "--view TEXT:VIEW=auto"
