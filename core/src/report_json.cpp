@@ -165,6 +165,10 @@ void add_repair(Json& out, const RepairReport& r, bool elements, const DefectRep
   out["nonorientable_after_pairing"] = r.nonorientable_after_pairing;
   out["ambiguous_nested_shells"] = r.ambiguous_nested_shells;
   out["components_topology_changed"] = r.topology_changes.size();
+  out["components_topology_changed_by_cuts_for_orientation"] =
+      components_topology_changed_by_cuts_for_orientation(r);
+  out["components_topology_changed_by_pairing_stacked_copies"] =
+      components_topology_changed_by_pairing_stacked_copies(r);
   out["gaps"] = gaps_json(r.gaps);
   if (r.holes.max_edges > 0)  // only when asked for: reports of a default repair stay as they were
     out["holes"] = holes_json(r.holes);
