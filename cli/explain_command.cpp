@@ -94,8 +94,12 @@ const std::vector<Entry> kEntries = {
      "An edge whose two faces run through it in the same direction, so one of them faces the\n"
      "wrong way. Repair flips faces to fix it ('flipped') unless --no-orient."},
     {"non-orientable component",
-     "A piece with no consistent inside and outside, such as a Moebius strip. Repair leaves\n"
-     "its faces as they are unless --cut-nonorientable, which cuts the fewest edges needed."},
+     "A piece with no consistent inside and outside, such as a Moebius strip. By default\n"
+     "repair keeps its faces' directions and cuts each edge whose two faces run through it the\n"
+     "same way. With --cut-nonorientable its faces take the orientation of a breadth-first\n"
+     "spanning tree over the pairs, and the edges that disagree with it are cut. Either way\n"
+     "the cut makes the piece orientable, but it is not necessarily the fewest edges.\n"
+     "('cut for orientation' in the report.)"},
     {"set aside",
      "Faces with fewer than 3 distinct corners (e.g. 'f 1 1 2'): they have no area and no\n"
      "edges to join, so repair keeps them out of the surface and counts them."},

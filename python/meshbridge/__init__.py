@@ -251,7 +251,11 @@ def repair(
 
     ``vertices`` (n, 3) and ``faces`` (m, k) or polygons, or a :class:`Soup` alone.
     Options (defaults as ``meshbridge repair``; see ``REPAIR_OPTIONS``): ``pairing``
-    ('geometric' or 'combinatorial'), ``orient``, ``cut_nonorientable``, ``stitch``,
+    ('geometric' or 'combinatorial'), ``orient``, ``cut_nonorientable`` (also orient
+    non-orientable components, Moebius strips: faces follow a breadth-first spanning tree and
+    the edges that disagree with it are cut; off, the default: their faces keep their
+    directions and each edge whose faces run the same way is cut; either cut is not
+    necessarily the fewest; as ``--cut-nonorientable``), ``stitch``,
     ``remove_duplicate_faces``, ``remove_degenerate_faces``, ``remove_zero_area_faces``,
     ``remove_isolated_vertices``,
     ``detect_before_after`` (False skips the before/after detection: faster, fewer counts),

@@ -1031,6 +1031,17 @@ explain)
   [ "$(grep -c '^[a-zA-Z]' "$work/out")" = 1 ] || fail "explain fan printed more: $(cat "$work/out")"
   expect_exit 0 "$mb" explain sides cut
   expect_in "$work/out" "cut for orientation"
+  # --cut-nonorientable: explain, --help and the docs say the same true thing (a breadth-first
+  # spanning tree; not necessarily the fewest edges), never "the fewest".
+  expect_exit 0 "$mb" explain non-orientable component
+  expect_in "$work/out" "With --cut-nonorientable its faces take the orientation of a breadth-first"
+  expect_in "$work/out" "the cut makes the piece orientable, but it is not necessarily the fewest edges."
+  ! grep -q "cuts the fewest" "$work/out" || fail "explain claims the fewest cut"
+  expect_exit 0 "$mb" repair --help
+  tr -s ' \n' ' ' <"$work/out" >"$work/help"
+  expect_in "$work/help" "with it are cut (not necessarily the fewest). Default: such a component keeps its faces' directions"
+  expect_exit 0 "$mb" explain Euler characteristic
+  expect_in "$work/out" "where sides were cut for orientation'. Pieces holding stacked face copies"
   expect_exit 2 "$mb" explain frobnicate
   expect_in "$work/err" "no entry for 'frobnicate'; known terms: manifold, singular edge"
   ;;

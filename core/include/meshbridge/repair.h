@@ -27,9 +27,11 @@ struct RepairOptions {
   //! spanning tree over the pairs, and every pair that disagrees with it is cut (a valid cut,
   //! not necessarily the fewest edges). Off: a component that only the pairs made at singular
   //! edges make non-orientable (its faces orient consistently through the input's own two-sided
-  //! edges) keeps those edges, and the fewest, weakest singular pairs yield (counted in
+  //! edges) keeps those edges, and singular pairs yield, chosen greedily (the largest groups of
+  //! singular pairs that agree are kept first: not necessarily the fewest; counted in
   //! sides_cut_for_orientation; stitching may glue their sides again); any other such component
-  //! keeps its faces' directions and every inconsistent edge of it is cut.
+  //! keeps its faces' directions and every edge whose two faces run the same way is cut (a
+  //! valid cut too, not necessarily the fewest).
   bool cut_nonorientable = false;
   bool stitch = true;  //!< glue boundary sides on one vertex pair back when that stays manifold
   //! A closed shell inside another, both consistently wound the same way as written (an insert,
