@@ -285,6 +285,10 @@ ReportTree check_report_tree(const std::string& file, const DefectReport& report
     Json would = Json::object();
     would["changes"] = preview->changes;
     would["ran_repair"] = preview->ran_repair;
+    std::string text = to_text(*preview);  // the line check prints, without its newline
+    if (!text.empty() && text.back() == '\n')
+      text.pop_back();
+    would["text"] = std::move(text);
     add_repair(would, preview->report, false, nullptr);
     // Not what repair would change: the check's own `gaps` and counts (the input's), and the
     // result's detection, which preview_repair() does not make.
