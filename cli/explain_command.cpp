@@ -84,13 +84,22 @@ const std::vector<Entry> kEntries = {
      "characteristic 2 -> -2': a piece of the result whose number differs from that of the\n"
      "same faces in the input (each vertex and edge counted once, a singular edge too), because\n"
      "pairing joined two sheets at a singular edge into a handle, or sides were cut or a vertex\n"
-     "split within the piece. Pieces that pairing separates keep theirs."},
+     "split within the piece. Pieces that pairing separates keep theirs. A piece where sides\n"
+     "were cut for orientation (a Moebius strip cut open: 0 -> 1) is listed apart: 'changed\n"
+     "where sides were cut for orientation'. Pieces holding stacked face copies (faces on the\n"
+     "corners of another, as in a hull written twice) are listed apart too, 'by pairing stacked\n"
+     "face copies', with each face counted once: '4 -> -8 (2194 faces, 484 of them copies: 488\n"
+     "counting them)': in the input each copy is a face of its own on edges it adds nothing to."},
     {"inconsistently oriented edge",
      "An edge whose two faces run through it in the same direction, so one of them faces the\n"
      "wrong way. Repair flips faces to fix it ('flipped') unless --no-orient."},
     {"non-orientable component",
-     "A piece with no consistent inside and outside, such as a Moebius strip. Repair leaves\n"
-     "its faces as they are unless --cut-nonorientable, which cuts the fewest edges needed."},
+     "A piece with no consistent inside and outside, such as a Moebius strip. By default\n"
+     "repair keeps its faces' directions and cuts each edge whose two faces run through it the\n"
+     "same way. With --cut-nonorientable its faces take the orientation of a breadth-first\n"
+     "spanning tree over the pairs, and the edges that disagree with it are cut. Either way\n"
+     "the cut makes the piece orientable, but it is not necessarily the fewest edges.\n"
+     "('cut for orientation' in the report.)"},
     {"set aside",
      "Faces with fewer than 3 distinct corners (e.g. 'f 1 1 2'): they have no area and no\n"
      "edges to join, so repair keeps them out of the surface and counts them."},

@@ -44,7 +44,10 @@ void add_nested_shells_option(CLI::App& command, AmbiguousNesting& nested) {
                   "a closed shell inside another and wound the same way as it (an insert of an "
                   "assembly, or a cavity wound the wrong way) is ambiguous: material = keep it "
                   "as written, solid (default); cavity = turn it into a void")
-      ->transform(CLI::CheckedTransformer(names, CLI::ignore_case))
+      // The help names the words only ("TEXT:{material,cavity}=material", as --pairing), not
+      // CLI11's mapping of them to the enum's values.
+      ->transform(CLI::CheckedTransformer(names, CLI::ignore_case).description("{material,cavity}"))
+      ->type_name("TEXT")
       ->default_str("material");
 }
 

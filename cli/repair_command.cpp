@@ -318,7 +318,9 @@ void add_repair_command(CLI::App& app, int& exit_code) {
   command->add_flag("--cut-nonorientable", options.cut_nonorientable,
                     "also orient non-orientable components (Moebius strips): faces take the "
                     "orientation of a breadth-first spanning tree, and the edges that disagree "
-                    "with it are cut (not necessarily the fewest)");
+                    "with it are cut (not necessarily the fewest). Default: such a component "
+                    "keeps its faces' directions and each edge whose faces run the same way is "
+                    "cut (not necessarily the fewest either)");
   add_nested_shells_option(*command, options.nested_shells);
   command->add_flag("--remove-duplicates", options.remove_duplicate_faces,
                     "drop faces whose vertex set an earlier face has");

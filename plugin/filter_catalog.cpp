@@ -169,7 +169,8 @@ std::vector<ParameterSpec> make_repair_parameters() {
               "Also orient components that cannot be oriented (Moebius strips): their faces "
               "follow a breadth-first spanning tree and the edges that disagree with it are cut "
               "(not necessarily the fewest). Off: such components keep their faces' directions "
-              "and each of their inconsistent edges is cut."),
+              "and each edge whose two faces run the same way is cut (not necessarily the "
+              "fewest either)."),
       boolean(parameter::remove_duplicate_faces, defaults.core.remove_duplicate_faces,
               "Remove duplicate faces",
               "Delete faces whose vertex set an earlier face has (counted in the log). Off: "

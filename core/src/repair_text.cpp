@@ -30,21 +30,58 @@ std::string midpoint_note(const RepairReport& r) {
   return note;
 }
 
-// "1 component's topology changed by pairing: Euler characteristic 2 -> -2" ("" when none),
-// listing the first few changes.
-std::string topology_note(const RepairReport& r) {
-  const std::vector<TopologyChange>& changes = r.topology_changes;
-  if (changes.empty())
+// "2 -> -2"; for a component with stacked face copies, its value with each face counted once:
+// "4 -> -8 (2194 faces, 484 of them copies: 488 counting them)".
+std::string euler_change(const TopologyChange& change) {
+  if (change.stacked_copies == 0)
+    return std::to_string(change.euler_before) + " -> " + std::to_string(change.euler_after);
+  const long long once = change.euler_before - static_cast<long long>(change.stacked_copies);
+  return std::to_string(once) + " -> " + std::to_string(change.euler_after) + " (" +
+         std::to_string(change.faces) + " faces, " + std::to_string(change.stacked_copies) +
+         " of them copies: " + std::to_string(change.euler_before) + " counting them)";
+}
+
+// Which line of the topology note a change is on.
+enum class TopologyCause { pairing, pairing_stacked_copies, cut_for_orientation };
+
+TopologyCause cause_of(const TopologyChange& change) {
+  if (change.cut_for_orientation)
+    return TopologyCause::cut_for_orientation;
+  return change.stacked_copies != 0 ? TopologyCause::pairing_stacked_copies
+                                    : TopologyCause::pairing;
+}
+
+// One line of the changes made by `cause` ("" when there are none), listing the first few.
+std::string topology_line(const std::vector<TopologyChange>& changes, TopologyCause cause,
+                          const char* what) {
+  std::size_t count = 0;
+  for (const TopologyChange& change : changes)
+    count += cause_of(change) == cause ? 1 : 0;
+  if (count == 0)
     return std::string();
   constexpr std::size_t kListed = 5;
-  std::string note = std::to_string(changes.size()) +
-                     (changes.size() == 1 ? " component's" : " components'") +
-                     " topology changed by pairing: Euler characteristic ";
-  for (std::size_t i = 0; i < changes.size() && i < kListed; ++i) {
-    note += (i > 0 ? ", " : "") + std::to_string(changes[i].euler_before) + " -> " +
-            std::to_string(changes[i].euler_after);
+  std::string note = std::to_string(count) + (count == 1 ? " component's" : " components'") +
+                     " topology changed " + what + "Euler characteristic";
+  std::size_t listed = 0;
+  for (const TopologyChange& change : changes) {
+    if (cause_of(change) != cause || listed == kListed)
+      continue;
+    note += (listed++ > 0 ? ", " : " ") + euler_change(change);
   }
-  return note + (changes.size() > kListed ? ", ...\n" : "\n");
+  return note + (count > kListed ? ", ...\n" : "\n");
+}
+
+// "1 component's topology changed by pairing: Euler characteristic 2 -> -2", the components
+// holding stacked face copies on a line of their own (their value with each face counted once),
+// and those where orientation cut sides open on another ("" when none).
+std::string topology_note(const RepairReport& r) {
+  const std::vector<TopologyChange>& changes = r.topology_changes;
+  return topology_line(changes, TopologyCause::pairing, "by pairing: ") +
+         topology_line(changes, TopologyCause::pairing_stacked_copies,
+                       "by pairing stacked face copies (faces on the corners of another face), "
+                       "with each face counted once: ") +
+         topology_line(changes, TopologyCause::cut_for_orientation,
+                       "where sides were cut for orientation: ");
 }
 
 }  // namespace

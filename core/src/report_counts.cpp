@@ -119,6 +119,10 @@ void append_counts(ReportCounts& out, const RepairReport& r) {
   a.count("nonorientable_after_pairing", r.nonorientable_after_pairing);
   a.count("ambiguous_nested_shells", r.ambiguous_nested_shells);
   a.count("components_topology_changed", r.topology_changes.size());
+  a.count("components_topology_changed_by_cuts_for_orientation",
+          components_topology_changed_by_cuts_for_orientation(r));
+  a.count("components_topology_changed_by_pairing_stacked_copies",
+          components_topology_changed_by_pairing_stacked_copies(r));
   append_counts(out, r.gaps);
   append_counts(out, r.holes);
   append_counts(out, r.before, "before.");

@@ -165,6 +165,10 @@ void add_repair(Json& out, const RepairReport& r, bool elements, const DefectRep
   out["nonorientable_after_pairing"] = r.nonorientable_after_pairing;
   out["ambiguous_nested_shells"] = r.ambiguous_nested_shells;
   out["components_topology_changed"] = r.topology_changes.size();
+  out["components_topology_changed_by_cuts_for_orientation"] =
+      components_topology_changed_by_cuts_for_orientation(r);
+  out["components_topology_changed_by_pairing_stacked_copies"] =
+      components_topology_changed_by_pairing_stacked_copies(r);
   out["gaps"] = gaps_json(r.gaps);
   if (r.holes.max_edges > 0)  // only when asked for: reports of a default repair stay as they were
     out["holes"] = holes_json(r.holes);
@@ -281,6 +285,10 @@ ReportTree check_report_tree(const std::string& file, const DefectReport& report
     Json would = Json::object();
     would["changes"] = preview->changes;
     would["ran_repair"] = preview->ran_repair;
+    std::string text = to_text(*preview);  // the line check prints, without its newline
+    if (!text.empty() && text.back() == '\n')
+      text.pop_back();
+    would["text"] = std::move(text);
     add_repair(would, preview->report, false, nullptr);
     // Not what repair would change: the check's own `gaps` and counts (the input's), and the
     // result's detection, which preview_repair() does not make.

@@ -224,8 +224,11 @@ def check(
     *,
     elements: bool = False,
     self_intersections: bool = False,
+    forecast: bool = True,
+    weld: Union[str, float] = "auto",
+    nested_shells: str = "material",
 ) -> Dict[str, Any]:
-    """Detects every defect without changing anything.
+    """Detects every defect without changing anything, and says what :func:`repair` would change.
 
     ``vertices`` (n, 3) and ``faces`` (m, k) or polygons, or a :class:`Soup` alone. Returns the
     report of ``meshbridge check --json`` as a dict: counts (singular edges and vertices,
@@ -234,9 +237,22 @@ def check(
     ``self_intersections`` object of ``check --self-intersections``: crossing face pairs, faces
     in them, pairs of components that cross.
 
-    Raises :class:`InvalidMeshError` naming the offending face, corner or vertex.
+    With ``forecast=True`` (the default, as the CLI's check) also what ``repair`` with the
+    default options and this ``weld`` and ``nested_shells`` (as ``check --weld``,
+    ``--nested-shells``) would do: ``gaps`` (the gap closing), ``orientation`` (a watertight
+    mesh only: faces it would reverse) and ``repair``: ``changes`` (bool: repair would change
+    the mesh), ``ran_repair``, ``text`` (the CLI's line, e.g. ``"repair would: make 2 vertex
+    copies (split fans)"``) and the counts of a repair report (``vertices_split``, ``sides_cut``,
+    ``faces_flipped``, ...). On a mesh that is not watertight this runs the repair in memory
+    (about a repair's time); ``forecast=False`` skips it.
+
+    Raises :class:`InvalidMeshError` naming the offending face, corner or vertex, and
+    ``ValueError`` for a bad ``weld`` or ``nested_shells``.
     """
-    return _core.check(_soup(vertices, faces), elements, self_intersections)
+    options = (
+        _repair_options({"weld": weld, "nested_shells": nested_shells}) if forecast else None
+    )
+    return _core.check(_soup(vertices, faces), elements, self_intersections, options)
 
 
 def repair(
@@ -251,7 +267,11 @@ def repair(
 
     ``vertices`` (n, 3) and ``faces`` (m, k) or polygons, or a :class:`Soup` alone.
     Options (defaults as ``meshbridge repair``; see ``REPAIR_OPTIONS``): ``pairing``
-    ('geometric' or 'combinatorial'), ``orient``, ``cut_nonorientable``, ``stitch``,
+    ('geometric' or 'combinatorial'), ``orient``, ``cut_nonorientable`` (also orient
+    non-orientable components, Moebius strips: faces follow a breadth-first spanning tree and
+    the edges that disagree with it are cut; off, the default: their faces keep their
+    directions and each edge whose faces run the same way is cut; either cut is not
+    necessarily the fewest; as ``--cut-nonorientable``), ``stitch``,
     ``remove_duplicate_faces``, ``remove_degenerate_faces``, ``remove_zero_area_faces``,
     ``remove_isolated_vertices``,
     ``detect_before_after`` (False skips the before/after detection: faster, fewer counts),

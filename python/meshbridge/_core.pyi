@@ -90,7 +90,10 @@ def write(
     path: str, soup: Soup, vertex_origin: Optional[npt.ArrayLike] = None
 ) -> Tuple[int, int, int, float]: ...
 def check(
-    soup: Soup, elements: bool = False, self_intersections: bool = False
+    soup: Soup,
+    elements: bool = False,
+    self_intersections: bool = False,
+    forecast: Optional[RepairOptions] = None,
 ) -> Dict[str, Any]: ...
 def repair(
     soup: Soup, options: RepairOptions, elements: bool = False

@@ -12,6 +12,7 @@
 #include "meshbridge/detect_defects.h"
 #include "meshbridge/errors.h"
 #include "meshbridge/io.h"
+#include "meshbridge/preview_repair.h"
 #include "meshbridge/read_accounting.h"
 #include "meshbridge/repair.h"
 #include "meshbridge/self_intersections.h"
@@ -189,26 +190,44 @@ void bind_soup_calls(py::module_& m) {
       "(separate_copies_for_stl). Returns (singular edges, singular vertices) of the file as an "
       "STL reader gets it back ((0, 0) for other formats), vertices moved and their distance.");
 
+  // With `forecast` (repair options: their weld and nested_shells, as check's --weld and
+  // --nested-shells) also `gaps`, `orientation` and `repair`, as `meshbridge check --json`.
   m.def(
       "check",
-      [](const PySoup& soup, bool elements, bool self_intersections) {
+      [](const PySoup& soup, bool elements, bool self_intersections,
+         std::optional<RepairOptions> forecast) {
         std::optional<ReportTree> tree;
         {
           py::gil_scoped_release release;
           validate_soup(soup.soup);
-          DefectReport report = detect_defects(soup.soup);
-          if (!soup.path.empty())
+          const ReadInfo* read = soup.path.empty() ? nullptr : &soup.info;
+          OrientationPreview orientation;
+          DefectReport report =
+              forecast ? detect_defects(soup.soup, &orientation, forecast->nested_shells)
+                       : detect_defects(soup.soup);
+          if (read != nullptr)
             count_records_without_corners(soup.info, report);
+          std::optional<RepairPreview> preview;
+          CloseGapsReport gaps;
+          if (forecast) {
+            forecast->close_gaps.float_coordinates = soup.info.float_coordinates;
+            preview = preview_repair(soup.soup, report, orientation, *forecast);
+            gaps = preview->ran_repair
+                       ? preview->report.gaps
+                       : preview_close_gaps(soup.soup, forecast->close_gaps, &report);
+          }
           std::unique_ptr<SelfIntersectionReport> crossings;
           if (self_intersections)
             crossings =
                 std::make_unique<SelfIntersectionReport>(find_self_intersections(soup.soup));
-          tree.emplace(check_tree(soup.path, report, soup.path.empty() ? nullptr : &soup.info,
-                                  elements, crossings.get()));
+          tree.emplace(check_tree(soup.path, report, read, elements, crossings.get(),
+                                  forecast ? &gaps : nullptr, forecast ? &orientation : nullptr,
+                                  preview ? &*preview : nullptr));
         }
         return to_dict(*tree);
       },
-      py::arg("soup"), py::arg("elements") = false, py::arg("self_intersections") = false);
+      py::arg("soup"), py::arg("elements") = false, py::arg("self_intersections") = false,
+      py::arg("forecast") = py::none());
 
   m.def(
       "repair",

@@ -53,10 +53,13 @@ class DictBuilder final : public ReportVisitor {
 }  // namespace
 
 ReportTree check_tree(const std::string& file, const DefectReport& report, const ReadInfo* read,
-                      bool elements, const SelfIntersectionReport* self_intersections) {
+                      bool elements, const SelfIntersectionReport* self_intersections,
+                      const CloseGapsReport* gaps, const OrientationPreview* orientation,
+                      const RepairPreview* preview) {
   ReportJsonOptions options;
   options.elements = elements;
-  return check_report_tree(file, report, read, options, nullptr, self_intersections);
+  return check_report_tree(file, report, read, options, gaps, self_intersections, orientation,
+                           preview);
 }
 
 ReportTree repair_tree(const std::string& file, const RepairReport& report, const ReadInfo* read,

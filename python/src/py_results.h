@@ -7,6 +7,7 @@
 
 #include "meshbridge/defect_report.h"
 #include "meshbridge/io.h"
+#include "meshbridge/preview_repair.h"
 #include "meshbridge/repair.h"
 #include "meshbridge/report_tree.h"
 #include "meshbridge/self_intersections.h"
@@ -22,9 +23,13 @@ namespace py = pybind11;
 
 //! The check report of `meshbridge check --json` (report_json.h) for `report`; `file` empty for
 //! arrays, `read` null when the soup did not come from a file. Element lists only with
-//! `elements`; `self_intersections` adds its object when not null. Needs no GIL.
+//! `elements`; `self_intersections`, `gaps`, `orientation` and `preview` add their objects when
+//! not null (`gaps`, `orientation`, `repair`). Needs no GIL.
 ReportTree check_tree(const std::string& file, const DefectReport& report, const ReadInfo* read,
-                      bool elements, const SelfIntersectionReport* self_intersections = nullptr);
+                      bool elements, const SelfIntersectionReport* self_intersections = nullptr,
+                      const CloseGapsReport* gaps = nullptr,
+                      const OrientationPreview* orientation = nullptr,
+                      const RepairPreview* preview = nullptr);
 
 //! The repair report of `meshbridge repair --report`, same conventions as check_tree; with
 //! `self_intersections` (those of the result) its `self_intersections` object.

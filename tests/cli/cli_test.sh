@@ -865,6 +865,15 @@ arguments)
     "--weld TEXT:NUMBER>=0|auto=auto" "--separate TEXT:NUMBER>=0|auto=auto"; do
     expect_in "$work/out" "$option"
   done
+  # Choices show their words only, never CLI11's mapping of them to values ("{cavity->1,...}").
+  for command in check repair batch snapshot compare explain; do
+    expect_exit 0 "$mb" "$command" --help
+    ! grep -E -- '->|ENUM' "$work/out" || fail "$command --help shows a value mapping (above)"
+  done
+  for command in check repair batch; do
+    expect_exit 0 "$mb" "$command" --help
+    expect_in "$work/out" "--nested-shells TEXT:{material,cavity}=material"
+  done
   expect_exit 0 "$mb" snapshot --help
   expect_in "$work/out" "--size INT:INT in [16 - 8192]=800"
   expect_in "$work/out" "--view TEXT:VIEW=auto"
@@ -1022,6 +1031,17 @@ explain)
   [ "$(grep -c '^[a-zA-Z]' "$work/out")" = 1 ] || fail "explain fan printed more: $(cat "$work/out")"
   expect_exit 0 "$mb" explain sides cut
   expect_in "$work/out" "cut for orientation"
+  # --cut-nonorientable: explain, --help and the docs say the same true thing (a breadth-first
+  # spanning tree; not necessarily the fewest edges), never "the fewest".
+  expect_exit 0 "$mb" explain non-orientable component
+  expect_in "$work/out" "With --cut-nonorientable its faces take the orientation of a breadth-first"
+  expect_in "$work/out" "the cut makes the piece orientable, but it is not necessarily the fewest edges."
+  ! grep -q "cuts the fewest" "$work/out" || fail "explain claims the fewest cut"
+  expect_exit 0 "$mb" repair --help
+  tr -s ' \n' ' ' <"$work/out" >"$work/help"
+  expect_in "$work/help" "with it are cut (not necessarily the fewest). Default: such a component keeps its faces' directions"
+  expect_exit 0 "$mb" explain Euler characteristic
+  expect_in "$work/out" "where sides were cut for orientation'. Pieces holding stacked face copies"
   expect_exit 2 "$mb" explain frobnicate
   expect_in "$work/err" "no entry for 'frobnicate'; known terms: manifold, singular edge"
   ;;

@@ -250,7 +250,8 @@ def test_report_lists_on_request():
 
 def test_reports_equal_the_cli_json_key_for_key(tmp_path):
     """The dicts come from the core's report tree, not from text: they equal json.loads of what
-    `meshbridge check --json` prints for the same file, key order included."""
+    `meshbridge check --json` prints for the same file, key order included, the forecast of
+    what repair would do (`gaps`, `repair`) too."""
     import json
     import subprocess
 
@@ -270,8 +271,7 @@ def test_reports_equal_the_cli_json_key_for_key(tmp_path):
     assert printed.returncode == 1, printed.stderr
     theirs = json.loads(printed.stdout)
     ours = meshbridge.check(meshbridge.read(path), elements=True, self_intersections=True)
-    cli_only = ("gaps", "orientation", "repair")  # what repair would do: the CLI's check adds them
-    theirs = {k: v for k, v in theirs.items() if k not in cli_only}
+    assert ours["repair"]["changes"] is True and "gaps" in ours
     assert ours == theirs
     assert list(ours) == list(theirs)
     assert ours["self_intersections"]["face_pairs"] > 0
@@ -560,3 +560,42 @@ def test_nested_shells_option_turns_an_insert_into_a_cavity_on_request():
     with pytest.raises(ValueError, match="nested_shells must be 'material' or 'cavity'"):
         meshbridge.repair(vertices, faces, nested_shells="hollow")
     assert meshbridge.REPAIR_OPTIONS["nested_shells"] == "material"
+
+
+def test_check_forecasts_what_repair_would_change():
+    """check() says what repair would change, as the CLI's check: `repair.changes`, its counts and
+    its line of text; the counts are the repair's own."""
+    vertices, faces = mesh_models.two_cubes_sharing_an_edge()
+    report = meshbridge.check(vertices, faces)
+    would = report["repair"]
+    assert would["changes"] is True and would["ran_repair"] is True
+    assert would["text"] == "repair would: make 2 vertex copies (split fans)"
+    assert (would["vertices_in"], would["vertices_out"], would["vertices_split"]) == (14, 16, 2)
+    assert (would["faces_in"], would["faces_out"]) == (24, 24)
+    assert would["sides_cut"] == would["sides_cut_for_orientation"] == would["faces_flipped"] == 0
+    assert would["components_topology_changed"] == 0
+    assert "orientation" not in report  # not watertight: repair itself ran
+    assert report["gaps"]["vertices_welded"] == 0
+    repaired = meshbridge.repair(vertices, faces).report
+    assert {k: repaired[k] for k in would if k in repaired and k != "gaps"} == {
+        k: v for k, v in would.items() if k in repaired}
+    # An open box (a cube without its top): repair leaves it as it is.
+    box = mesh_models.CUBE_TRIANGLES[[0, 1] + list(range(4, 12))]
+    report = meshbridge.check(mesh_models.CUBE_CORNERS, box)
+    assert report["boundary_edges"] == 4
+    assert report["repair"]["changes"] is False
+    assert report["repair"]["text"] == "repair would change nothing (4 boundary edges stay open)"
+    assert report["repair"]["vertices_split"] == report["repair"]["sides_cut"] == 0
+    # A closed cube written inside out: detection alone tells (orientation), nothing repaired.
+    inside_out = mesh_models.CUBE_TRIANGLES[:, ::-1]
+    report = meshbridge.check(mesh_models.CUBE_CORNERS, inside_out, nested_shells="cavity")
+    assert report["orientation"] == {"faces_flipped": 12, "ambiguous_nested_shells": 0}
+    assert report["repair"]["ran_repair"] is False
+    assert report["repair"]["text"] == "repair would: reverse 12 faces"
+    # forecast=False: detection only, as before.
+    plain = meshbridge.check(vertices, faces, forecast=False)
+    assert not {"gaps", "orientation", "repair"} & set(plain)
+    with pytest.raises(ValueError, match="nested_shells must be"):
+        meshbridge.check(vertices, faces, nested_shells="void")
+    with pytest.raises(ValueError, match="weld must be"):
+        meshbridge.check(vertices, faces, weld=-1)

@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 #include <utility>
@@ -46,9 +47,33 @@ long long euler_of(const Soup& soup, const std::vector<Index>& label, Index comp
   return static_cast<long long>(vertices.size()) - static_cast<long long>(edges.size()) + faces;
 }
 
+//! The faces labelled `component` whose corners, as a cycle either way round, an earlier one of
+//! them has.
+std::size_t stacked_copies_of(const Soup& soup, const std::vector<Index>& label, Index component) {
+  std::set<std::vector<Index>> seen;
+  std::size_t copies = 0;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    if (label[f] != component)
+      continue;
+    const PolygonView p = soup.polygon(f);
+    std::vector<Index> forward(p.begin(), p.end()), least;
+    for (int way = 0; way < 2; ++way) {
+      for (std::size_t i = 0; i < forward.size(); ++i) {
+        std::rotate(forward.begin(), forward.begin() + 1, forward.end());
+        if (least.empty() || forward < least)
+          least = forward;
+      }
+      std::reverse(forward.begin(), forward.end());
+    }
+    copies += seen.insert(least).second ? 0 : 1;
+  }
+  return copies;
+}
+
 //! Every change listed is one the output shows: its component's V - E + F, counted on the
 //! repaired mesh, is euler_after, and the same faces of the input (through face_origin) give
-//! euler_before; every component not listed has the same value on both sides.
+//! euler_before; its faces and stacked copies are as counted on the input; every component not
+//! listed has the same value on both sides.
 void expect_changes_as_counted(const Soup& input, const RepairResult& r) {
   const Soup& out = r.mesh.soup;
   const std::vector<Index> label = face_components(out);
@@ -62,6 +87,8 @@ void expect_changes_as_counted(const Soup& input, const RepairResult& r) {
     listed.insert(k);
     EXPECT_EQ(euler_of(out, label, k), change.euler_after);
     EXPECT_EQ(euler_of(input, input_label, k), change.euler_before);
+    EXPECT_EQ(static_cast<std::size_t>(std::count(label.begin(), label.end(), k)), change.faces);
+    EXPECT_EQ(stacked_copies_of(input, input_label, k), change.stacked_copies);
   }
   for (Index k : std::set<Index>(label.begin(), label.end())) {
     if (listed.count(k) == 0)
@@ -177,4 +204,110 @@ TEST(MidpointSplits, none_leaves_the_sides_line_as_it_was) {
   EXPECT_EQ(r.report.triangles_given_midpoints, 0u);
   EXPECT_NE(to_text(r.report).find("0 edges split at the midpoint instead), "), std::string::npos)
       << to_text(r.report);
+}
+
+// A Moebius strip: no singular edge, so pairing changes nothing; orientation cuts the seam rung
+// open (its 2 sides; by default the faces keep their directions, with cut_nonorientable they
+// follow a spanning tree), which makes the strip a disk: 0 -> 1. The report says so, not "by
+// pairing" (issue 27, a new user's review).
+TEST(TopologyChanges, a_moebius_strip_cut_for_orientation_is_not_said_to_be_pairings) {
+  const Soup s = models::moebius_strip();
+  for (bool cut_nonorientable : {false, true}) {
+    SCOPED_TRACE(cut_nonorientable);
+    RepairOptions options;
+    options.cut_nonorientable = cut_nonorientable;
+    const RepairResult r = repair(s, options);
+    expect_repair_invariants(s, r);
+    EXPECT_EQ(r.report.sides_cut, 0u);
+    EXPECT_EQ(r.report.sides_cut_for_orientation, 2u);
+    ASSERT_EQ(r.report.topology_changes.size(), 1u);
+    const TopologyChange& change = r.report.topology_changes[0];
+    EXPECT_EQ(change.euler_before, 0);
+    EXPECT_EQ(change.euler_after, 1);
+    EXPECT_EQ(change.faces, 12u);
+    EXPECT_EQ(change.stacked_copies, 0u);
+    EXPECT_TRUE(change.cut_for_orientation);
+    expect_changes_as_counted(s, r);
+    const std::string text = to_text(r.report);
+    EXPECT_NE(text.find("1 component's topology changed where sides were cut for orientation: "
+                        "Euler characteristic 0 -> 1\n"),
+              std::string::npos)
+        << text;
+    EXPECT_EQ(text.find("changed by pairing"), std::string::npos) << text;
+    const std::string json = repair_report_json("m.obj", "", r.report);
+    EXPECT_NE(json.find("\"components_topology_changed\":1,"
+                        "\"components_topology_changed_by_cuts_for_orientation\":1"),
+              std::string::npos)
+        << json;
+  }
+}
+
+TEST(TopologyChanges, pairing_alone_is_said_to_be_pairings) {
+  const RepairResult r = repair(pinched_annulus());
+  ASSERT_EQ(r.report.topology_changes.size(), 1u);
+  EXPECT_FALSE(r.report.topology_changes[0].cut_for_orientation);
+  EXPECT_EQ(to_text(r.report).find("cut for orientation:"), std::string::npos);
+  EXPECT_NE(repair_report_json("p.obj", "", r.report)
+                .find("\"components_topology_changed_by_cuts_for_orientation\":0"),
+            std::string::npos);
+}
+
+// A closed hull written twice over (DART's RHR hull, tests/data/realworld2: edges of 4 faces):
+// each face counts once in the input's V - E + F per copy too, so the input's value, 488, is no
+// surface's. The report gives each component's value with every face counted once (4 -> -8:
+// the copies were paired into one surface with handles), and says how many copies it holds
+// (issue 27, a new user's review).
+TEST(TopologyChanges, stacked_face_copies_are_counted_once_and_named) {
+  const Soup s =
+      read_soup(std::string(MESHBRIDGE_REALWORLD_DIR) + "2/dart_drchubo_convhull_RHR_merged.stl");
+  const RepairResult r = repair(s);
+  expect_repair_invariants(s, r);
+  ASSERT_EQ(r.report.topology_changes.size(), 2u);
+  const TopologyChange& a = r.report.topology_changes[0];
+  const TopologyChange& b = r.report.topology_changes[1];
+  EXPECT_EQ(a.euler_before, 488);
+  EXPECT_EQ(a.euler_after, -8);
+  EXPECT_EQ(a.faces, 2194u);
+  EXPECT_EQ(a.stacked_copies, 484u);
+  EXPECT_EQ(b.euler_before, 1129);
+  EXPECT_EQ(b.euler_after, 0);
+  EXPECT_EQ(b.faces, 2810u);
+  EXPECT_EQ(b.stacked_copies, 1126u);
+  EXPECT_FALSE(a.cut_for_orientation || b.cut_for_orientation);
+  expect_changes_as_counted(s, r);
+  const std::string text = to_text(r.report);
+  EXPECT_NE(text.find("2 components' topology changed by pairing stacked face copies (faces on "
+                      "the corners of another face), with each face counted once: Euler "
+                      "characteristic 4 -> -8 (2194 faces, 484 of them copies: 488 counting "
+                      "them), 3 -> 0 (2810 faces, 1126 of them copies: 1129 counting them)\n"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("changed by pairing:"), std::string::npos) << text;
+  const std::string json = repair_report_json("rhr.stl", "", r.report);
+  EXPECT_NE(json.find("\"components_topology_changed\":2,"
+                      "\"components_topology_changed_by_cuts_for_orientation\":0,"
+                      "\"components_topology_changed_by_pairing_stacked_copies\":2"),
+            std::string::npos)
+      << json;
+}
+
+// A closed cube written twice and three times over (built in code): pairing separates the
+// copies into closed cubes of their own, each 2 as its faces were: no change to report.
+TEST(TopologyChanges, a_cube_written_over_again_separates_into_cubes_that_keep_theirs) {
+  const Soup cube = models::checkerboard_cubes(1);
+  ASSERT_EQ(cube.num_faces(), 12u);
+  for (std::size_t layers : {2u, 3u}) {
+    SCOPED_TRACE(layers);
+    Soup s = cube;
+    for (std::size_t layer = 1; layer < layers; ++layer) {
+      for (std::size_t f = 0; f < cube.num_faces(); ++f)
+        s.add_polygon(cube.polygon(f));
+    }
+    const RepairResult r = repair(s);
+    expect_repair_invariants(s, r);
+    EXPECT_EQ(r.report.components_after, layers);
+    EXPECT_TRUE(r.report.topology_changes.empty());
+    expect_changes_as_counted(s, r);
+    EXPECT_EQ(to_text(r.report).find("topology changed"), std::string::npos);
+  }
 }

@@ -27,9 +27,11 @@ struct RepairOptions {
   //! spanning tree over the pairs, and every pair that disagrees with it is cut (a valid cut,
   //! not necessarily the fewest edges). Off: a component that only the pairs made at singular
   //! edges make non-orientable (its faces orient consistently through the input's own two-sided
-  //! edges) keeps those edges, and the fewest, weakest singular pairs yield (counted in
+  //! edges) keeps those edges, and singular pairs yield, chosen greedily (the largest groups of
+  //! singular pairs that agree are kept first: not necessarily the fewest; counted in
   //! sides_cut_for_orientation; stitching may glue their sides again); any other such component
-  //! keeps its faces' directions and every inconsistent edge of it is cut.
+  //! keeps its faces' directions and every edge whose two faces run the same way is cut (a
+  //! valid cut too, not necessarily the fewest).
   bool cut_nonorientable = false;
   bool stitch = true;  //!< glue boundary sides on one vertex pair back when that stays manifold
   //! A closed shell inside another, both consistently wound the same way as written (an insert,
@@ -64,6 +66,18 @@ struct TopologyChange {
   Index first_face = 0;        //!< the component's first face in the output
   long long euler_before = 0;  //!< V - E + F of its faces in the input, every edge counted once
   long long euler_after = 0;   //!< V - E + F of the component in the output
+  std::size_t faces = 0;       //!< the component's faces (output and input alike)
+  //! Of `faces`, stacked copies: polygons with the same sides as an earlier face of the
+  //! component (the same corners, either way round). In the input each counts as a face of its
+  //! own on edges and vertices it adds nothing to, so `euler_before` - `stacked_copies` is V - E
+  //! + F with every face counted once (a closed hull written 3 times over: 2 + 2F, where F is
+  //! one layer's faces); pairing makes each copy a face of the output's surface.
+  std::size_t stacked_copies = 0;
+  //! Some side of the component that orientation cut (RepairReport::sides_cut_for_orientation)
+  //! is still open in the output: the change is (at least partly) that cut's, not pairing's (a
+  //! Moebius strip cut open: 0 -> 1). false: pairing alone made it (pairs chosen at singular
+  //! edges, contenders left unpaired, a pinch vertex split).
+  bool cut_for_orientation = false;
 };
 
 //! What repair changed. Every count is exact.
@@ -133,15 +147,40 @@ struct RepairReport {
   //! its triangles), where every vertex and every edge counts once, a singular edge too: pairing
   //! that joins two sheets at a singular edge into a handle (a shell of Euler characteristic 2
   //! becomes a torus, 0), sides left unpaired within one component, a pinch vertex split within
-  //! one component. Components pairing separated keep theirs (two cubes on one edge: 2 and 2).
-  //! In the order of their first faces; the JSON report gives the count,
-  //! `components_topology_changed`.
+  //! one component; or sides that orientation cut open within one component (a Moebius strip
+  //! cut open: 0 -> 1; TopologyChange::cut_for_orientation). Components pairing separated keep
+  //! theirs (two cubes on one edge: 2 and 2). In the order of their first faces; the JSON report
+  //! gives the count, `components_topology_changed`, and of them those with a cut for
+  //! orientation, `components_topology_changed_by_cuts_for_orientation`, and of the others
+  //! those holding stacked face copies, `components_topology_changed_by_pairing_stacked_copies`
+  //! (the text report's three lines).
   std::vector<TopologyChange> topology_changes;
   CloseGapsReport gaps;   //!< what gap closing did before pairing
   FillHolesReport holes;  //!< what hole filling did after pairing (all 0 when off)
   DefectReport before;    //!< detection on the input (before gap closing)
   DefectReport after;     //!< detection on the result (holes filled): no singular edge or vertex
 };
+
+//! The topology changes of `report` where orientation cut sides open
+//! (TopologyChange::cut_for_orientation): the JSON's
+//! `components_topology_changed_by_cuts_for_orientation`.
+inline std::size_t components_topology_changed_by_cuts_for_orientation(const RepairReport& report) {
+  std::size_t count = 0;
+  for (const TopologyChange& change : report.topology_changes)
+    count += change.cut_for_orientation ? 1 : 0;
+  return count;
+}
+
+//! The other topology changes of `report` in components that hold stacked face copies
+//! (TopologyChange::stacked_copies, no cut for orientation): the JSON's
+//! `components_topology_changed_by_pairing_stacked_copies`.
+inline std::size_t components_topology_changed_by_pairing_stacked_copies(
+    const RepairReport& report) {
+  std::size_t count = 0;
+  for (const TopologyChange& change : report.topology_changes)
+    count += !change.cut_for_orientation && change.stacked_copies != 0 ? 1 : 0;
+  return count;
+}
 
 struct RepairResult {
   IndexedMesh mesh;

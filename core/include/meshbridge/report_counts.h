@@ -65,7 +65,8 @@ void append_counts(ReportCounts& out, const SelfIntersectionReport& crossings,
 //! sides_cut_for_orientation, sides_cut_to_stay_manifold, sides_paired_with_copies,
 //! edges_split_to_stay_manifold, faces_given_midpoints, triangles_given_midpoints,
 //! sides_stitched, nonorientable_after_pairing, ambiguous_nested_shells,
-//! components_topology_changed; then gaps.*, holes.*
+//! components_topology_changed, components_topology_changed_by_cuts_for_orientation,
+//! components_topology_changed_by_pairing_stacked_copies; then gaps.*, holes.*
 //! (always, 0 when filling was off), before.* and after.* (the check counts of `before` and
 //! `after`).
 void append_counts(ReportCounts& out, const RepairReport& report);

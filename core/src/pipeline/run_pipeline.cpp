@@ -45,6 +45,11 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
   counts.sides_cut = unpaired_singular_sides(grouped, pairing.mate);
 
   // 3. Orientation: faces joined through pairs run consistently (pairs that cannot are cut).
+  //    The pairs as pairing made them are kept when orientation can cut one (some pair runs the
+  //    same way), to tell which topology changes its cuts made.
+  std::vector<Index> paired;
+  if (has_inconsistent_pair(soup, pairing.mate))
+    paired = pairing.mate;
   if (options.orient) {
     const OrientationCounts oriented =
         orient_consistently(soup, grouped.corner_face, options.cut_nonorientable, pairing.mate,
@@ -55,6 +60,13 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
     pairing.flipped.assign(soup.num_faces(), 0);
     counts.sides_cut_for_orientation = cut_inconsistent_pairs(soup, pairing.mate);
   }
+  std::vector<char> cut_for_orientation;  // per side, when orientation cut any
+  if (counts.sides_cut_for_orientation != 0) {
+    cut_for_orientation.assign(soup.num_corners(), 0);
+    for (Index c = 0; c < paired.size(); ++c)
+      cut_for_orientation[c] = paired[c] != kNoIndex && pairing.mate[c] == kNoIndex ? 1 : 0;
+  }
+  paired = std::vector<Index>();
 
   // 4. Stitching: unpaired sides of one edge glued back where orientation allows; then each
   //    component turned as a whole (closed ones outward).
@@ -79,7 +91,7 @@ PipelineResult run_pipeline(const WorkingSoup& working, GroupedSides grouped,
     counts.ambiguous_nested_shells = orient_components(soup, grouped, pairing, options.nested);
 
   // 7. Emit the output polygons once, after counting what the steps did to the topology.
-  result.topology_changes = topology_changes(soup, grouped, pairing, split);
+  result.topology_changes = topology_changes(soup, grouped, pairing, split, cut_for_orientation);
   const MidpointFaces given = midpoint_faces(soup, grouped.corner_face, pairing);
   counts.faces_given_midpoints = given.faces;
   counts.triangles_given_midpoints = given.triangles;

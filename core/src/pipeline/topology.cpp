@@ -3,6 +3,9 @@
 
 #include "union_find.h"
 
+#include <algorithm>
+#include <utility>
+
 namespace meshbridge::detail {
 
 namespace {
@@ -23,10 +26,56 @@ bool keeps_every_edge_and_vertex(const Soup& soup, const GroupedSides& grouped,
   return true;
 }
 
+// The corners of face `f` as a key that copies of it share: started at its smallest vertex, in
+// the direction whose next vertex is the smaller (the same sides either way round).
+std::vector<Index> sides_key(const Soup& soup, Index f) {
+  const PolygonView p = soup.polygon(f);
+  const std::size_t n = p.size();
+  std::size_t start = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (p[i] < p[start])
+      start = i;
+  }
+  const bool forward = p[(start + 1) % n] <= p[(start + n - 1) % n];
+  std::vector<Index> key(n);
+  for (std::size_t i = 0; i < n; ++i)
+    key[i] = p[forward ? (start + i) % n : (start + n - i) % n];
+  return key;
+}
+
+// Fills the faces, stacked copies and orientation cuts of `changes`, the components of
+// `component` (per face) listed in `changed` (per component: its index in `changes`, or kNoIndex).
+void describe_changes(const Soup& soup, const CornerFaces& corner_face,
+                      const std::vector<Index>& mate, const std::vector<char>& cut_for_orientation,
+                      const std::vector<Index>& component, const std::vector<Index>& changed,
+                      std::vector<TopologyChange>& changes) {
+  std::vector<std::pair<Index, std::vector<Index>>> keys;  // (change, sides key) per face
+  for (Index f = 0; f < soup.num_faces(); ++f) {
+    const Index i = changed[component[f]];
+    if (i == kNoIndex)
+      continue;
+    ++changes[i].faces;
+    keys.emplace_back(i, sides_key(soup, f));
+  }
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t j = 1; j < keys.size(); ++j) {
+    if (keys[j] == keys[j - 1])
+      ++changes[keys[j].first].stacked_copies;
+  }
+  for (Index c = 0; c < cut_for_orientation.size(); ++c) {
+    if (cut_for_orientation[c] && mate[c] == kNoIndex) {
+      const Index i = changed[component[corner_face[c]]];
+      if (i != kNoIndex)
+        changes[i].cut_for_orientation = true;
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<TopologyChange> topology_changes(const Soup& soup, const GroupedSides& grouped,
-                                             const SidePairing& pairing, const VertexSplit& split) {
+                                             const SidePairing& pairing, const VertexSplit& split,
+                                             const std::vector<char>& cut_for_orientation) {
   std::vector<TopologyChange> changes;
   if (keeps_every_edge_and_vertex(soup, grouped, pairing, split))
     return changes;
@@ -99,10 +148,19 @@ std::vector<TopologyChange> topology_changes(const Soup& soup, const GroupedSide
       }
     }
   }
+  std::vector<Index> changed(num_components, kNoIndex);
   for (std::size_t k = 0; k < num_components; ++k) {
-    if (before[k] != after[k])
-      changes.push_back({first_face[k], before[k], after[k]});
+    if (before[k] != after[k]) {
+      changed[k] = static_cast<Index>(changes.size());
+      TopologyChange change;
+      change.first_face = first_face[k];
+      change.euler_before = before[k];
+      change.euler_after = after[k];
+      changes.push_back(change);
+    }
   }
+  if (!changes.empty())
+    describe_changes(soup, corner_face, mate, cut_for_orientation, component, changed, changes);
   return changes;
 }
 
