@@ -25,6 +25,9 @@ void PositionTable::reserve(std::size_t vertices) {
     slots *= 2;
   if (slots > slots_.size())
     rehash(slots);
+  // The positions on 2 MiB pages too: the stages after reading look them up at random where the
+  // faces are shuffled.
+  reserve_huge(positions_, slots_.size() / 4 * 3);
 }
 
 Index PositionTable::insert(const Point& p, std::uint64_t hash) {
@@ -53,7 +56,9 @@ void PositionTable::flush() {
 }
 
 void PositionTable::rehash(std::size_t size) {
-  std::vector<Slot> slots(size, Slot{{0, 0, 0}, 0, 0});
+  std::vector<Slot> slots;
+  reserve_huge(slots, size);
+  slots.resize(size, Slot{{0, 0, 0}, 0, 0});
   const std::size_t mask = slots.size() - 1;
   for (std::size_t id = 0; id < positions_.size(); ++id) {
     const Point& p = positions_[id];
@@ -70,11 +75,15 @@ void PositionTable::rehash(std::size_t size) {
 void PositionTable::append(PositionTable& other) {
   flush();
   other.flush();
-  std::vector<Index> id(other.positions_.size());
-  for (std::size_t k = 0; k < other.positions_.size(); ++k) {
+  const std::vector<Point>& theirs = other.positions_;
+  std::vector<Index> id(theirs.size());
+  constexpr std::size_t kAhead = 16;  // positions whose slots are on their way
+  for (std::size_t k = 0; k < theirs.size(); ++k) {
     if (4 * (positions_.size() + 1) > 3 * slots_.size())
       rehash(2 * slots_.size());
-    id[k] = insert(other.positions_[k], position_hash(other.positions_[k]));
+    if (k + kAhead < theirs.size())
+      __builtin_prefetch(&slots_[position_hash(theirs[k + kAhead]) & (slots_.size() - 1)]);
+    id[k] = insert(theirs[k], position_hash(theirs[k]));
   }
   ids_.reserve(ids_.size() + other.ids_.size());
   for (const Index k : other.ids_)
