@@ -189,9 +189,22 @@ std::string to_text(const RepairPreview& preview) {
           counted(r.edges_split_to_stay_manifold, "vertex") + " added to " +
           counted(r.faces_given_midpoints, "face") + ")");
   add(parts, r.faces_flipped, "reverse " + counted(r.faces_flipped, "face"));
+  std::size_t by_cuts = 0, by_stacked_copies = 0;  // the causes, as repair's report names them
+  for (const TopologyChange& change : r.topology_changes) {
+    by_cuts += change.cut_for_orientation ? 1 : 0;
+    by_stacked_copies += !change.cut_for_orientation && change.stacked_copies != 0 ? 1 : 0;
+  }
+  std::string causes;
+  if (by_cuts != 0)
+    causes += std::to_string(by_cuts) + " where sides are cut for orientation";
+  if (by_stacked_copies != 0) {
+    causes += (causes.empty() ? "" : ", ") + std::to_string(by_stacked_copies) +
+              " by pairing stacked face copies";
+  }
   add(parts, r.topology_changes.size(),
-      "change the topology of " + counted(r.topology_changes.size(), "component") +
-          " (Euler characteristic)");
+      "change the topology (Euler characteristic) of " +
+          counted(r.topology_changes.size(), "component") +
+          (causes.empty() ? "" : " (" + causes + ")"));
   add(parts, r.holes.faces_added,
       "fill " + counted(r.holes.holes_filled, "hole") + " with " +
           counted(r.holes.faces_added, "triangle"));

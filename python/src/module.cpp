@@ -202,16 +202,21 @@ void bind_soup_calls(py::module_& m) {
           validate_soup(soup.soup);
           const ReadInfo* read = soup.path.empty() ? nullptr : &soup.info;
           OrientationPreview orientation;
-          DefectReport report =
-              forecast ? detect_defects(soup.soup, &orientation, forecast->nested_shells)
-                       : detect_defects(soup.soup);
+          DefectReport report;
+          std::optional<RepairPreview> preview;
+          if (forecast) {  // detection and forecast in one pass, as `meshbridge check`
+            forecast->close_gaps.float_coordinates = soup.info.float_coordinates;
+            SoupCheck checked = check_soup(soup.soup, *forecast);
+            report = std::move(checked.report);
+            orientation = checked.orientation;
+            preview = std::move(checked.preview);
+          } else {
+            report = detect_defects(soup.soup);
+          }
           if (read != nullptr)
             count_records_without_corners(soup.info, report);
-          std::optional<RepairPreview> preview;
           CloseGapsReport gaps;
           if (forecast) {
-            forecast->close_gaps.float_coordinates = soup.info.float_coordinates;
-            preview = preview_repair(soup.soup, report, orientation, *forecast);
             gaps = preview->ran_repair
                        ? preview->report.gaps
                        : preview_close_gaps(soup.soup, forecast->close_gaps, &report);

@@ -104,6 +104,9 @@ check_exit_codes)
     copies=$(sed -n 's/^repair would: .*make \([0-9]*\) vertex cop.*/\1/p' "$work/out")
     expect_in "$work/repaired.txt" "(${copies:-0} cop"
   done
+  # The forecast names the cause of a topology change as repair's report does.
+  expect_exit 1 "$mb" check "$models/moebius.obj"
+  expect_in "$work/out" "cut 2 sides open, change the topology (Euler characteristic) of 1 component (1 where sides are cut for orientation)"
   # An open box with nothing to close: defects listed, but repair would leave it as it is.
   expect_exit 0 "$mb" check "$models/cube_with_hole.obj"
   expect_in "$work/out" "boundary edges: 4"
