@@ -19,6 +19,7 @@ namespace {
 struct Entry {
   const char* term;
   const char* text;
+  std::vector<const char*> aliases;  //!< other words the reports use for it (matched as `term`)
 };
 
 // Keep in step with README.md "What the reports mean".
@@ -52,10 +53,37 @@ const std::vector<Entry> kEntries = {
      "  paired with copies instead: where a face is given twice (a sheet written once per side),\n"
      "    the two copies are glued back to back (a closed pillow of no volume) instead of cut\n"
      "  stitched: cut sides glued back in pairs where that stays manifold (--no-stitch: never)"},
+    {"midpoint",
+     "'N edges split at the midpoint' (check: 'split N edges at the midpoint'). Where two pairs\n"
+     "of faces, or a pair and a cut side, would end up on one edge of the result (the faces\n"
+     "around a vertex pass the same neighbour twice: a fan winding twice around it, or both\n"
+     "layers of a sheet written once per side), and cutting would open what was closed, repair\n"
+     "keeps the pair and adds a new vertex in the middle of its edge, so the two sheets touch\n"
+     "there without sharing an edge. Each split adds one vertex and gives the pair's two faces\n"
+     "one corner more: 'M triangles became quads' (a triangle given a midpoint is a quad, still\n"
+     "flat).",
+     {"edges split at the midpoint", "split at the midpoint", "midpoint split"}},
+    {"paired with copies",
+     "Where a face is given twice (the same corners, either way round), as in a sheet written\n"
+     "once for each side, and two pairs would otherwise share one edge of the result, the\n"
+     "sides of the two copies are glued to each other back to back, and their former partners\n"
+     "to each other, instead of being cut: no edge is opened (copies glued so all round close\n"
+     "into a flat pillow of no volume, as a slicer sees them). 'N paired with copies' counts\n"
+     "sides, 4 per exchange.",
+     {"copies glued back to back"}},
+    {"stitched",
+     "Sides that were cut open (left without a partner) glued back together in pairs on their\n"
+     "edge where the result stays consistently oriented and manifold, flipping a smaller piece\n"
+     "if that makes them run opposite ways (not with --no-orient). 'N stitched' counts sides.\n"
+     "--no-stitch: never.",
+     {"stitch"}},
     {"fan",
      "The faces around a vertex that are connected to each other across its edges (also called\n"
      "an umbrella). A manifold vertex has exactly one fan. Repair gives each extra fan its own\n"
-     "copy of the vertex: 'copies from split fans' in the repair report."},
+     "copy of the vertex: 'copies from split fans' in the repair report ('make N vertex\n"
+     "copies (split fans)' in check's forecast). The copies sit at the same position; each\n"
+     "fan's faces use their own one, so the vertex is no longer singular.",
+     {"vertex copies", "vertex copy", "split fans", "copies from split fans"}},
     {"pinch vertex",
      "A vertex where two or more fans touch in one point only, like the waist of an hourglass\n"
      "(two cones tip to tip), with no singular edge there. Repair splits it into one copy per\n"
@@ -74,7 +102,8 @@ const std::vector<Entry> kEntries = {
      "that no valid patch closes."},
     {"watertight",
      "No boundary edge and no singular edge or vertex: the surface closes up with an inside\n"
-     "and an outside (what 3D printing needs). The repair report calls this 'closed'."},
+     "and an outside (what 3D printing needs); faces consistently oriented too. Reports say\n"
+     "'watertight yes' or 'watertight no' (repair on its 'after:' line, for the output)."},
     {"component",
      "A piece of the mesh whose faces are connected across edges. `check` connects through\n"
      "singular edges too, so two cubes on one edge are 1 component before repair and 2 after."},
@@ -89,7 +118,16 @@ const std::vector<Entry> kEntries = {
      "where sides were cut for orientation'. Pieces holding stacked face copies (faces on the\n"
      "corners of another, as in a hull written twice) are listed apart too, 'by pairing stacked\n"
      "face copies', with each face counted once: '4 -> -8 (2194 faces, 484 of them copies: 488\n"
-     "counting them)': in the input each copy is a face of its own on edges it adds nothing to."},
+     "counting them)': in the input each copy is a face of its own on edges it adds nothing to.",
+     {"topology", "topology changed", "V - E + F"}},
+    {"stacked face copies",
+     "Faces with the same corners as an earlier face of the same piece (either way round),\n"
+     "lying on the corners of that face: a hull or sheet written twice over. Repair keeps every\n"
+     "copy; pairing makes each one a face of the output's surface, glued to its neighbours like\n"
+     "any other (see 'paired with copies'). The topology line lists such pieces apart, 'by\n"
+     "pairing stacked face copies', and counts each face once in the Euler characteristic\n"
+     "before repair, since in the input a copy adds a face but no edge or vertex.",
+     {"stacked copies", "stacked face copy"}},
     {"inconsistently oriented edge",
      "An edge whose two faces run through it in the same direction, so one of them faces the\n"
      "wrong way. Repair flips faces to fix it ('flipped') unless --no-orient."},
@@ -100,14 +138,55 @@ const std::vector<Entry> kEntries = {
      "spanning tree over the pairs, and the edges that disagree with it are cut. Either way\n"
      "the cut makes the piece orientable, but it is not necessarily the fewest edges.\n"
      "('cut for orientation' in the report.)"},
+    {"nested shell",
+     "A closed shell inside another closed shell and wound the same way as it (its faces\n"
+     "facing the same way, outward). The file does not say what it is: an insert (a part of an\n"
+     "assembly placed inside another, solid) or a cavity whose faces were written the wrong\n"
+     "way round (a void). By default repair keeps it as written, solid ('left as written';\n"
+     "check: 'repair keeps them as written'); --nested-shells cavity makes it a void, its faces\n"
+     "turned toward the void. Counted either way ('nested shells: N').",
+     {"nested shells", "ambiguous nested shell"}},
     {"set aside",
      "Faces with fewer than 3 distinct corners (e.g. 'f 1 1 2'): they have no area and no\n"
      "edges to join, so repair keeps them out of the surface and counts them."},
-    {"split",
-     "A pinched polygon (one that passes twice through the same vertex) is split into simple\n"
-     "polygons: 'N split into M more' means N polygons became N + M. A keyhole polygon (an\n"
-     "outline and holes joined by slits: it runs a-b and later b-a) is cut into triangles as\n"
-     "one polygon with holes, the holes left open ('keyhole polygon triangulated')."},
+    {"gaps",
+     "Cracks left by rounding, closed before pairing: welds (near vertices merged) and\n"
+     "T-junction closings together (see 'weld' and 'T-junction'). 'gaps (tolerance T)' gives the\n"
+     "largest tolerance used. 'gaps kept open': near pairs left apart because closing them\n"
+     "would move a vertex by more than a quarter of the shortest edge there (a feature, not a\n"
+     "crack). 'gaps refused': all of them undone, because the repaired mesh would not have\n"
+     "fewer open edges with them, or would have more non-orientable components.\n"
+     "--weld 0 turns gap closing off.",
+     {"gap", "gap closing", "gaps kept open", "gaps refused"}},
+    {"weld",
+     "Merging two boundary vertices (ends of open edges) that lie closer than the tolerance:\n"
+     "the copies of one corner that a CAD export left a rounding error apart. With --weld auto\n"
+     "(the default) each vertex has its own tolerance: 2^-21 (about 5e-7) times the size of its\n"
+     "part, and in a file of 32-bit coordinates (STL, 3MF, float PLY) at least 2^-21 times the\n"
+     "vertex's largest coordinate; --weld TOL gives one distance in model units. A weld never\n"
+     "merges two corners of one polygon ('refused: same polygon') or moves a vertex more than a\n"
+     "quarter of the shortest edge at it, and all welds are undone when they would not make the\n"
+     "result better (see 'gaps'). Vertices at exactly the same position are never welded.",
+     {"welds", "welded", "welding"}},
+    {"T-junction",
+     "A crack where one long open edge runs along two shorter open edges on the other side,\n"
+     "their shared vertex lying on the long edge (within the weld tolerance). Closing it splits\n"
+     "the long edge at that vertex (its face gets a corner more), so the two sides pair up:\n"
+     "'N T-junctions closed (M sides split)'. Kept, refused or left open as welds are (see\n"
+     "'gaps').",
+     {"T-junctions", "T-junction closing", "T-junction crack"}},
+    {"pinched polygon",
+     "A polygon that passes twice through the same vertex (like a figure 8). Repair splits it\n"
+     "into simple polygons: 'N split into M more' means N polygons became N + M (check: 'split\n"
+     "N pinched polygons into K pieces'). A keyhole polygon is cut into triangles instead (see\n"
+     "there; it is counted here too).",
+     {"split", "pinched polygons"}},
+    {"keyhole polygon",
+     "A polygon that is an outline and holes joined by slits: it runs a-b and later b-a. Repair\n"
+     "cuts it into triangles as one polygon with holes, the holes left open, so no triangle\n"
+     "overlaps another ('keyhole polygon triangulated, holes left open'). A slit that leads to\n"
+     "no hole of the outline is set aside ('keyhole slit set aside').",
+     {"keyhole", "keyhole slit"}},
     {"degenerate face",
      "A face that repeats a vertex index, not a keyhole polygon (counted as one, and\n"
      "triangulated). --remove-degenerate drops them."},
@@ -125,8 +204,10 @@ const std::vector<Entry> kEntries = {
      "copies repair splits count as shared) are not counted. Repair does not resolve them.\n"
      "Shown violet: `snapshot --self-intersections` and MeshLab's Detect."},
     {"detached",
-     "Last resort: faces cut loose (given their own vertices) because OpenMesh could not\n"
-     "represent them otherwise. Normally 0."},
+     "Only in `compare`: faces that OpenMesh's stock loader could not attach to their\n"
+     "neighbours (a singular edge or vertex) and added on copies of their vertices, cut loose\n"
+     "from the rest ('faces detached'). MeshBridge's column is always 0: it never detaches a\n"
+     "face. Repair does not report it."},
 };
 
 std::string lower(std::string text) {
@@ -135,15 +216,35 @@ std::string lower(std::string text) {
   return text;
 }
 
+// The entry's term and aliases, lower case.
+std::vector<std::string> names_of(const Entry& entry) {
+  std::vector<std::string> names{lower(entry.term)};
+  for (const char* alias : entry.aliases)
+    names.push_back(lower(alias));
+  return names;
+}
+
+// Whether `topic` names the entry exactly (exact) or one contains the other (!exact).
+bool matches(const Entry& entry, const std::string& topic, bool exact) {
+  for (const std::string& name : names_of(entry)) {
+    if (exact ? name == topic
+              : name.find(topic) != std::string::npos || topic.find(name) != std::string::npos)
+      return true;
+  }
+  return false;
+}
+
 int run_explain(const std::vector<std::string>& words) {
   std::string topic;
   for (const std::string& word : words)
     topic += (topic.empty() ? "" : " ") + lower(word);
+  // A topic that is a term or alias prints that entry only ("sides cut", not also "side");
+  // any other prints every entry whose names contain it or that it contains ("copies").
+  const bool exact = std::any_of(kEntries.begin(), kEntries.end(),
+                                 [&](const Entry& entry) { return matches(entry, topic, true); });
   bool found = false;
   for (const Entry& entry : kEntries) {
-    const std::string term = lower(entry.term);
-    if (!topic.empty() && term.find(topic) == std::string::npos &&
-        topic.find(term) == std::string::npos)
+    if (!topic.empty() && !matches(entry, topic, exact))
       continue;
     std::cout << entry.term << "\n";
     std::string text = entry.text;
@@ -173,7 +274,7 @@ void add_explain_command(CLI::App& app, int& exit_code) {
       "explain",
       "Tell what the words and notation in the reports mean (all terms, or those matching "
       "TOPIC).");
-  command->add_option("TOPIC", *words, "a term, e.g. contender, fan, 'sides cut'");
+  command->add_option("TOPIC", *words, "a term, e.g. contender, fan, 'sides cut', midpoint");
   command->callback([words, &exit_code] { exit_code = run_explain(*words); });
 }
 

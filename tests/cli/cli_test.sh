@@ -1045,6 +1045,31 @@ explain)
   expect_in "$work/help" "with it are cut (not necessarily the fewest). Default: such a component keeps its faces' directions"
   expect_exit 0 "$mb" explain Euler characteristic
   expect_in "$work/out" "where sides were cut for orientation'. Pieces holding stacked face copies"
+  # The words today's check and repair reports use resolve, each to an entry that explains it.
+  for pair in "midpoint|adds a new vertex in the middle" "edges split at the midpoint|became quads" \
+    "stacked face copies|each face once" "nested|--nested-shells cavity makes it a void" \
+    "weld|closer than the tolerance" "welded|2^-21" "T-junction|splits" \
+    "t-junctions|the long edge at that vertex" "gaps|T-junction closings together" \
+    "keyhole|holes left open" "pinched polygon|simple polygons" "vertex copies|copies from split fans" \
+    "split fans|copy of the vertex" "topology|vertices - edges + faces" \
+    "Euler|vertices - edges + faces" "paired with copies|back to back" \
+    "stitched|glued back together" "copies|stacked face copies"; do
+    expect_exit 0 "$mb" explain "${pair%%|*}"
+    expect_in "$work/out" "${pair#*|}"
+  done
+  # An exact term prints its entry alone: "midpoint" not also the entries that mention it.
+  expect_exit 0 "$mb" explain midpoint
+  [ "$(grep -c '^[a-zA-Z]' "$work/out")" = 1 ] || fail "explain midpoint printed more: $(cat "$work/out")"
+  # "copies" names no entry exactly: every entry with copies in its name.
+  expect_exit 0 "$mb" explain copies
+  [ "$(grep -c '^[a-zA-Z]' "$work/out")" = 3 ] || fail "explain copies: $(grep '^[a-zA-Z]' "$work/out")"
+  # Out-of-date wording gone: repair prints "watertight yes/no"; only compare has "detached".
+  expect_exit 0 "$mb" explain watertight
+  expect_in "$work/out" "'watertight yes' or 'watertight no'"
+  ! grep -q "calls this 'closed'" "$work/out" || fail "explain watertight: 'closed'"
+  expect_exit 0 "$mb" explain detached
+  expect_in "$work/out" "Only in \`compare\`"
+  ! grep -q "Normally 0" "$work/out" || fail "explain detached: 'Normally 0'"
   expect_exit 2 "$mb" explain frobnicate
   expect_in "$work/err" "no entry for 'frobnicate'; known terms: manifold, singular edge"
   ;;
