@@ -100,7 +100,9 @@ int run_check(const CheckArguments& arguments) {
     if (orientation.ambiguous_nested_shells != 0) {
       std::cout << "nested shells: " << orientation.ambiguous_nested_shells
                 << " wound like the shell around them (an insert, or a cavity wound the wrong "
-                   "way): repair keeps them as written (--nested-shells cavity: voids)\n";
+                << (arguments.nested == AmbiguousNesting::cavity
+                        ? "way): repair reverses them into voids (--nested-shells cavity)\n"
+                        : "way): repair keeps them as written (--nested-shells cavity: voids)\n");
     }
     if (report.has_defects() || (crossings && crossings->has_self_intersections()))
       std::cout << "(`meshbridge explain` tells what these terms mean)\n";

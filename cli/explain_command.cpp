@@ -22,7 +22,7 @@ struct Entry {
   std::vector<const char*> aliases;  //!< other words the reports use for it (matched as `term`)
 };
 
-// Keep in step with README.md "What the reports mean".
+// Keep in step with docs/cli.md "What the reports mean".
 const std::vector<Entry> kEntries = {
     {"manifold",
      "A surface is manifold when every edge has at most two faces (one on each side) and the\n"

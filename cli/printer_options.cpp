@@ -126,7 +126,7 @@ std::string wider_weld_hint(const Soup& soup, const CloseGapsOptions& weld,
       << " boundary edges; cracks wider than the automatic tolerance stay open: --weld "
       << wider.tolerance << " would weld " << w.vertices_welded << " vertices (largest move "
       << w.largest_weld_distance << ") and close " << w.t_junctions_closed
-      << " T-junction cracks\n";
+      << " T-junction cracks (repair keeps them only where the result has fewer open edges)\n";
   return out.str();
 }
 

@@ -96,6 +96,7 @@ RepairPreview preview_repair(const Soup& soup, const DefectReport& before,
     r.vertices_in = r.vertices_out = soup.num_vertices();
     r.faces_flipped = orientation.faces_flipped;
     r.ambiguous_nested_shells = orientation.ambiguous_nested_shells;
+    r.nested_shells = options.nested_shells;
     r.components_before = r.components_after = before.num_components;
     r.before = r.after = before;
   } else {
@@ -167,9 +168,21 @@ std::string to_text(const RepairPreview& preview) {
   add(parts, g.t_junctions_closed, "close " + counted(g.t_junctions_closed, "T-junction"));
   add(parts, r.faces_set_aside,
       "set aside " + counted(r.faces_set_aside, "face") + " with < 3 distinct corners");
-  add(parts, r.faces_split,
-      "split " + counted(r.faces_split, "pinched polygon") + " into " +
-          std::to_string(r.faces_split + r.faces_added_by_split) + " pieces");
+  // Keyhole polygons are among the faces split (into their triangles, the holes left open).
+  const std::size_t keyholes = r.keyhole_polygons_triangulated;
+  const std::size_t pieces = r.faces_split + r.faces_added_by_split;
+  if (keyholes == 0) {
+    add(parts, r.faces_split,
+        "split " + counted(r.faces_split, "pinched polygon") + " into " + std::to_string(pieces) +
+            " pieces");
+  } else if (keyholes == r.faces_split) {
+    parts.push_back("cut " + counted(keyholes, "keyhole polygon") + " into " +
+                    std::to_string(pieces) + " triangles (the holes left open)");
+  } else {
+    parts.push_back("split " + counted(r.faces_split, "polygon") + " (" + std::to_string(keyholes) +
+                    " keyhole, " + std::to_string(r.faces_split - keyholes) + " pinched) into " +
+                    std::to_string(pieces) + " pieces");
+  }
   add(parts, r.slits_set_aside, "set aside " + counted(r.slits_set_aside, "slit"));
   add(parts, r.duplicate_faces_removed,
       "remove " + counted(r.duplicate_faces_removed, "duplicate face"));
@@ -183,6 +196,9 @@ std::string to_text(const RepairPreview& preview) {
       "make " + counted(r.vertices_split, "vertex copy") + " (split fans)");
   const std::size_t cut = r.sides_cut + r.sides_cut_for_orientation + r.sides_cut_to_stay_manifold;
   add(parts, cut, "cut " + counted(cut, "side") + " open");
+  add(parts, r.sides_paired_with_copies,
+      "pair " + counted(r.sides_paired_with_copies, "side") +
+          " with copies of their faces (doubled sheets glued back to back)");
   add(parts, r.sides_stitched, "stitch " + counted(r.sides_stitched, "side") + " back");
   add(parts, r.edges_split_to_stay_manifold,
       "split " + counted(r.edges_split_to_stay_manifold, "edge") + " at the midpoint (" +
@@ -216,7 +232,11 @@ std::string to_text(const RepairPreview& preview) {
     for (std::size_t i = 0; i < parts.size(); ++i)
       out << (i == 0 ? " " : ", ") << parts[i];
   }
-  if (r.ambiguous_nested_shells != 0) {
+  if (r.ambiguous_nested_shells != 0 && r.nested_shells == AmbiguousNesting::cavity) {
+    out << "; its reversed faces turn "
+        << counted(r.ambiguous_nested_shells, "ambiguous nested shell")
+        << " (wound like the shell around it) into voids (--nested-shells cavity)";
+  } else if (r.ambiguous_nested_shells != 0) {
     out << (parts.empty() ? " (" : "; ") << "it keeps "
         << counted(r.ambiguous_nested_shells, "ambiguous nested shell")
         << " wound like the shell around it (an insert; --nested-shells cavity: a void)"
@@ -224,6 +244,10 @@ std::string to_text(const RepairPreview& preview) {
   }
   if (parts.empty() && r.boundary_edges_before != 0)
     out << " (" << counted(r.boundary_edges_before, "boundary edge") << " stay open)";
+  if (g.welds_undone + g.t_junctions_undone != 0) {
+    out << "; it refuses " << counted(g.welds_undone, "weld") << " and "
+        << counted(g.t_junctions_undone, "T-junction closing") << " (" << g.refused_reason << ")";
+  }
   out << "\n";
   return out.str();
 }

@@ -73,6 +73,7 @@ std::optional<RepairReport> report_if_unchanged(const Soup& soup,
   mate = std::vector<Index>();
   RepairReport report;
   report.ambiguous_nested_shells = ambiguous;
+  report.nested_shells = options.nested_shells;
   ClosedGaps gaps;
   const std::vector<Index> no_boundary;
   detail::close_gaps_if_any(soup, options.close_gaps, gaps, &no_boundary);  // the tolerance
@@ -155,7 +156,10 @@ RepairResult repair_guarded(const Soup& input, const RepairOptions& options, Kno
   CloseGapsReport& gaps = plain.report.gaps;
   gaps = CloseGapsReport();
   gaps.tolerance = tried.tolerance;
+  gaps.automatic = tried.automatic;
   gaps.welds_refused = tried.welds_refused;
+  gaps.welds_too_long = tried.welds_too_long;
+  gaps.t_junctions_too_wide = tried.t_junctions_too_wide;
   gaps.welds_undone = tried.vertices_welded;
   gaps.t_junctions_undone = tried.t_junctions_closed;
   std::ostringstream why;

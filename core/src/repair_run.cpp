@@ -262,6 +262,7 @@ void RepairRun::count() {
   report.topology_changes = std::move(pipeline_.topology_changes);
   report.nonorientable_after_pairing = counts.nonorientable_components;
   report.ambiguous_nested_shells = counts.ambiguous_nested_shells;
+  report.nested_shells = options_.nested_shells;
   balance_.open_edges_out = counts.open_sides;
   balance_.nonorientable_out = counts.nonorientable_components;
   pipeline_ = PipelineResult();

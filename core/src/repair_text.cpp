@@ -151,7 +151,9 @@ std::string to_text(const RepairReport& r) {
   if (r.ambiguous_nested_shells != 0) {
     out << "nested shells: " << r.ambiguous_nested_shells
         << " wound like the shell around them (an insert, or a cavity wound the wrong way): "
-           "left as written\n";
+        << (r.nested_shells == AmbiguousNesting::cavity
+                ? "reversed into voids (--nested-shells cavity)\n"
+                : "left as written (--nested-shells cavity: voids)\n");
   }
   out << "after: singular edges " << r.after.singular_edges.size() << ", singular vertices "
       << r.after.num_singular_vertices() << ", non-orientable components "

@@ -1108,7 +1108,7 @@ messages)
   # the automatic weld tolerance: check says what a wider one would weld, and it does.
   printf 'v 0 0 0\nv 0 1 0\nv 1 0 0\nv 0.000002 0 0\nv 1.000002 0 0\nv 0 0 1\nv 0 0.000002 0\nv 0 0 1.000002\nv 0 1.000002 0\nv 1 0.000002 0\nv 0 1 0.000002\nv 0 0.000002 1\nf 1 2 3\nf 4 5 6\nf 7 8 9\nf 10 11 12\n' >"$work/crack.obj"
   expect_exit 0 "$mb" check "$work/crack.obj"  # repair (automatic tolerance) would change nothing
-  expect_in "$work/out" "repair would change nothing (12 boundary edges stay open)"
+  expect_in "$work/out" "repair would change nothing (12 boundary edges stay open); it refuses 0 welds and 7 T-junction closings (with them the repaired mesh would have 13 open edges (without: 12))"
   expect_in "$work/out" "hint: 12 boundary edges; cracks wider than the automatic tolerance stay open: --weld 5e-05 would weld 8 vertices (largest move 2e-06)"
   expect_exit 0 "$mb" repair "$work/crack.obj" "$work/crack_out.obj" --weld 5e-05
   expect_in "$work/out" "after: singular edges 0, singular vertices 0, non-orientable components 0, watertight yes"

@@ -142,6 +142,10 @@ struct RepairReport {
   //! Closed shells nested in a closed shell and wound like it as written (see
   //! RepairOptions::nested_shells): ambiguous between an insert and a wrongly wound cavity.
   std::size_t ambiguous_nested_shells = 0;
+  //! How the ambiguous nested shells were taken (RepairOptions::nested_shells): kept as written
+  //! (material, an insert) or reversed (cavity, a void; their faces are in `faces_flipped`).
+  //! Not in the JSON report, whose reader knows the option it passed.
+  AmbiguousNesting nested_shells = AmbiguousNesting::material;
   //! Components of the output (before hole filling) whose Euler characteristic V - E + F differs
   //! from that of the same faces as pairing got them (after gap closing, a keyhole polygon as
   //! its triangles), where every vertex and every edge counts once, a singular edge too: pairing
@@ -149,7 +153,9 @@ struct RepairReport {
   //! becomes a torus, 0), sides left unpaired within one component, a pinch vertex split within
   //! one component; or sides that orientation cut open within one component (a Moebius strip
   //! cut open: 0 -> 1; TopologyChange::cut_for_orientation). Components pairing separated keep
-  //! theirs (two cubes on one edge: 2 and 2). In the order of their first faces; the JSON report
+  //! theirs (two cubes on one edge: 2 and 2), and so does a component holding stacked face
+  //! copies whose value with every face counted once is its output's (a sheet written twice,
+  //! glued back to back). In the order of their first faces; the JSON report
   //! gives the count, `components_topology_changed`, and of them those with a cut for
   //! orientation, `components_topology_changed_by_cuts_for_orientation`, and of the others
   //! those holding stacked face copies, `components_topology_changed_by_pairing_stacked_copies`

@@ -161,6 +161,15 @@ std::vector<TopologyChange> topology_changes(const Soup& soup, const GroupedSide
   }
   if (!changes.empty())
     describe_changes(soup, corner_face, mate, cut_for_orientation, component, changed, changes);
+  // A component whose value differs only by its stacked copies (each a face of its own in the
+  // input's count) has the topology it had with every face counted once: no change.
+  changes.erase(std::remove_if(changes.begin(), changes.end(),
+                               [](const TopologyChange& c) {
+                                 return c.stacked_copies != 0 &&
+                                        c.euler_before - static_cast<long long>(c.stacked_copies) ==
+                                            c.euler_after;
+                               }),
+                changes.end());
   return changes;
 }
 
