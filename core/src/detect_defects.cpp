@@ -344,7 +344,8 @@ DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mat
 
 std::future<DefectReport> detect_alongside(const WorkingSoup& working,
                                            std::vector<Index>* manifold_mate,
-                                           GroupedSides* grouped_out, bool alongside) {
+                                           GroupedSides* grouped_out, bool alongside,
+                                           bool closed_in_parallel) {
   CornerFaces corner_face(working.soup());
   EdgeTally tally(working);
   // Edge offsets are recorded from the first edge that is not 2-sided on (the ones before it
@@ -374,8 +375,8 @@ std::future<DefectReport> detect_alongside(const WorkingSoup& working,
     // (A closed candidate: its face checks wait for the edge arrays to go, as one thread's
     // would; side by side they took the peak of a clean 1M torus above OpenMesh reading it.)
     std::promise<DefectReport> here;
-    here.set_value(
-        detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate, false));
+    here.set_value(detect_tallied(working, corner_face, std::move(tally), num_edges, manifold_mate,
+                                  closed_in_parallel && worker_threads() > 1));
     return here.get_future();
   }
   *grouped_out = GroupedSides{std::move(corner_face), std::move(bridges)};

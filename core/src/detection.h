@@ -31,9 +31,12 @@ DefectReport detect(const WorkingSoup& working, std::vector<Index>* manifold_mat
 //! detection (fans, components, orientability, faces) runs on a thread of its own, with a
 //! corner-to-face map of its own since the pipeline frees the grouping; `manifold_mate` is then
 //! left empty. Otherwise the report is made here and the future is ready. The thread reads
-//! `working`, which must outlive the future (its destructor waits for the thread).
+//! `working`, which must outlive the future (its destructor waits for the thread). A soup with
+//! no boundary or singular edge has its face checks made on one thread (repair's peak memory),
+//! or with `closed_in_parallel` on the worker threads as detect() makes them (check's time).
 std::future<DefectReport> detect_alongside(const WorkingSoup& working,
                                            std::vector<Index>* manifold_mate,
-                                           GroupedSides* grouped_out, bool alongside);
+                                           GroupedSides* grouped_out, bool alongside,
+                                           bool closed_in_parallel = false);
 
 }  // namespace meshbridge::detail

@@ -123,7 +123,7 @@ SoupCheck check_soup(const Soup& soup, const RepairOptions& options) {
   const bool filtering = options.remove_duplicate_faces || options.remove_degenerate_faces ||
                          options.remove_zero_area_faces;  // cleanup reads `before` first
   const bool alongside = !filtering && detail::worker_threads() > 1;
-  known.before_later = detail::detect_alongside(working, &mate, &known.grouped, alongside);
+  known.before_later = detail::detect_alongside(working, &mate, &known.grouped, alongside, true);
   // A boundary or singular edge: the grouping is kept, and with `alongside` the detection is
   // still being made (repair's run takes it after its pipeline).
   const bool later = !known.grouped.bridges.contenders.empty() && alongside;
